@@ -1,0 +1,47 @@
+package dev.trisect.base;
+
+/**
+ * Bad input from a user: a file that cannot be read or parsed, or a value out of range.
+ *
+ * <p>The message is one line meant for the user as it is, naming the file (and the line, where there
+ * is one) and what is wrong, for example {@code scene.obj:12: vertex index 9 is out of range (1..8)}.
+ * The command line prints it without a stack trace; the desktop demo shows it in a dialog.
+ */
+public final class InputException extends RuntimeException {
+    private static final long serialVersionUID = 1L;
+
+    /** Whether the input could not be read at all (exit status 1) or was a usage error (exit status 2). */
+    public enum Kind { UNREADABLE, USAGE }
+
+    private final Kind kind;
+
+    /** An unreadable or malformed input file: exit status 1. */
+    public InputException(String message) {
+        this(Kind.UNREADABLE, message, null);
+    }
+
+    /** An unreadable or malformed input file, with the low-level cause kept for {@code --verbose}. */
+    public InputException(String message, Throwable cause) {
+        this(Kind.UNREADABLE, message, cause);
+    }
+
+    private InputException(Kind kind, String message, Throwable cause) {
+        super(message, cause);
+        this.kind = kind;
+    }
+
+    /** A value the user gave that is out of range or inconsistent (exit status 2). */
+    public static InputException usage(String message) {
+        return new InputException(Kind.USAGE, message, null);
+    }
+
+    /** Whether this is a usage error (exit 2) or unreadable input (exit 1). */
+    public Kind kind() {
+        return kind;
+    }
+
+    /** The conventional process exit status for this error. */
+    public int exitStatus() {
+        return kind == Kind.USAGE ? 2 : 1;
+    }
+}

@@ -1,0 +1,145 @@
+package dev.trisect.math;
+
+import java.util.Arrays;
+
+/**
+ * An immutable 4x4 matrix of doubles in OpenGL's column-major order: element (row r, column c) is
+ * {@code m[c * 4 + r]}, and points are column vectors multiplied on the right ({@code M * p}).
+ *
+ * <p>The factories follow the GLU reference pages exactly, so that a frame agrees with an OpenGL
+ * implementation given the same camera: {@link #lookAt} as {@code gluLookAt}, {@link #perspective} as
+ * {@code gluPerspective}.
+ */
+public final class Mat4 {
+    private final double[] m;
+
+    private Mat4(double[] m) {
+        this.m = m;
+    }
+
+    /** The identity matrix. */
+    public static Mat4 identity() {
+        double[] m = new double[16];
+        m[0] = m[5] = m[10] = m[15] = 1;
+        return new Mat4(m);
+    }
+
+    /**
+     * A matrix from 16 values given row by row (as one reads a matrix on paper).
+     */
+    public static Mat4 ofRows(double... rows) {
+        if (rows.length != 16) {
+            throw new IllegalArgumentException("need 16 values, got " + rows.length);
+        }
+        double[] m = new double[16];
+        for (int r = 0; r < 4; r++) {
+            for (int c = 0; c < 4; c++) {
+                m[c * 4 + r] = rows[r * 4 + c];
+            }
+        }
+        return new Mat4(m);
+    }
+
+    /**
+     * The view matrix of {@code gluLookAt}: world space to view space, where the camera sits at the
+     * origin looking down -z with +y up.
+     *
+     * @param eye    camera position, world space
+     * @param target point looked at, world space; must differ from {@code eye}
+     * @param up     approximate up direction, world space; must not be parallel to the view direction
+     */
+    public static Mat4 lookAt(Vec3 eye, Vec3 target, Vec3 up) {
+        Vec3 f = target.sub(eye).normalize();
+        Vec3 s = f.cross(up).normalize();
+        Vec3 u = s.cross(f);
+        return ofRows(
+                s.x(), s.y(), s.z(), -s.dot(eye),
+                u.x(), u.y(), u.z(), -u.dot(eye),
+                -f.x(), -f.y(), -f.z(), f.dot(eye),
+                0, 0, 0, 1);
+    }
+
+    /**
+     * The projection matrix of {@code gluPerspective}: view space to OpenGL clip space, where a point
+     * is inside the view volume when {@code -w <= x, y, z <= w} and {@code w = -z_view}.
+     *
+     * @param fovYDegrees vertical field of view, degrees, in (0, 180)
+     * @param aspect      width / height of the viewport
+     * @param near        distance to the near plane, view-space units, &gt; 0
+     * @param far         distance to the far plane, view-space units, &gt; near
+     */
+    public static Mat4 perspective(double fovYDegrees, double aspect, double near, double far) {
+        double f = 1.0 / Math.tan(Math.toRadians(fovYDegrees) / 2);
+        return ofRows(
+                f / aspect, 0, 0, 0,
+                0, f, 0, 0,
+                0, 0, (far + near) / (near - far), 2 * far * near / (near - far),
+                0, 0, -1, 0);
+    }
+
+    /** Element at row {@code r}, column {@code c}. */
+    public double get(int r, int c) {
+        return m[c * 4 + r];
+    }
+
+    /** {@code this * o}: applies {@code o} first, then {@code this}. */
+    public Mat4 mul(Mat4 o) {
+        double[] r = new double[16];
+        for (int c = 0; c < 4; c++) {
+            for (int row = 0; row < 4; row++) {
+                double s = 0;
+                for (int k = 0; k < 4; k++) {
+                    s += m[k * 4 + row] * o.m[c * 4 + k];
+                }
+                r[c * 4 + row] = s;
+            }
+        }
+        return new Mat4(r);
+    }
+
+    /**
+     * Transforms the point (x, y, z, 1) and writes (x', y', z', w') to {@code out[offset..offset+3]}.
+     * Allocation-free, for the per-vertex stage.
+     */
+    public void transformPoint(double x, double y, double z, double[] out, int offset) {
+        out[offset] = m[0] * x + m[4] * y + m[8] * z + m[12];
+        out[offset + 1] = m[1] * x + m[5] * y + m[9] * z + m[13];
+        out[offset + 2] = m[2] * x + m[6] * y + m[10] * z + m[14];
+        out[offset + 3] = m[3] * x + m[7] * y + m[11] * z + m[15];
+    }
+
+    /** The point (x, y, z, 1) transformed and divided by w; meant for tests and setup, not hot loops. */
+    public Vec3 transformProject(Vec3 p) {
+        double[] o = new double[4];
+        transformPoint(p.x(), p.y(), p.z(), o, 0);
+        return new Vec3(o[0] / o[3], o[1] / o[3], o[2] / o[3]);
+    }
+
+    /** The 16 elements in column-major order (a copy). */
+    public double[] toColumnMajor() {
+        return m.clone();
+    }
+
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof Mat4 other && Arrays.equals(m, other.m);
+    }
+
+    @Override
+    public int hashCode() {
+        return Arrays.hashCode(m);
+    }
+
+    @Override
+    public String toString() {
+        StringBuilder sb = new StringBuilder();
+        for (int r = 0; r < 4; r++) {
+            sb.append(r == 0 ? "[" : " ");
+            for (int c = 0; c < 4; c++) {
+                sb.append(String.format("%10.4f", get(r, c)));
+            }
+            sb.append(r == 3 ? "]" : "\n");
+        }
+        return sb.toString();
+    }
+}

@@ -1,0 +1,157 @@
+package dev.trisect.mesh;
+
+import dev.trisect.math.Vec3;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+
+/**
+ * Builds a {@link Mesh} by appending positions, texture coordinates and triangles.
+ *
+ * <p>Triangles are front-facing when their corners run counter-clockwise as seen from the side they
+ * face (OpenGL's default), and get the current material (see {@link #material(String)}).
+ */
+public final class MeshBuilder {
+    private float[] positions = new float[3 * 64];
+    private int positionCount;
+    private float[] uvs = new float[2 * 64];
+    private int uvCount;
+    private int[] cornerPositions = new int[3 * 64];
+    private int[] cornerUvs = new int[3 * 64];
+    private int[] materials = new int[64];
+    private int triangleCount;
+    private final List<String> materialNames = new ArrayList<>();
+    private int currentMaterial = -1;
+
+    /** Number of positions added so far. */
+    public int positionCount() {
+        return positionCount;
+    }
+
+    /** Number of texture coordinates added so far. */
+    public int uvCount() {
+        return uvCount;
+    }
+
+    /** Number of triangles added so far. */
+    public int triangleCount() {
+        return triangleCount;
+    }
+
+    /**
+     * Makes {@code name} the material of the triangles that follow, adding it if it is new.
+     *
+     * @return the material's index
+     */
+    public int material(String name) {
+        int index = materialNames.indexOf(name);
+        if (index < 0) {
+            index = materialNames.size();
+            materialNames.add(name);
+        }
+        currentMaterial = index;
+        return index;
+    }
+
+    /** Adds a position in object space and returns its index. */
+    public int position(double x, double y, double z) {
+        if (3 * positionCount + 3 > positions.length) {
+            positions = Arrays.copyOf(positions, positions.length * 2);
+        }
+        positions[3 * positionCount] = (float) x;
+        positions[3 * positionCount + 1] = (float) y;
+        positions[3 * positionCount + 2] = (float) z;
+        return positionCount++;
+    }
+
+    /** Adds a position in object space and returns its index. */
+    public int position(Vec3 p) {
+        return position(p.x(), p.y(), p.z());
+    }
+
+    /** Adds a texture coordinate and returns its index. */
+    public int uv(double u, double v) {
+        if (2 * uvCount + 2 > uvs.length) {
+            uvs = Arrays.copyOf(uvs, uvs.length * 2);
+        }
+        uvs[2 * uvCount] = (float) u;
+        uvs[2 * uvCount + 1] = (float) v;
+        return uvCount++;
+    }
+
+    /**
+     * Adds a triangle from position indices and texture-coordinate indices (-1 for none).
+     * Indices must already exist; this is checked.
+     *
+     * @return the new triangle's index
+     */
+    public int triangle(int p0, int p1, int p2, int t0, int t1, int t2) {
+        checkPosition(p0);
+        checkPosition(p1);
+        checkPosition(p2);
+        checkUv(t0);
+        checkUv(t1);
+        checkUv(t2);
+        if (currentMaterial < 0) {
+            material("default");
+        }
+        if (triangleCount == materials.length) {
+            int n = materials.length * 2;
+            materials = Arrays.copyOf(materials, n);
+            cornerPositions = Arrays.copyOf(cornerPositions, 3 * n);
+            cornerUvs = Arrays.copyOf(cornerUvs, 3 * n);
+        }
+        int c = 3 * triangleCount;
+        cornerPositions[c] = p0;
+        cornerPositions[c + 1] = p1;
+        cornerPositions[c + 2] = p2;
+        cornerUvs[c] = t0;
+        cornerUvs[c + 1] = t1;
+        cornerUvs[c + 2] = t2;
+        materials[triangleCount] = currentMaterial;
+        return triangleCount++;
+    }
+
+    /**
+     * Adds a quad as two triangles (p0, p1, p2) and (p0, p2, p3); the corners run counter-clockwise
+     * as seen from the front.
+     */
+    public void quad(Vec3 p0, Vec3 p1, Vec3 p2, Vec3 p3,
+                     double u0, double v0, double u1, double v1,
+                     double u2, double v2, double u3, double v3) {
+        int a = position(p0);
+        int b = position(p1);
+        int c = position(p2);
+        int d = position(p3);
+        int ta = uv(u0, v0);
+        int tb = uv(u1, v1);
+        int tc = uv(u2, v2);
+        int td = uv(u3, v3);
+        triangle(a, b, c, ta, tb, tc);
+        triangle(a, c, d, ta, tc, td);
+    }
+
+    private void checkPosition(int p) {
+        if (p < 0 || p >= positionCount) {
+            throw new IndexOutOfBoundsException("position index " + p + " not in 0.." + (positionCount - 1));
+        }
+    }
+
+    private void checkUv(int t) {
+        if (t < -1 || t >= uvCount) {
+            throw new IndexOutOfBoundsException("uv index " + t + " not in -1.." + (uvCount - 1));
+        }
+    }
+
+    /** The mesh built so far (arrays trimmed to size). The builder may be reused afterwards. */
+    public Mesh build() {
+        List<String> names = materialNames.isEmpty() ? List.of("default") : materialNames;
+        return new Mesh(
+                Arrays.copyOf(positions, 3 * positionCount),
+                Arrays.copyOf(uvs, 2 * uvCount),
+                Arrays.copyOf(cornerPositions, 3 * triangleCount),
+                Arrays.copyOf(cornerUvs, 3 * triangleCount),
+                Arrays.copyOf(materials, triangleCount),
+                names);
+    }
+}

@@ -1,0 +1,84 @@
+package dev.trisect.texture;
+
+/**
+ * A texture image: {@code width x height} ARGB texels in an {@code int[]}, row-major with image row 0
+ * at the top (as image files store it). UV (0, 0) is the bottom-left texel's corner and (1, 1) the
+ * top-right one (OBJ and OpenGL).
+ *
+ * <p>Sampling is nearest with repeat, exactly as OpenGL's {@code GL_NEAREST} + {@code GL_REPEAT}: in
+ * texel coordinates {@code (s, t) = (u * width, v * height)}, the column is
+ * {@code floorMod(floor(s), width)}, the row from the bottom {@code floorMod(floor(t), height)}.
+ * The rasterizer inlines the same arithmetic; {@link #texelIndex} is the reference for it.
+ */
+public final class Texture {
+    /** Largest width or height accepted, in texels. */
+    public static final int MAX_SIDE = 16384;
+
+    private final String name;
+    private final int width;
+    private final int height;
+    private final int[] argb;
+
+    /**
+     * @param name   where the texture came from (a file name or a procedural name), for messages
+     * @param width  width in texels, 1..{@link #MAX_SIDE}
+     * @param height height in texels, 1..{@link #MAX_SIDE}
+     * @param argb   {@code width * height} texels, row 0 at the top; kept, not copied
+     */
+    public Texture(String name, int width, int height, int[] argb) {
+        if (width < 1 || height < 1 || width > MAX_SIDE || height > MAX_SIDE) {
+            throw new IllegalArgumentException(name + ": texture size " + width + "x" + height
+                    + " is outside 1.." + MAX_SIDE);
+        }
+        if (argb.length != width * height) {
+            throw new IllegalArgumentException(name + ": expected " + width * height + " texels, got " + argb.length);
+        }
+        this.name = name;
+        this.width = width;
+        this.height = height;
+        this.argb = argb;
+    }
+
+    /** A texture of one colour, for meshes without one. */
+    public static Texture solid(String name, int argb) {
+        return new Texture(name, 1, 1, new int[] {argb});
+    }
+
+    /** Where the texture came from, for messages. */
+    public String name() {
+        return name;
+    }
+
+    /** Width in texels. */
+    public int width() {
+        return width;
+    }
+
+    /** Height in texels. */
+    public int height() {
+        return height;
+    }
+
+    /** The texels, ARGB, row 0 at the top. Handed out without a copy for the rasterizer: read-only. */
+    public int[] argb() {
+        return argb;
+    }
+
+    /**
+     * Index into {@link #argb()} of the texel that nearest sampling with repeat picks at the given
+     * texel coordinates.
+     *
+     * @param s texel coordinate {@code u * width} (texels; any value, negative included)
+     * @param t texel coordinate {@code v * height} (texels, from the bottom)
+     */
+    public int texelIndex(double s, double t) {
+        int column = Math.floorMod((int) Math.floor(s), width);
+        int rowFromBottom = Math.floorMod((int) Math.floor(t), height);
+        return (height - 1 - rowFromBottom) * width + column;
+    }
+
+    /** The ARGB texel that nearest sampling with repeat picks at UV (u, v). */
+    public int sampleUv(double u, double v) {
+        return argb[texelIndex(u * width, v * height)];
+    }
+}
