@@ -1,0 +1,166 @@
+package dev.trisect.pipeline;
+
+/**
+ * Clips a triangle in homogeneous clip space (Sutherland-Hodgman), before the divide by w.
+ *
+ * <p>Planes: near {@code z >= -w} and far {@code z <= w} exactly as OpenGL; left/right/bottom/top
+ * against a guard band {@code |x| <= gx * w}, {@code |y| <= gy * w} that lies far outside the
+ * viewport. Clipping x and y only at the guard band creates no new edge on screen, so the pixels are
+ * those of clipping at the frustum sides, while screen coordinates stay small enough for exact
+ * fixed-point edge functions.
+ *
+ * <p>An intersection is always computed from the edge's inside end toward its outside end, so the two
+ * triangles that share an edge get bit-identical new vertices and the clipped mesh keeps no cracks.
+ * Vertices are {@link #STRIDE} doubles: clip x, y, z, w and texel s, t.
+ */
+final class Clipper {
+    static final int STRIDE = 6;
+    static final int NEAR = 1;
+    static final int FAR = 2;
+    static final int LEFT = 4;
+    static final int RIGHT = 8;
+    static final int BOTTOM = 16;
+    static final int TOP = 32;
+    /** At most 3 + one vertex per plane. */
+    private static final int MAX_VERTICES = 9;
+
+    private double[] current = new double[STRIDE * MAX_VERTICES];
+    private double[] next = new double[STRIDE * MAX_VERTICES];
+    private double guardX = 1;
+    private double guardY = 1;
+
+    /** Sets the guard band, as multiples of the view volume's half-width and half-height. */
+    void guardBand(double gx, double gy) {
+        guardX = gx;
+        guardY = gy;
+    }
+
+    /** Outcode of a vertex against the planes this clipper clips at (guard band for x and y). */
+    int clipCode(double x, double y, double z, double w) {
+        int code = 0;
+        if (z < -w) {
+            code |= NEAR;
+        }
+        if (z > w) {
+            code |= FAR;
+        }
+        double gw = guardX * w;
+        if (x < -gw) {
+            code |= LEFT;
+        }
+        if (x > gw) {
+            code |= RIGHT;
+        }
+        double hw = guardY * w;
+        if (y < -hw) {
+            code |= BOTTOM;
+        }
+        if (y > hw) {
+            code |= TOP;
+        }
+        return code;
+    }
+
+    /** Outcode of a vertex against the exact view volume, for culling. */
+    static int frustumCode(double x, double y, double z, double w) {
+        int code = 0;
+        if (z < -w) {
+            code |= NEAR;
+        }
+        if (z > w) {
+            code |= FAR;
+        }
+        if (x < -w) {
+            code |= LEFT;
+        }
+        if (x > w) {
+            code |= RIGHT;
+        }
+        if (y < -w) {
+            code |= BOTTOM;
+        }
+        if (y > w) {
+            code |= TOP;
+        }
+        return code;
+    }
+
+    /**
+     * Clips the triangle (a, b, c), given at offsets of {@code src}, against the planes in
+     * {@code planes}. The result is in {@link #vertices()}.
+     *
+     * @return the number of vertices of the clipped polygon: 0, or 3 to 9
+     */
+    int clip(double[] src, int a, int b, int c, int planes) {
+        double[] in = current;
+        System.arraycopy(src, a, in, 0, STRIDE);
+        System.arraycopy(src, b, in, STRIDE, STRIDE);
+        System.arraycopy(src, c, in, 2 * STRIDE, STRIDE);
+        int n = 3;
+        for (int plane = NEAR; plane <= TOP && n > 0; plane <<= 1) {
+            if ((planes & plane) != 0) {
+                n = clipPlane(n, plane);
+            }
+        }
+        return n < 3 ? 0 : n;
+    }
+
+    /** The clipped polygon's vertices after {@link #clip}. */
+    double[] vertices() {
+        return current;
+    }
+
+    private int clipPlane(int n, int plane) {
+        double[] in = current;
+        double[] out = next;
+        int m = 0;
+        for (int i = 0; i < n; i++) {
+            int p = i * STRIDE;
+            int q = ((i + 1) % n) * STRIDE;
+            double dp = distance(in, p, plane);
+            double dq = distance(in, q, plane);
+            boolean pInside = dp >= 0;
+            if (pInside) {
+                System.arraycopy(in, p, out, m * STRIDE, STRIDE);
+                m++;
+            }
+            if (pInside != (dq >= 0)) {
+                int inside = pInside ? p : q;
+                int outside = pInside ? q : p;
+                double dIn = pInside ? dp : dq;
+                double dOut = pInside ? dq : dp;
+                double t = dIn / (dIn - dOut);
+                int o = m * STRIDE;
+                for (int k = 0; k < STRIDE; k++) {
+                    out[o + k] = in[inside + k] + t * (in[outside + k] - in[inside + k]);
+                }
+                m++;
+            }
+        }
+        current = out;
+        next = in;
+        return m;
+    }
+
+    /** Signed distance to a plane in clip space; inside when &gt;= 0. */
+    private double distance(double[] v, int o, int plane) {
+        double x = v[o];
+        double y = v[o + 1];
+        double z = v[o + 2];
+        double w = v[o + 3];
+        switch (plane) {
+            case NEAR:
+                return z + w;
+            case FAR:
+                return w - z;
+            case LEFT:
+                return x + guardX * w;
+            case RIGHT:
+                return guardX * w - x;
+            case BOTTOM:
+                return y + guardY * w;
+            default:
+                return guardY * w - y;
+        }
+    }
+}

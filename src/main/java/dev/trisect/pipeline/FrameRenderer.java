@@ -1,0 +1,553 @@
+package dev.trisect.pipeline;
+
+import dev.trisect.math.Mat4;
+import dev.trisect.math.Viewport;
+import dev.trisect.mesh.Mesh;
+import dev.trisect.raster.BorderOverlay;
+import dev.trisect.raster.Framebuffer;
+import dev.trisect.raster.Rasterizer;
+import dev.trisect.raster.ScreenTriangles;
+import dev.trisect.tessellate.PieceSink;
+import dev.trisect.tessellate.Tessellator;
+import dev.trisect.texture.Texture;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.atomic.AtomicInteger;
+
+/**
+ * Draws one frame: transform, cull, clip, tessellate (or project), rasterize, overlay, statistics.
+ *
+ * <p>Work is shared out in two ways, neither of which changes a single pixel. Geometry runs over
+ * contiguous chunks of the triangle list, each writing its own screen triangles in input order.
+ * The frame is then cut into bands of rows; every band takes the chunks in order, so every pixel
+ * sees its triangles in input order whatever the number of threads, and the depth test breaks ties
+ * the same way each time.
+ *
+ * <p>All scratch memory is kept from frame to frame: once it has grown to the scene's size, a frame
+ * allocates only a few small objects to coordinate threads, nothing per triangle or per pixel.
+ * Not thread-safe: one frame at a time. Close it to stop its threads.
+ */
+public final class FrameRenderer implements AutoCloseable {
+    /** Rows per band: small enough to balance threads, large enough to amortize per-band setup. */
+    static final int BAND_ROWS = 16;
+    /** Guard band beyond each side of the viewport, pixels. */
+    static final int GUARD_PIXELS = 8192;
+    /** Triangles per timing batch inside a chunk. */
+    private static final int BATCH = 1024;
+    /** Smallest chunk worth a task of its own. */
+    private static final int MIN_CHUNK = 2048;
+
+    private final int threads;
+    private final ExecutorService pool;
+    private final Worker[] workers;
+    private Chunk[] chunks = new Chunk[0];
+    private double[] clip = new double[0];
+    private boolean[] invalidPosition = new boolean[0];
+
+    /** A renderer using every available processor. */
+    public FrameRenderer() {
+        this(Runtime.getRuntime().availableProcessors());
+    }
+
+    /** @param threads threads to render with, &gt;= 1 (the calling thread is one of them) */
+    public FrameRenderer(int threads) {
+        if (threads < 1) {
+            throw new IllegalArgumentException("threads must be at least 1, got " + threads);
+        }
+        this.threads = threads;
+        this.workers = new Worker[threads];
+        for (int i = 0; i < threads; i++) {
+            workers[i] = new Worker();
+        }
+        AtomicInteger serial = new AtomicInteger();
+        this.pool = threads == 1 ? null : Executors.newFixedThreadPool(threads - 1, r -> {
+            Thread t = new Thread(r, "trisect-render-" + serial.incrementAndGet());
+            t.setDaemon(true);
+            return t;
+        });
+    }
+
+    /** Threads this renderer fills frames with. */
+    public int threads() {
+        return threads;
+    }
+
+    /**
+     * Draws {@code mesh} into {@code frame}.
+     *
+     * @param textures       the texture of each material of the mesh, by material index
+     * @param viewProjection world space to clip space (projection * view), as OpenGL
+     * @return what the frame did
+     */
+    public FrameStats render(Mesh mesh, Texture[] textures, Mat4 viewProjection, RenderSettings settings,
+                             Framebuffer frame) {
+        long start = System.nanoTime();
+        int bands = bandCount(frame.height());
+        int chunkCount = geometry(mesh, textures, viewProjection, settings, frame.width(), frame.height());
+        long transformed = start + transformNanos;
+        long geometryDone = System.nanoTime();
+
+        boolean perspective = settings.mode() == RenderMode.PERSPECTIVE;
+        int width = frame.width();
+        int height = frame.height();
+        int background = settings.background();
+        for (Worker w : workers) {
+            w.pixels = 0;
+        }
+        parallel(bands, (w, b) -> {
+            int y0 = b * BAND_ROWS;
+            int y1 = Math.min(height, y0 + BAND_ROWS);
+            frame.clearRows(y0, y1, background);
+            for (int c = 0; c < chunkCount; c++) {
+                Chunk chunk = chunks[c];
+                w.pixels += w.rasterizer.fill(frame, chunk.out, chunk.binItems, chunk.binStart[b],
+                        chunk.binStart[b + 1], textures, perspective, 0, y0, width, y1);
+            }
+        });
+        long rasterDone = System.nanoTime();
+        if (settings.borders()) {
+            parallel(bands, (w, b) -> {
+                int y0 = b * BAND_ROWS;
+                int y1 = Math.min(height, y0 + BAND_ROWS);
+                for (int c = 0; c < chunkCount; c++) {
+                    Chunk chunk = chunks[c];
+                    w.overlay.draw(frame, chunk.out, chunk.binItems, chunk.binStart[b], chunk.binStart[b + 1],
+                            0, y0, width, y1);
+                }
+            });
+        }
+        long end = System.nanoTime();
+        return statistics(mesh.triangleCount(), chunkCount, start, transformed, geometryDone, rasterDone, end);
+    }
+
+    /**
+     * Counts, per pixel, how many of the frame's filled triangles (pieces, in the tessellated path)
+     * cover its centre, ignoring depth: 1 everywhere inside a closed or tiled surface seen from one
+     * side means no gaps and no overlaps. For tests and overdraw views.
+     *
+     * @return {@code width * height} counts, row 0 at the top
+     */
+    public int[] coverage(Mesh mesh, Texture[] textures, Mat4 viewProjection, RenderSettings settings,
+                          int width, int height) {
+        int chunkCount = geometry(mesh, textures, viewProjection, settings, width, height);
+        int[] counts = new int[width * height];
+        int bands = bandCount(height);
+        parallel(bands, (w, b) -> {
+            int y0 = b * BAND_ROWS;
+            int y1 = Math.min(height, y0 + BAND_ROWS);
+            for (int c = 0; c < chunkCount; c++) {
+                Chunk chunk = chunks[c];
+                w.rasterizer.countCoverage(counts, width, chunk.out, chunk.binItems, chunk.binStart[b],
+                        chunk.binStart[b + 1], 0, y0, width, y1);
+            }
+        });
+        return counts;
+    }
+
+    private static int bandCount(int height) {
+        return (height + BAND_ROWS - 1) / BAND_ROWS;
+    }
+
+    private long transformNanos;
+
+    /** Transforms, culls, clips and tessellates into the chunks, and bins them; returns the chunk count. */
+    private int geometry(Mesh mesh, Texture[] textures, Mat4 viewProjection, RenderSettings settings,
+                         int width, int height) {
+        if (textures.length < mesh.materialCount()) {
+            throw new IllegalArgumentException("mesh has " + mesh.materialCount() + " materials but "
+                    + textures.length + " textures were given");
+        }
+        long start = System.nanoTime();
+        Viewport viewport = new Viewport(width, height);
+        transform(mesh, viewProjection);
+        transformNanos = System.nanoTime() - start;
+        int bands = bandCount(height);
+        int triangles = mesh.triangleCount();
+        int chunkCount = Math.max(1, Math.min(threads * 4, (triangles + MIN_CHUNK - 1) / MIN_CHUNK));
+        ensureChunks(chunkCount);
+        int perChunk = (triangles + chunkCount - 1) / chunkCount;
+        double gx = 1 + 2.0 * GUARD_PIXELS / width;
+        double gy = 1 + 2.0 * GUARD_PIXELS / height;
+        boolean split = settings.mode() == RenderMode.TESSELLATED;
+        parallel(chunkCount, (w, c) -> {
+            Chunk chunk = chunks[c];
+            int from = Math.min(triangles, c * perChunk);
+            int to = Math.min(triangles, from + perChunk);
+            chunk.geometry(w, mesh, textures, clip, invalidPosition, from, to, settings, viewport, gx, gy, split);
+            chunk.bin(bands, height);
+        });
+        return chunkCount;
+    }
+
+    private FrameStats statistics(int triangles, int chunkCount, long start, long transformed, long geometryDone,
+                                  long rasterDone, long end) {
+        long back = 0;
+        long frustum = 0;
+        long degenerate = 0;
+        long invalid = 0;
+        long clipped = 0;
+        long pieces = 0;
+        long splits = 0;
+        int deepest = 0;
+        long caps = 0;
+        long clipCpu = 0;
+        long tessCpu = 0;
+        for (int c = 0; c < chunkCount; c++) {
+            Chunk k = chunks[c];
+            back += k.culledBack;
+            frustum += k.culledFrustum;
+            degenerate += k.culledDegenerate;
+            invalid += k.invalid;
+            clipped += k.clipped;
+            pieces += k.pieces;
+            splits += k.splits;
+            deepest = Math.max(deepest, k.deepest);
+            caps += k.caps;
+            clipCpu += k.clipNanos;
+            tessCpu += k.tessellateNanos;
+        }
+        long pixels = 0;
+        for (Worker w : workers) {
+            pixels += w.pixels;
+        }
+        // Clipping and tessellation run interleaved on all threads; their wall time is shared out in
+        // proportion to the processor time each took.
+        long geometryWall = geometryDone - transformed;
+        long cpu = clipCpu + tessCpu;
+        long clipWall = cpu == 0 ? 0 : Math.round(geometryWall * (double) clipCpu / cpu);
+        return new FrameStats(triangles, back, frustum, degenerate, invalid, clipped, pieces, splits, deepest,
+                caps, pixels, threads, transformed - start, clipWall, geometryWall - clipWall,
+                rasterDone - geometryDone, end - rasterDone, end - start);
+    }
+
+    private void transform(Mesh mesh, Mat4 viewProjection) {
+        int n = mesh.positionCount();
+        if (clip.length < 4 * n) {
+            clip = new double[4 * n];
+            invalidPosition = new boolean[n];
+        }
+        float[] p = mesh.positions();
+        int parts = n < 65536 ? 1 : threads;
+        int per = (n + parts - 1) / parts;
+        parallel(parts, (w, part) -> {
+            int to = Math.min(n, (part + 1) * per);
+            for (int i = part * per; i < to; i++) {
+                viewProjection.transformPoint(p[3 * i], p[3 * i + 1], p[3 * i + 2], clip, 4 * i);
+                invalidPosition[i] = !(Double.isFinite(clip[4 * i]) && Double.isFinite(clip[4 * i + 1])
+                        && Double.isFinite(clip[4 * i + 2]) && Double.isFinite(clip[4 * i + 3]));
+            }
+        });
+    }
+
+    private void ensureChunks(int count) {
+        if (chunks.length < count) {
+            Chunk[] grown = Arrays.copyOf(chunks, count);
+            for (int i = chunks.length; i < count; i++) {
+                grown[i] = new Chunk();
+            }
+            chunks = grown;
+        }
+    }
+
+    /** A job over an index, run with the scratch of whichever thread takes it. */
+    @FunctionalInterface
+    private interface Job {
+        void run(Worker worker, int index);
+    }
+
+    /** Runs {@code job} for indices 0..count-1 on all threads, each index once; returns when all are done. */
+    private void parallel(int count, Job job) {
+        if (pool == null || count == 1) {
+            for (int i = 0; i < count; i++) {
+                job.run(workers[0], i);
+            }
+            return;
+        }
+        AtomicInteger next = new AtomicInteger();
+        int helpers = Math.min(threads, count) - 1;
+        List<Future<?>> futures = new ArrayList<>(helpers);
+        for (int t = 1; t <= helpers; t++) {
+            Worker w = workers[t];
+            futures.add(pool.submit(() -> drain(next, count, job, w)));
+        }
+        Throwable failure = null;
+        try {
+            drain(next, count, job, workers[0]);
+        } catch (RuntimeException | Error e) {
+            failure = e;
+        }
+        for (Future<?> f : futures) {
+            try {
+                f.get();
+            } catch (ExecutionException e) {
+                failure = failure == null ? e.getCause() : failure;
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                failure = failure == null ? e : failure;
+            }
+        }
+        if (failure instanceof RuntimeException re) {
+            throw re;
+        }
+        if (failure instanceof Error err) {
+            throw err;
+        }
+        if (failure != null) {
+            throw new IllegalStateException("render interrupted", failure);
+        }
+    }
+
+    private static void drain(AtomicInteger next, int count, Job job, Worker worker) {
+        for (int i = next.getAndIncrement(); i < count; i = next.getAndIncrement()) {
+            job.run(worker, i);
+        }
+    }
+
+    @Override
+    public void close() {
+        if (pool != null) {
+            pool.shutdownNow();
+        }
+    }
+
+    /** Per-thread scratch. */
+    static final class Worker {
+        final Clipper clipper = new Clipper();
+        final Tessellator tessellator = new Tessellator();
+        final Rasterizer rasterizer = new Rasterizer();
+        final BorderOverlay overlay = new BorderOverlay();
+        /** The three corners of the triangle being culled and clipped. */
+        final double[] cornerScratch = new double[3 * Clipper.STRIDE];
+        /** Clipped triangles of the current batch: 3 vertices of Clipper.STRIDE doubles each. */
+        double[] batch = new double[3 * Clipper.STRIDE * BATCH];
+        int[] batchIds = new int[BATCH];
+        int[] batchMaterials = new int[BATCH];
+        long pixels;
+    }
+
+    /** One contiguous range of input triangles: its screen triangles, their bins and its counters. */
+    static final class Chunk implements PieceSink {
+        final ScreenTriangles out = new ScreenTriangles();
+        int[] binStart = new int[1];
+        int[] binItems = new int[0];
+        private int[] firstBand = new int[0];
+        private int[] lastBand = new int[0];
+        long culledBack;
+        long culledFrustum;
+        long culledDegenerate;
+        long invalid;
+        long clipped;
+        long pieces;
+        long splits;
+        int deepest;
+        long caps;
+        long clipNanos;
+        long tessellateNanos;
+        private int currentId;
+        private int currentMaterial;
+
+        void geometry(Worker w, Mesh mesh, Texture[] textures, double[] clip, boolean[] invalidPosition,
+                      int from, int to, RenderSettings settings, Viewport viewport, double gx, double gy,
+                      boolean split) {
+            out.clear();
+            culledBack = culledFrustum = culledDegenerate = invalid = clipped = 0;
+            clipNanos = tessellateNanos = 0;
+            Tessellator tess = w.tessellator;
+            tess.configure(viewport, settings.tessellation());
+            tess.resetStatistics();
+            w.clipper.guardBand(gx, gy);
+            boolean cullBack = settings.cull() == CullMode.BACK;
+            for (int batchStart = from; batchStart < to; batchStart += BATCH) {
+                int batchEnd = Math.min(to, batchStart + BATCH);
+                long t0 = System.nanoTime();
+                int n = cullAndClip(w, mesh, textures, clip, invalidPosition, batchStart, batchEnd, cullBack);
+                long t1 = System.nanoTime();
+                double[] b = w.batch;
+                int stride = 3 * Clipper.STRIDE;
+                for (int i = 0; i < n; i++) {
+                    currentId = w.batchIds[i];
+                    currentMaterial = w.batchMaterials[i];
+                    int o = i * stride;
+                    tess.process(b, o, o + Clipper.STRIDE, o + 2 * Clipper.STRIDE, split, this);
+                }
+                long t2 = System.nanoTime();
+                clipNanos += t1 - t0;
+                tessellateNanos += t2 - t1;
+            }
+            pieces = tess.pieces();
+            splits = tess.splits();
+            deepest = tess.deepestLevel();
+            caps = tess.capsReached();
+        }
+
+        /**
+         * Culls and clips input triangles [from, to) into the worker's batch as triangles in clip
+         * space with texel coordinates; returns how many.
+         */
+        private int cullAndClip(Worker w, Mesh mesh, Texture[] textures, double[] clip, boolean[] invalidPosition,
+                                int from, int to, boolean cullBack) {
+            int[] corners = mesh.cornerPositions();
+            int[] cornerUvs = mesh.cornerUvs();
+            int[] materials = mesh.triangleMaterials();
+            float[] uvs = mesh.uvs();
+            Clipper clipper = w.clipper;
+            int count = 0;
+            double[] corner = w.cornerScratch;
+            for (int t = from; t < to; t++) {
+                int c = 3 * t;
+                int p0 = corners[c];
+                int p1 = corners[c + 1];
+                int p2 = corners[c + 2];
+                int material = materials[t];
+                Texture tex = textures[material];
+                if (invalidPosition[p0] || invalidPosition[p1] || invalidPosition[p2]
+                        || !loadCorner(corner, 0, clip, p0, uvs, cornerUvs[c], tex)
+                        || !loadCorner(corner, Clipper.STRIDE, clip, p1, uvs, cornerUvs[c + 1], tex)
+                        || !loadCorner(corner, 2 * Clipper.STRIDE, clip, p2, uvs, cornerUvs[c + 2], tex)) {
+                    invalid++;
+                    continue;
+                }
+                int f0 = Clipper.frustumCode(corner[0], corner[1], corner[2], corner[3]);
+                int f1 = Clipper.frustumCode(corner[6], corner[7], corner[8], corner[9]);
+                int f2 = Clipper.frustumCode(corner[12], corner[13], corner[14], corner[15]);
+                if ((f0 & f1 & f2) != 0) {
+                    culledFrustum++;
+                    continue;
+                }
+                // Facing from the homogeneous determinant of (x, y, w): its sign is the projected
+                // winding for w > 0 and stays right for triangles crossing the eye plane.
+                double det = determinant(corner);
+                if (det == 0) {
+                    culledDegenerate++;
+                    continue;
+                }
+                if (cullBack && det < 0) {
+                    culledBack++;
+                    continue;
+                }
+                int g = clipper.clipCode(corner[0], corner[1], corner[2], corner[3])
+                        | clipper.clipCode(corner[6], corner[7], corner[8], corner[9])
+                        | clipper.clipCode(corner[12], corner[13], corner[14], corner[15]);
+                if (g == 0) {
+                    count = append(w, count, corner, 0, Clipper.STRIDE, 2 * Clipper.STRIDE, t, material);
+                    continue;
+                }
+                clipped++;
+                int n = clipper.clip(corner, 0, Clipper.STRIDE, 2 * Clipper.STRIDE, g);
+                if (n == 0) {
+                    culledFrustum++;
+                    continue;
+                }
+                double[] poly = clipper.vertices();
+                for (int k = 1; k + 1 < n; k++) {
+                    count = append(w, count, poly, 0, k * Clipper.STRIDE, (k + 1) * Clipper.STRIDE, t, material);
+                }
+            }
+            return count;
+        }
+
+        private static boolean loadCorner(double[] dst, int o, double[] clip, int p, float[] uvs, int uvIndex,
+                                          Texture tex) {
+            System.arraycopy(clip, 4 * p, dst, o, 4);
+            double u = 0;
+            double v = 0;
+            if (uvIndex >= 0) {
+                u = uvs[2 * uvIndex];
+                v = uvs[2 * uvIndex + 1];
+            }
+            dst[o + 4] = u * tex.width();
+            dst[o + 5] = v * tex.height();
+            return Double.isFinite(dst[o + 4]) && Double.isFinite(dst[o + 5]);
+        }
+
+        private static double determinant(double[] c) {
+            double x0 = c[0];
+            double y0 = c[1];
+            double w0 = c[3];
+            double x1 = c[6];
+            double y1 = c[7];
+            double w1 = c[9];
+            double x2 = c[12];
+            double y2 = c[13];
+            double w2 = c[15];
+            return x0 * (y1 * w2 - y2 * w1) - y0 * (x1 * w2 - x2 * w1) + w0 * (x1 * y2 - x2 * y1);
+        }
+
+        private static int append(Worker w, int count, double[] src, int a, int b, int c, int id, int material) {
+            int stride = 3 * Clipper.STRIDE;
+            if ((count + 1) * stride > w.batch.length) {
+                w.batch = Arrays.copyOf(w.batch, w.batch.length * 2);
+                w.batchIds = Arrays.copyOf(w.batchIds, w.batchIds.length * 2);
+                w.batchMaterials = Arrays.copyOf(w.batchMaterials, w.batchMaterials.length * 2);
+            }
+            int o = count * stride;
+            System.arraycopy(src, a, w.batch, o, Clipper.STRIDE);
+            System.arraycopy(src, b, w.batch, o + Clipper.STRIDE, Clipper.STRIDE);
+            System.arraycopy(src, c, w.batch, o + 2 * Clipper.STRIDE, Clipper.STRIDE);
+            w.batchIds[count] = id;
+            w.batchMaterials[count] = material;
+            return count + 1;
+        }
+
+        @Override
+        public void piece(double[] v, int a, int b, int c) {
+            // Tessellator vertex layout: clip x, y, z, w, s, t, screen x, screen y.
+            out.add(v[a + 6], v[a + 7], 1 / v[a + 3], v[a + 4], v[a + 5],
+                    v[b + 6], v[b + 7], 1 / v[b + 3], v[b + 4], v[b + 5],
+                    v[c + 6], v[c + 7], 1 / v[c + 3], v[c + 4], v[c + 5],
+                    currentId, currentMaterial);
+        }
+
+        /** Sorts this chunk's screen triangles into bands of rows, keeping their order within a band. */
+        void bin(int bands, int height) {
+            int n = out.count();
+            if (binStart.length < bands + 1) {
+                binStart = new int[bands + 1];
+            }
+            if (firstBand.length < n) {
+                firstBand = new int[Math.max(n, 2 * firstBand.length)];
+                lastBand = new int[firstBand.length];
+            }
+            Arrays.fill(binStart, 0, bands + 1, 0);
+            int total = 0;
+            for (int i = 0; i < n; i++) {
+                int r0 = Math.max(0, out.firstRow(i));
+                int r1 = Math.min(height, out.endRow(i));
+                if (r0 >= r1) {
+                    firstBand[i] = 1;
+                    lastBand[i] = 0;
+                    continue;
+                }
+                int b0 = r0 / BAND_ROWS;
+                int b1 = (r1 - 1) / BAND_ROWS;
+                firstBand[i] = b0;
+                lastBand[i] = b1;
+                for (int b = b0; b <= b1; b++) {
+                    binStart[b + 1]++;
+                }
+                total += b1 - b0 + 1;
+            }
+            for (int b = 0; b < bands; b++) {
+                binStart[b + 1] += binStart[b];
+            }
+            if (binItems.length < total) {
+                binItems = new int[Math.max(total, 2 * binItems.length)];
+            }
+            // Fill each band's list in triangle order, using binStart as moving cursors, then restore.
+            for (int i = 0; i < n; i++) {
+                for (int b = firstBand[i]; b <= lastBand[i]; b++) {
+                    binItems[binStart[b]++] = i;
+                }
+            }
+            for (int b = bands; b > 0; b--) {
+                binStart[b] = binStart[b - 1];
+            }
+            binStart[0] = 0;
+        }
+    }
+}

@@ -1,0 +1,52 @@
+package dev.trisect.pipeline;
+
+import dev.trisect.tessellate.TessellationSettings;
+
+/**
+ * How a frame is drawn.
+ *
+ * @param mode         texturing path
+ * @param tessellation split policy and caps, used by {@link RenderMode#TESSELLATED}
+ * @param cull         back-face culling
+ * @param background   background colour, 0xRRGGBB
+ * @param borders      draw the yellow outline of every piece filled
+ */
+public record RenderSettings(RenderMode mode, TessellationSettings tessellation, CullMode cull,
+                             int background, boolean borders) {
+
+    public RenderSettings {
+        if (mode == null || tessellation == null || cull == null) {
+            throw new IllegalArgumentException("render settings need a mode, tessellation settings and a cull mode");
+        }
+    }
+
+    /** Tessellated, default split settings, back-face culling, black, no borders. */
+    public static RenderSettings defaults() {
+        return new RenderSettings(RenderMode.TESSELLATED, TessellationSettings.defaults(), CullMode.BACK, 0, false);
+    }
+
+    /** A copy with another mode. */
+    public RenderSettings withMode(RenderMode m) {
+        return new RenderSettings(m, tessellation, cull, background, borders);
+    }
+
+    /** A copy with other tessellation settings. */
+    public RenderSettings withTessellation(TessellationSettings t) {
+        return new RenderSettings(mode, t, cull, background, borders);
+    }
+
+    /** A copy with another cull mode. */
+    public RenderSettings withCull(CullMode c) {
+        return new RenderSettings(mode, tessellation, c, background, borders);
+    }
+
+    /** A copy with another background. */
+    public RenderSettings withBackground(int rgb) {
+        return new RenderSettings(mode, tessellation, cull, rgb, borders);
+    }
+
+    /** A copy with the border overlay on or off. */
+    public RenderSettings withBorders(boolean on) {
+        return new RenderSettings(mode, tessellation, cull, background, on);
+    }
+}

@@ -1,0 +1,128 @@
+package dev.trisect.raster;
+
+/**
+ * Draws the outline of every filled triangle (every tessellated piece) in yellow over the frame,
+ * restricted to a rectangle so that it can run per band like the fill.
+ *
+ * <p>An edge lights the pixel nearest to it in every column (mostly horizontal edges) or row
+ * (mostly vertical ones) whose centre lies within the edge's extent. The pixel is a function of the
+ * edge and that column alone, and edges are walked from a canonical end, so a shared edge drawn from
+ * either triangle and in any band lights the same pixels. A line pixel is drawn where the outlined
+ * triangle's own depth plane is not behind what the frame holds there (within a small relative
+ * tolerance), so outlines of hidden pieces stay hidden while the visible ones show on silhouettes.
+ */
+public final class BorderOverlay {
+    /** The overlay colour, #FFFF00. */
+    public static final int YELLOW = 0xFFFFFF00;
+
+    /** Relative 1/w tolerance: a line pixel may lie this much behind the stored surface and still show. */
+    private static final double DEPTH_TOLERANCE = 1.0 / 512;
+
+    private double qBase;
+    private double qDx;
+    private double qDy;
+
+    /**
+     * Outlines triangles {@code order[from..to)} within pixels {@code [x0, x1) x [y0, y1)}.
+     *
+     * @return number of pixels painted
+     */
+    public long draw(Framebuffer frame, ScreenTriangles triangles, int[] order, int from, int to,
+                     int x0, int y0, int x1, int y1) {
+        int[] f = triangles.fixed();
+        long painted = 0;
+        for (int n = from; n < to; n++) {
+            int tri = order[n];
+            if (!depthPlane(triangles, tri)) {
+                continue;
+            }
+            int o = tri * ScreenTriangles.FIXED_STRIDE;
+            for (int e = 0; e < 3; e++) {
+                int a = o + 2 * e;
+                int b = o + 2 * ((e + 1) % 3);
+                painted += line(frame, f[a], f[a + 1], f[b], f[b + 1], x0, y0, x1, y1);
+            }
+        }
+        return painted;
+    }
+
+    /** The 1/w plane over pixel centres; false for a triangle with no area. */
+    private boolean depthPlane(ScreenTriangles triangles, int tri) {
+        double[] sc = triangles.screen();
+        double[] at = triangles.attributes();
+        int s = tri * ScreenTriangles.SCREEN_STRIDE;
+        int a = tri * ScreenTriangles.ATTRIBUTE_STRIDE;
+        double x0 = sc[s];
+        double y0 = sc[s + 1];
+        double ex1 = sc[s + 2] - x0;
+        double ey1 = sc[s + 3] - y0;
+        double ex2 = sc[s + 4] - x0;
+        double ey2 = sc[s + 5] - y0;
+        double det = ex1 * ey2 - ex2 * ey1;
+        if (det == 0 || !Double.isFinite(det)) {
+            return false;
+        }
+        double dq1 = at[a + 3] - at[a];
+        double dq2 = at[a + 6] - at[a];
+        qDx = (dq1 * ey2 - dq2 * ey1) / det;
+        qDy = (dq2 * ex1 - dq1 * ex2) / det;
+        qBase = at[a] + qDx * (0.5 - x0) + qDy * (0.5 - y0);
+        return true;
+    }
+
+    private long line(Framebuffer frame, long ax, long ay, long bx, long by, int x0, int y0, int x1, int y1) {
+        // Canonical direction: from the smaller (x, y) end, so both triangles sharing the edge agree.
+        if (ax > bx || (ax == bx && ay > by)) {
+            long t = ax;
+            ax = bx;
+            bx = t;
+            t = ay;
+            ay = by;
+            by = t;
+        }
+        double xa = ax / (double) FixedPoint.ONE;
+        double ya = ay / (double) FixedPoint.ONE;
+        double xb = bx / (double) FixedPoint.ONE;
+        double yb = by / (double) FixedPoint.ONE;
+        double dx = xb - xa;
+        double dy = yb - ya;
+        long painted = 0;
+        if (Math.abs(dx) >= Math.abs(dy)) {
+            if (dx == 0) {
+                return 0;
+            }
+            double slope = dy / dx;
+            int first = Math.max(x0, (int) Math.ceil(xa - 0.5));
+            int last = Math.min(x1 - 1, (int) Math.floor(xb - 0.5));
+            for (int c = first; c <= last; c++) {
+                int r = (int) Math.floor(ya + (c + 0.5 - xa) * slope);
+                if (r >= y0 && r < y1) {
+                    painted += plot(frame, c, r);
+                }
+            }
+        } else {
+            double slope = dx / dy;
+            double yLow = Math.min(ya, yb);
+            double yHigh = Math.max(ya, yb);
+            int first = Math.max(y0, (int) Math.ceil(yLow - 0.5));
+            int last = Math.min(y1 - 1, (int) Math.floor(yHigh - 0.5));
+            for (int r = first; r <= last; r++) {
+                int c = (int) Math.floor(xa + (r + 0.5 - ya) * slope);
+                if (c >= x0 && c < x1) {
+                    painted += plot(frame, c, r);
+                }
+            }
+        }
+        return painted;
+    }
+
+    private int plot(Framebuffer frame, int x, int y) {
+        int i = y * frame.width() + x;
+        double q = qBase + qDx * x + qDy * y;
+        if (q < frame.depth()[i] * (1 - DEPTH_TOLERANCE)) {
+            return 0;
+        }
+        frame.color()[i] = YELLOW;
+        return 1;
+    }
+}

@@ -1,0 +1,81 @@
+package dev.trisect.raster;
+
+/**
+ * The frame being drawn: ARGB colour, a depth buffer and, when asked for, the UV output.
+ *
+ * <p>All arrays are row-major, row 0 at the top, pixel (x, y) at index {@code y * width + x}.
+ * Depth holds {@code 1/w} (w the view depth), which is linear in screen space and larger for nearer
+ * surfaces; it is cleared to 0 (infinitely far), and a fragment passes when its {@code 1/w} is
+ * strictly larger — the same order as OpenGL's {@code GL_LESS} on window z. The UV output holds three
+ * floats a pixel: texel coordinates s = u * width and t = v * height before wrapping, and the input
+ * triangle's index + 1 (0 where nothing was drawn).
+ */
+public final class Framebuffer {
+    private final int width;
+    private final int height;
+    private final int[] color;
+    private final float[] depth;
+    private float[] uv;
+
+    /**
+     * @param width  pixels, &gt;= 1
+     * @param height pixels, &gt;= 1
+     */
+    public Framebuffer(int width, int height) {
+        if (width < 1 || height < 1 || (long) width * height > Integer.MAX_VALUE / 3) {
+            throw new IllegalArgumentException("frame size " + width + "x" + height + " is not usable");
+        }
+        this.width = width;
+        this.height = height;
+        this.color = new int[width * height];
+        this.depth = new float[width * height];
+    }
+
+    /** Width in pixels. */
+    public int width() {
+        return width;
+    }
+
+    /** Height in pixels. */
+    public int height() {
+        return height;
+    }
+
+    /** ARGB pixels, row 0 at the top; wrap it in a {@code DataBufferInt} to show it without copying. */
+    public int[] color() {
+        return color;
+    }
+
+    /** Depth as 1/w per pixel (view-space units^-1), 0 = nothing drawn. */
+    public float[] depth() {
+        return depth;
+    }
+
+    /** The UV output (3 floats a pixel), or null when it is not being recorded. */
+    public float[] uv() {
+        return uv;
+    }
+
+    /** Starts or stops recording the UV output; the buffer is kept once made. */
+    public void recordUv(boolean on) {
+        if (on && uv == null) {
+            uv = new float[3 * width * height];
+        } else if (!on) {
+            uv = null;
+        }
+    }
+
+    /**
+     * Clears rows {@code [y0, y1)} of every buffer: colour to {@code background} (opaque), depth to
+     * 0, UV output to 0.
+     */
+    public void clearRows(int y0, int y1, int background) {
+        int from = y0 * width;
+        int to = y1 * width;
+        java.util.Arrays.fill(color, from, to, background | 0xFF000000);
+        java.util.Arrays.fill(depth, from, to, 0f);
+        if (uv != null) {
+            java.util.Arrays.fill(uv, 3 * from, 3 * to, 0f);
+        }
+    }
+}

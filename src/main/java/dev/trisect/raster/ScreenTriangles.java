@@ -1,0 +1,134 @@
+package dev.trisect.raster;
+
+import java.util.Arrays;
+
+/**
+ * Screen-space triangles ready to fill, in drawing order, as parallel primitive arrays.
+ *
+ * <p>Per triangle: corners snapped to the {@link FixedPoint} grid (for coverage), the same corners
+ * unsnapped in pixels (for attribute planes, so snapping never bends the texture mapping), and per
+ * corner {@code 1/w} (view-space units^-1) and texel coordinates s, t. Plus the input triangle's index
+ * (for the UV output) and its material (the texture to sample). The arrays grow as needed and are
+ * reused from frame to frame.
+ */
+public final class ScreenTriangles {
+    /** Ints per triangle in {@link #fixed()}: x0, y0, x1, y1, x2, y2. */
+    public static final int FIXED_STRIDE = 6;
+    /** Doubles per triangle in {@link #screen()}: x0, y0, x1, y1, x2, y2 in pixels. */
+    public static final int SCREEN_STRIDE = 6;
+    /** Doubles per triangle in {@link #attributes()}: q0, s0, t0, q1, s1, t1, q2, s2, t2. */
+    public static final int ATTRIBUTE_STRIDE = 9;
+
+    private int count;
+    private int[] fixed = new int[FIXED_STRIDE * 1024];
+    private double[] screen = new double[SCREEN_STRIDE * 1024];
+    private double[] attributes = new double[ATTRIBUTE_STRIDE * 1024];
+    private int[] ids = new int[1024];
+    private int[] materials = new int[1024];
+
+    /** Number of triangles. */
+    public int count() {
+        return count;
+    }
+
+    /** Removes all triangles, keeping the storage. */
+    public void clear() {
+        count = 0;
+    }
+
+    /** Snapped corners, sub-pixel units. Read-only outside this package. */
+    public int[] fixed() {
+        return fixed;
+    }
+
+    /** Unsnapped corners, pixels. */
+    public double[] screen() {
+        return screen;
+    }
+
+    /** Per-corner 1/w, s, t. */
+    public double[] attributes() {
+        return attributes;
+    }
+
+    /** Input triangle index of each triangle. */
+    public int[] ids() {
+        return ids;
+    }
+
+    /** Material index of each triangle. */
+    public int[] materials() {
+        return materials;
+    }
+
+    /**
+     * Appends a triangle.
+     *
+     * @param x0 screen x of corner 0, pixels (snapped here)
+     * @param q0 1/w of corner 0, w the view depth &gt; 0
+     * @param s0 texel s of corner 0
+     * @param t0 texel t of corner 0
+     */
+    public void add(double x0, double y0, double q0, double s0, double t0,
+                    double x1, double y1, double q1, double s1, double t1,
+                    double x2, double y2, double q2, double s2, double t2,
+                    int id, int material) {
+        if (count == ids.length) {
+            grow();
+        }
+        int f = count * FIXED_STRIDE;
+        fixed[f] = FixedPoint.snap(x0);
+        fixed[f + 1] = FixedPoint.snap(y0);
+        fixed[f + 2] = FixedPoint.snap(x1);
+        fixed[f + 3] = FixedPoint.snap(y1);
+        fixed[f + 4] = FixedPoint.snap(x2);
+        fixed[f + 5] = FixedPoint.snap(y2);
+        int s = count * SCREEN_STRIDE;
+        screen[s] = x0;
+        screen[s + 1] = y0;
+        screen[s + 2] = x1;
+        screen[s + 3] = y1;
+        screen[s + 4] = x2;
+        screen[s + 5] = y2;
+        int a = count * ATTRIBUTE_STRIDE;
+        attributes[a] = q0;
+        attributes[a + 1] = s0;
+        attributes[a + 2] = t0;
+        attributes[a + 3] = q1;
+        attributes[a + 4] = s1;
+        attributes[a + 5] = t1;
+        attributes[a + 6] = q2;
+        attributes[a + 7] = s2;
+        attributes[a + 8] = t2;
+        ids[count] = id;
+        materials[count] = material;
+        count++;
+    }
+
+    private void grow() {
+        int n = ids.length * 2;
+        fixed = Arrays.copyOf(fixed, n * FIXED_STRIDE);
+        screen = Arrays.copyOf(screen, n * SCREEN_STRIDE);
+        attributes = Arrays.copyOf(attributes, n * ATTRIBUTE_STRIDE);
+        ids = Arrays.copyOf(ids, n);
+        materials = Arrays.copyOf(materials, n);
+    }
+
+    /** Smallest pixel row whose centre the triangle can cover (may be below 0). */
+    public int firstRow(int triangle) {
+        int f = triangle * FIXED_STRIDE;
+        int minY = Math.min(fixed[f + 1], Math.min(fixed[f + 3], fixed[f + 5]));
+        return ceilDiv(minY - FixedPoint.HALF, FixedPoint.ONE);
+    }
+
+    /** One past the largest pixel row whose centre the triangle can cover. */
+    public int endRow(int triangle) {
+        int f = triangle * FIXED_STRIDE;
+        int maxY = Math.max(fixed[f + 1], Math.max(fixed[f + 3], fixed[f + 5]));
+        return Math.floorDiv(maxY - FixedPoint.HALF, FixedPoint.ONE) + 1;
+    }
+
+    static int ceilDiv(int a, int b) {
+        return -Math.floorDiv(-a, b);
+    }
+}

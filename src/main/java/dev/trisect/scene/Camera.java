@@ -1,0 +1,74 @@
+package dev.trisect.scene;
+
+import dev.trisect.math.Mat4;
+import dev.trisect.math.Vec3;
+import dev.trisect.math.Viewport;
+
+/**
+ * A perspective camera as {@code gluLookAt(eye, target, up)} and
+ * {@code gluPerspective(fovY, aspect, near, far)}.
+ *
+ * @param eye    camera position, world space
+ * @param target point looked at, world space; differs from {@code eye}
+ * @param up     approximate up direction, world space; not parallel to the view direction
+ * @param fovY   vertical field of view, degrees, in (0, 180)
+ * @param near   distance to the near plane, world units, &gt; 0
+ * @param far    distance to the far plane, world units, &gt; near
+ */
+public record Camera(Vec3 eye, Vec3 target, Vec3 up, double fovY, double near, double far) {
+
+    /** Default vertical field of view, degrees. */
+    public static final double DEFAULT_FOV = 60;
+    /** Default near distance, world units. */
+    public static final double DEFAULT_NEAR = 0.1;
+    /** Default far distance, world units. */
+    public static final double DEFAULT_FAR = 1000;
+
+    /** Checks every rule above; the message names the offending value. */
+    public Camera {
+        if (!eye.isFinite() || !target.isFinite() || !up.isFinite()) {
+            throw new IllegalArgumentException("camera eye, target and up must be finite numbers");
+        }
+        if (eye.equals(target)) {
+            throw new IllegalArgumentException("eye and target are the same point (" + eye + ")");
+        }
+        if (!(fovY > 0 && fovY < 180)) {
+            throw new IllegalArgumentException("field of view must be between 0 and 180 degrees, got " + fovY);
+        }
+        if (!(near > 0) || Double.isInfinite(near)) {
+            throw new IllegalArgumentException("near must be a positive number, got " + near);
+        }
+        if (!(far > near) || Double.isInfinite(far)) {
+            throw new IllegalArgumentException("near (" + near + ") must be less than far (" + far + ")");
+        }
+        Vec3 forward = target.sub(eye).normalize();
+        if (forward.cross(up).length() < 1e-9 * Math.max(1, up.length())) {
+            throw new IllegalArgumentException("up (" + up + ") is parallel to the view direction or zero");
+        }
+    }
+
+    /** A camera with the default field of view, near and far, and +y up. */
+    public static Camera looking(Vec3 eye, Vec3 target) {
+        return new Camera(eye, target, Vec3.UP, DEFAULT_FOV, DEFAULT_NEAR, DEFAULT_FAR);
+    }
+
+    /** World space to view space. */
+    public Mat4 view() {
+        return Mat4.lookAt(eye, target, up);
+    }
+
+    /** View space to clip space for a viewport of the given aspect (width / height). */
+    public Mat4 projection(double aspect) {
+        return Mat4.perspective(fovY, aspect, near, far);
+    }
+
+    /** World space to clip space for the viewport. */
+    public Mat4 viewProjection(Viewport viewport) {
+        return projection(viewport.aspect()).mul(view());
+    }
+
+    /** A copy at another position and target. */
+    public Camera moved(Vec3 newEye, Vec3 newTarget) {
+        return new Camera(newEye, newTarget, up, fovY, near, far);
+    }
+}

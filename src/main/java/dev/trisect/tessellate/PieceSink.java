@@ -1,0 +1,15 @@
+package dev.trisect.tessellate;
+
+/**
+ * Receives the pieces a {@link Tessellator} produces, in order.
+ *
+ * <p>Each vertex is {@link Tessellator#STRIDE} doubles in {@code vertices} starting at its offset:
+ * clip-space x, y, z, w; texel coordinates s = u * width and t = v * height; screen-space x and y in
+ * pixels (see {@link dev.trisect.math.Viewport}). The array is the tessellator's scratch: read the
+ * values during the call, do not keep it.
+ */
+@FunctionalInterface
+public interface PieceSink {
+    /** One piece, corners in the input triangle's winding order. */
+    void piece(double[] vertices, int a, int b, int c);
+}

@@ -1,0 +1,75 @@
+package dev.trisect.tessellate;
+
+/**
+ * How the tessellated path splits triangles.
+ *
+ * @param policy    which measure decides a split
+ * @param maxEdge   for {@link SplitPolicy#EDGE}: the longest edge allowed, screen pixels, &gt; 0
+ * @param maxError  for {@link SplitPolicy#ERROR}: the largest affine displacement allowed, screen
+ *                  pixels, &gt; 0
+ * @param maxDepth  how many times an edge of an input triangle may be halved (its level); an edge
+ *                  at this level is never split again, 0..30. Capping per edge rather than per
+ *                  piece keeps the cap crack-free: both triangles sharing an edge see the same level.
+ * @param maxPieces the most pieces one input triangle may become, &gt;= 1; when reached, the pieces
+ *                  left are filled as they are and the cap is counted
+ */
+public record TessellationSettings(SplitPolicy policy, double maxEdge, double maxError, int maxDepth, int maxPieces) {
+
+    /** Default longest edge, pixels. */
+    public static final double DEFAULT_MAX_EDGE = 32;
+    /** Default largest displacement, pixels. */
+    public static final double DEFAULT_MAX_ERROR = 0.5;
+    /** Default edge level cap. */
+    public static final int DEFAULT_MAX_DEPTH = 16;
+    /** Default piece cap per input triangle. */
+    public static final int DEFAULT_MAX_PIECES = 1 << 16;
+
+    public TessellationSettings {
+        if (policy == null) {
+            throw new IllegalArgumentException("split policy is missing");
+        }
+        if (!(maxEdge > 0) || Double.isInfinite(maxEdge)) {
+            throw new IllegalArgumentException("max edge must be a positive number of pixels, got " + maxEdge);
+        }
+        if (!(maxError > 0) || Double.isInfinite(maxError)) {
+            throw new IllegalArgumentException("max error must be a positive number of pixels, got " + maxError);
+        }
+        if (maxDepth < 0 || maxDepth > 30) {
+            throw new IllegalArgumentException("max depth must be in 0..30, got " + maxDepth);
+        }
+        if (maxPieces < 1) {
+            throw new IllegalArgumentException("max pieces must be at least 1, got " + maxPieces);
+        }
+    }
+
+    /** The defaults: edge policy, 32 px, 0.5 px, depth 16, 65536 pieces. */
+    public static TessellationSettings defaults() {
+        return new TessellationSettings(SplitPolicy.EDGE, DEFAULT_MAX_EDGE, DEFAULT_MAX_ERROR,
+                DEFAULT_MAX_DEPTH, DEFAULT_MAX_PIECES);
+    }
+
+    /** A copy with another policy. */
+    public TessellationSettings withPolicy(SplitPolicy p) {
+        return new TessellationSettings(p, maxEdge, maxError, maxDepth, maxPieces);
+    }
+
+    /** A copy with another max edge. */
+    public TessellationSettings withMaxEdge(double px) {
+        return new TessellationSettings(policy, px, maxError, maxDepth, maxPieces);
+    }
+
+    /** A copy with another max error. */
+    public TessellationSettings withMaxError(double px) {
+        return new TessellationSettings(policy, maxEdge, px, maxDepth, maxPieces);
+    }
+
+    /** A copy with another depth cap. */
+    public TessellationSettings withMaxDepth(int depth) {
+        return new TessellationSettings(policy, maxEdge, maxError, depth, maxPieces);
+    }
+
+    /** A copy with another piece cap. */
+    public TessellationSettings withMaxPieces(int pieces) {
+        return new TessellationSettings(policy, maxEdge, maxError, maxDepth, pieces);
+    }
+}

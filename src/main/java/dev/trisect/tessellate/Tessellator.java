@@ -1,0 +1,282 @@
+package dev.trisect.tessellate;
+
+import dev.trisect.math.Viewport;
+import java.util.Arrays;
+
+/**
+ * Splits one triangle at edge midpoints until every edge passes the split policy, and hands the
+ * pieces to a {@link PieceSink} to be filled affinely.
+ *
+ * <p>Why this leaves no cracks: whether an edge is split depends only on that edge — its two
+ * endpoints and its level (how many times it has been halved) — and the midpoint is the symmetric
+ * {@code (a + b) * 0.5} of clip-space position and texel coordinates. Two triangles that share an edge
+ * therefore cut it at the same points, bit for bit, and the pieces meet without T-junctions. The
+ * depth cap is a cap on edge levels for the same reason. Only the per-triangle piece cap, a guard
+ * against enormous or degenerate input, can leave a split undone on one side of an edge; reaching it
+ * is counted.
+ *
+ * <p>The recursion runs on an explicit stack in primitive arrays, so no input can overflow the Java
+ * stack, and nothing is allocated per triangle once the scratch arrays have grown to their working
+ * size. One instance per thread.
+ */
+public final class Tessellator {
+    /** Doubles per vertex: clip x, y, z, w; texel s, t; screen x, y. */
+    public static final int STRIDE = 8;
+    /** Doubles per input vertex: clip x, y, z, w; texel s, t. */
+    public static final int INPUT_STRIDE = 6;
+
+    private static final int SX = 6;
+    private static final int SY = 7;
+    /** Ints per stacked piece: three vertex offsets and the levels of edges v0-v1, v1-v2, v2-v0. */
+    private static final int PIECE = 6;
+
+    private double[] vertices = new double[STRIDE * 256];
+    private int vertexCount;
+    private int[] stack = new int[PIECE * 64];
+
+    private Viewport viewport = new Viewport(1, 1);
+    private TessellationSettings settings = TessellationSettings.defaults();
+    private boolean errorPolicy;
+    private double threshold;
+
+    private double width = 1;
+    private double height = 1;
+    private long splits;
+    private long pieces;
+    private long culledOffScreen;
+    private int deepestLevel;
+    private int capsReached;
+
+    /** Sets the frame's viewport and split settings for the triangles that follow. */
+    public void configure(Viewport viewport, TessellationSettings settings) {
+        this.viewport = viewport;
+        this.width = viewport.width();
+        this.height = viewport.height();
+        this.settings = settings;
+        this.errorPolicy = settings.policy() == SplitPolicy.ERROR;
+        // The edge policy compares squared lengths, sparing a square root per edge.
+        this.threshold = errorPolicy ? settings.maxError() : settings.maxEdge() * settings.maxEdge();
+    }
+
+    /** Clears the counters. */
+    public void resetStatistics() {
+        splits = 0;
+        pieces = 0;
+        culledOffScreen = 0;
+        deepestLevel = 0;
+        capsReached = 0;
+    }
+
+    /** Splits made since the last reset. */
+    public long splits() {
+        return splits;
+    }
+
+    /** Pieces emitted since the last reset. */
+    public long pieces() {
+        return pieces;
+    }
+
+    /** Pieces dropped since the last reset for lying wholly outside the viewport. */
+    public long culledOffScreen() {
+        return culledOffScreen;
+    }
+
+    /** The highest edge level among emitted pieces since the last reset: the deepest split. */
+    public int deepestLevel() {
+        return deepestLevel;
+    }
+
+    /** Input triangles since the last reset whose splitting a cap stopped short. */
+    public int capsReached() {
+        return capsReached;
+    }
+
+    /**
+     * Processes one triangle.
+     *
+     * @param input  input vertices, {@link #INPUT_STRIDE} doubles each (clip x, y, z, w with w &gt; 0,
+     *               texel s, t)
+     * @param i0     offset of the first corner in {@code input}
+     * @param i1     offset of the second corner
+     * @param i2     offset of the third corner
+     * @param split  false to emit the triangle whole (the perspective and affine paths)
+     * @param sink   receives the pieces
+     */
+    public void process(double[] input, int i0, int i1, int i2, boolean split, PieceSink sink) {
+        vertexCount = 0;
+        int a = load(input, i0);
+        int b = load(input, i1);
+        int c = load(input, i2);
+        if (!split) {
+            pieces++;
+            sink.piece(vertices, a, b, c);
+            return;
+        }
+        int top = push(0, a, b, c, 0, 0, 0);
+        int maxSplits = settings.maxPieces() - 1;
+        int maxLevel = settings.maxDepth();
+        int splitsHere = 0;
+        boolean capped = false;
+        while (top > 0) {
+            int[] st = stack;
+            int p = (--top) * PIECE;
+            int v0 = st[p];
+            int v1 = st[p + 1];
+            int v2 = st[p + 2];
+            int l0 = st[p + 3];
+            int l1 = st[p + 4];
+            int l2 = st[p + 5];
+            if (offScreen(v0, v1, v2)) {
+                // Nothing of it can be seen, so it is neither split nor filled. Its edges lie off
+                // screen too, so a neighbour that does split a shared edge cannot open a visible crack.
+                culledOffScreen++;
+                continue;
+            }
+            double m0 = measure(v0, v1);
+            double m1 = measure(v1, v2);
+            double m2 = measure(v2, v0);
+            // Pick the failing edge with the largest measure among those still allowed to split.
+            int edge = -1;
+            double worst = threshold;
+            if (m0 > worst) {
+                if (l0 < maxLevel) {
+                    edge = 0;
+                    worst = m0;
+                } else {
+                    capped = true;
+                }
+            }
+            if (m1 > threshold) {
+                if (l1 < maxLevel) {
+                    if (m1 > worst) {
+                        edge = 1;
+                        worst = m1;
+                    }
+                } else {
+                    capped = true;
+                }
+            }
+            if (m2 > threshold) {
+                if (l2 < maxLevel) {
+                    if (m2 > worst) {
+                        edge = 2;
+                    }
+                } else {
+                    capped = true;
+                }
+            }
+            if (edge >= 0 && splitsHere >= maxSplits) {
+                capped = true;
+                edge = -1;
+            }
+            if (edge < 0) {
+                pieces++;
+                int level = Math.max(l0, Math.max(l1, l2));
+                if (level > deepestLevel) {
+                    deepestLevel = level;
+                }
+                sink.piece(vertices, v0, v1, v2);
+                continue;
+            }
+            splitsHere++;
+            splits++;
+            // Rotate so that the split edge runs p -> q with r opposite, keeping the winding.
+            int vp;
+            int vq;
+            int vr;
+            int lpq;
+            int lqr;
+            int lrp;
+            if (edge == 0) {
+                vp = v0; vq = v1; vr = v2; lpq = l0; lqr = l1; lrp = l2;
+            } else if (edge == 1) {
+                vp = v1; vq = v2; vr = v0; lpq = l1; lqr = l2; lrp = l0;
+            } else {
+                vp = v2; vq = v0; vr = v1; lpq = l2; lqr = l0; lrp = l1;
+            }
+            int m = midpoint(vp, vq);
+            int half = lpq + 1;
+            // The new inner edge m-r also gets level lpq + 1: every split then lowers the sum of
+            // 2^(maxLevel - level) over a piece's edges, so splitting ends even without the piece cap.
+            top = push(top, m, vq, vr, half, lqr, half);
+            top = push(top, vp, m, vr, half, half, lrp);
+        }
+        if (capped) {
+            capsReached++;
+        }
+    }
+
+    /** Whether the piece's screen bounding box misses the viewport entirely. */
+    private boolean offScreen(int a, int b, int c) {
+        double[] v = vertices;
+        double xa = v[a + SX];
+        double xb = v[b + SX];
+        double xc = v[c + SX];
+        double ya = v[a + SY];
+        double yb = v[b + SY];
+        double yc = v[c + SY];
+        return (xa < 0 && xb < 0 && xc < 0) || (ya < 0 && yb < 0 && yc < 0)
+                || (xa > width && xb > width && xc > width) || (ya > height && yb > height && yc > height);
+    }
+
+    /** Edge measure: squared screen length (edge policy) or the affine error bound in pixels. */
+    private double measure(int a, int b) {
+        double[] v = vertices;
+        double dx = v[a + SX] - v[b + SX];
+        double dy = v[a + SY] - v[b + SY];
+        double lengthSquared = dx * dx + dy * dy;
+        if (!errorPolicy) {
+            return lengthSquared;
+        }
+        return EdgeBound.affineError(Math.sqrt(lengthSquared), v[a + 3], v[b + 3]);
+    }
+
+    private int load(double[] input, int offset) {
+        int o = reserveVertex();
+        double[] v = vertices;
+        System.arraycopy(input, offset, v, o, INPUT_STRIDE);
+        project(o);
+        return o;
+    }
+
+    private int midpoint(int a, int b) {
+        int o = reserveVertex();
+        double[] v = vertices;
+        for (int k = 0; k < INPUT_STRIDE; k++) {
+            v[o + k] = (v[a + k] + v[b + k]) * 0.5;
+        }
+        project(o);
+        return o;
+    }
+
+    private void project(int o) {
+        double[] v = vertices;
+        v[o + SX] = viewport.screenX(v[o], v[o + 3]);
+        v[o + SY] = viewport.screenY(v[o + 1], v[o + 3]);
+    }
+
+    private int reserveVertex() {
+        int o = vertexCount * STRIDE;
+        if (o + STRIDE > vertices.length) {
+            vertices = Arrays.copyOf(vertices, vertices.length * 2);
+        }
+        vertexCount++;
+        return o;
+    }
+
+    private int push(int top, int v0, int v1, int v2, int l0, int l1, int l2) {
+        int p = top * PIECE;
+        if (p + PIECE > stack.length) {
+            stack = Arrays.copyOf(stack, stack.length * 2);
+        }
+        int[] st = stack;
+        st[p] = v0;
+        st[p + 1] = v1;
+        st[p + 2] = v2;
+        st[p + 3] = l0;
+        st[p + 4] = l1;
+        st[p + 5] = l2;
+        return top + 1;
+    }
+}
