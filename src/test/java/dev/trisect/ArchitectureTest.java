@@ -1,0 +1,82 @@
+package dev.trisect;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Packages depend only downward, in this order; {@code cli} never reaches {@code ui}; only {@code ui}
+ * touches Swing and {@code raster} touches no AWT at all.
+ */
+class ArchitectureTest {
+    /** Bottom to top. A package may use itself and the ones before it. */
+    static final List<String> LAYERS = List.of(
+            "base", "math", "mesh", "texture", "tessellate", "raster", "pipeline", "metrics", "scene", "io",
+            "ui", "cli");
+
+    private static final Pattern REFERENCE = Pattern.compile("\\bdev\\.trisect\\.(\\w+)\\.");
+    private static final Path SOURCES = Path.of("src/main/java/dev/trisect");
+
+    @Test
+    void packagesDependOnlyDownward() throws IOException {
+        List<String> violations = new ArrayList<>();
+        int checked = 0;
+        for (Path file : javaFiles()) {
+            String own = SOURCES.relativize(file).getName(0).toString();
+            if (own.endsWith(".java")) {
+                continue; // the launcher in the base package wires the top layers together
+            }
+            int ownRank = LAYERS.indexOf(own);
+            assertTrue(ownRank >= 0, "package " + own + " is not in the layer list");
+            Matcher m = REFERENCE.matcher(code(file));
+            while (m.find()) {
+                checked++;
+                String used = m.group(1);
+                int usedRank = LAYERS.indexOf(used);
+                boolean ok = usedRank >= 0 && usedRank <= ownRank && !(own.equals("cli") && used.equals("ui"));
+                if (!ok) {
+                    violations.add(SOURCES.relativize(file) + " uses dev.trisect." + used);
+                }
+            }
+        }
+        assertTrue(checked > 10, "the check saw the code's references");
+        assertEquals(List.of(), violations);
+    }
+
+    @Test
+    void swingOnlyInUiAndNoAwtInRaster() throws IOException {
+        List<String> violations = new ArrayList<>();
+        for (Path file : javaFiles()) {
+            String own = SOURCES.relativize(file).getName(0).toString();
+            String code = code(file);
+            if (code.contains("javax.swing") && !own.equals("ui")) {
+                violations.add(SOURCES.relativize(file) + " uses Swing");
+            }
+            if (code.contains("java.awt") && own.equals("raster")) {
+                violations.add(SOURCES.relativize(file) + " uses AWT");
+            }
+        }
+        assertEquals(List.of(), violations);
+    }
+
+    private static List<Path> javaFiles() throws IOException {
+        try (Stream<Path> s = Files.walk(SOURCES)) {
+            return s.filter(p -> p.toString().endsWith(".java")).sorted().toList();
+        }
+    }
+
+    /** Source without comments, so Javadoc links do not count as dependencies. */
+    private static String code(Path file) throws IOException {
+        String src = Files.readString(file);
+        return src.replaceAll("(?s)/\\*.*?\\*/", "").replaceAll("//[^\n]*", "");
+    }
+}
