@@ -1,0 +1,284 @@
+package dev.trisect.mesh;
+
+import dev.trisect.base.InputException;
+import java.io.Closeable;
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.FileSystemException;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.Arrays;
+
+/**
+ * Streams the logical lines of a text file in the OBJ/MTL style and splits each into tokens.
+ *
+ * <p>Bytes are read as ISO-8859-1, so no content can cause a charset error. Every byte up to
+ * {@code 0x20} separates tokens (which also swallows {@code \r} of {@code \r\n} endings). A line
+ * whose last non-blank byte is a backslash continues on the next one. A token starting with
+ * {@code #} starts a comment that runs to the end of the logical line.
+ */
+final class LineScanner implements Closeable {
+    /** Longest logical line accepted, in bytes: a guard against runaway memory on garbage input. */
+    static final int MAX_LINE = 1 << 24;
+
+    private final String label;
+    private final InputStream in;
+    private final byte[] chunk = new byte[1 << 16];
+    private int chunkPos;
+    private int chunkLen;
+    private boolean atEof;
+
+    private byte[] line = new byte[256];
+    private int lineLen;
+    private int physicalLines;
+    private int lineNumber;
+
+    private int[] starts = new int[16];
+    private int[] ends = new int[16];
+    private int count;
+
+    /**
+     * Opens {@code file} for scanning.
+     *
+     * @param label the file's name as messages should show it
+     * @throws IOException when the file cannot be opened; {@link #reason} describes it for users
+     */
+    LineScanner(Path file, String label) throws IOException {
+        if (Files.isDirectory(file)) {
+            throw new FileSystemException(file.toString(), null, "is a directory");
+        }
+        this.in = Files.newInputStream(file);
+        this.label = label;
+    }
+
+    /** A short, user-facing description of why a file could not be opened or read. */
+    static String reason(IOException e) {
+        if (e instanceof NoSuchFileException) {
+            return "no such file";
+        }
+        if (e instanceof AccessDeniedException) {
+            return "permission denied";
+        }
+        if (e instanceof FileSystemException && ((FileSystemException) e).getReason() != null) {
+            return ((FileSystemException) e).getReason();
+        }
+        return e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName();
+    }
+
+    /**
+     * Advances to the next logical line and tokenizes it.
+     *
+     * @return false at the end of the file
+     */
+    boolean next() {
+        count = 0;
+        lineLen = 0;
+        lineNumber = physicalLines + 1;
+        while (true) {
+            int before = lineLen;
+            boolean ended = appendPhysicalLine();
+            if (!ended && lineLen == 0) {
+                return false;
+            }
+            physicalLines++;
+            int end = lineLen;
+            // Only this physical line is scanned back, so long runs of continued blank lines stay linear.
+            while (end > before && (line[end - 1] & 0xff) <= ' ') {
+                end--;
+            }
+            boolean continues = end > before && line[end - 1] == '\\';
+            if (continues) {
+                line[end - 1] = ' ';
+            }
+            if (!continues) {
+                break;
+            }
+        }
+        tokenize();
+        return true;
+    }
+
+    /** Appends bytes up to the next newline (dropped); false when the file ended first. */
+    private boolean appendPhysicalLine() {
+        while (true) {
+            if (chunkPos == chunkLen && !fill()) {
+                return false;
+            }
+            int from = chunkPos;
+            int i = from;
+            while (i < chunkLen && chunk[i] != '\n') {
+                i++;
+            }
+            append(from, i);
+            chunkPos = i;
+            if (i < chunkLen) {
+                chunkPos++;
+                return true;
+            }
+        }
+    }
+
+    private boolean fill() {
+        if (atEof) {
+            return false;
+        }
+        try {
+            int n = in.read(chunk);
+            if (n < 0) {
+                atEof = true;
+                return false;
+            }
+            chunkPos = 0;
+            chunkLen = n;
+            return true;
+        } catch (IOException e) {
+            throw new InputException(label + ": cannot read: " + reason(e), e);
+        }
+    }
+
+    private void append(int from, int to) {
+        int n = to - from;
+        if (n == 0) {
+            return;
+        }
+        if (lineLen + n > MAX_LINE) {
+            throw error("line is longer than " + MAX_LINE + " characters");
+        }
+        if (lineLen + n > line.length) {
+            byte[] bigger = new byte[Math.min(MAX_LINE, Math.max(line.length * 2, lineLen + n))];
+            System.arraycopy(line, 0, bigger, 0, lineLen);
+            line = bigger;
+        }
+        System.arraycopy(chunk, from, line, lineLen, n);
+        lineLen += n;
+    }
+
+    private void tokenize() {
+        int i = 0;
+        while (true) {
+            while (i < lineLen && (line[i] & 0xff) <= ' ') {
+                i++;
+            }
+            if (i == lineLen || line[i] == '#') {
+                return;
+            }
+            int start = i;
+            while (i < lineLen && (line[i] & 0xff) > ' ') {
+                i++;
+            }
+            if (count == starts.length) {
+                starts = Arrays.copyOf(starts, count * 2);
+                ends = Arrays.copyOf(ends, count * 2);
+            }
+            starts[count] = start;
+            ends[count] = i;
+            count++;
+        }
+    }
+
+    /** Number of tokens on the current line (0 for blank and comment lines). */
+    int count() {
+        return count;
+    }
+
+    /** Token {@code i} as a string. */
+    String text(int i) {
+        return slice(starts[i], ends[i]);
+    }
+
+    /** The bytes from offset {@code from} to {@code to} of the current line, as a string. */
+    String slice(int from, int to) {
+        return new String(line, from, to - from, StandardCharsets.ISO_8859_1);
+    }
+
+    /** Whether token {@code i} is exactly {@code keyword} (ASCII). */
+    boolean is(int i, String keyword) {
+        int s = starts[i];
+        int n = ends[i] - s;
+        if (n != keyword.length()) {
+            return false;
+        }
+        for (int k = 0; k < n; k++) {
+            if (line[s + k] != keyword.charAt(k)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** The text from token {@code i} to the last token, inner blanks kept; empty when there is none. */
+    String rest(int i) {
+        if (i >= count) {
+            return "";
+        }
+        return slice(starts[i], ends[count - 1]);
+    }
+
+    /** First byte offset of token {@code i}, for {@link #byteAt}. */
+    int start(int i) {
+        return starts[i];
+    }
+
+    /** Offset just past token {@code i}. */
+    int end(int i) {
+        return ends[i];
+    }
+
+    /** The byte at offset {@code k} of the current line. */
+    byte byteAt(int k) {
+        return line[k];
+    }
+
+    /** The (first physical) line number of the current logical line, from 1. */
+    int lineNumber() {
+        return lineNumber;
+    }
+
+    /** The file's name as messages show it. */
+    String label() {
+        return label;
+    }
+
+    /** An error about the current line: {@code file:line: what}. */
+    InputException error(String what) {
+        return errorAt(lineNumber, what);
+    }
+
+    /** An error about line {@code lineNumber} of this file. */
+    InputException errorAt(int lineNumber, String what) {
+        return new InputException(label + ":" + lineNumber + ": " + what);
+    }
+
+    /**
+     * {@code text} quoted for a message: shortened when long, with control characters escaped so the
+     * message stays one printable line.
+     */
+    static String quote(String text) {
+        int max = 40;
+        StringBuilder sb = new StringBuilder("'");
+        for (int k = 0; k < text.length() && k < max; k++) {
+            char c = text.charAt(k);
+            if (c < 0x20 || (c >= 0x7f && c <= 0x9f)) {
+                sb.append(String.format("\\x%02X", (int) c));
+            } else {
+                sb.append(c);
+            }
+        }
+        if (text.length() > max) {
+            sb.append("...");
+        }
+        return sb.append('\'').toString();
+    }
+
+    @Override
+    public void close() {
+        try {
+            in.close();
+        } catch (IOException e) {
+            // Nothing was lost: the file was only read.
+        }
+    }
+}
