@@ -107,7 +107,7 @@ public final class ImageComparison {
                         texelErrors[compared++] = texelError;
                         texelSum += texelError;
                         texelMax = Math.max(texelMax, texelError);
-                        if (Math.floor(sTest) != Math.floor(sRef) || Math.floor(tTest) != Math.floor(tRef)) {
+                        if (!sameFloor(uvTest[k], uvReference[k]) || !sameFloor(uvTest[k + 1], uvReference[k + 1])) {
                             texelDiffers++;
                         }
 
@@ -170,10 +170,28 @@ public final class ImageComparison {
         if (!(Math.abs(det) > SINGULAR_TOLERANCE * (Math.abs(sx * ty) + Math.abs(sy * tx)))) {
             return Float.NaN;
         }
-        double dx = (ty * ds - sy * dt) / det;
-        double dy = (sx * dt - tx * ds) / det;
+        double inverse = 1 / det;
+        double dx = (ty * ds - sy * dt) * inverse;
+        double dy = (sx * dt - tx * ds) * inverse;
         float length = (float) Math.sqrt(dx * dx + dy * dy);
         return length <= Float.MAX_VALUE ? length : Float.NaN;
+    }
+
+    /**
+     * Whether {@code floor(a) == floor(b)} for finite a and b: the same texel row or column is sampled.
+     * Through int conversion where that is exact, as it measured several times faster here than
+     * {@link Math#floor}; beyond 2^30 texels {@code Math.floor} itself.
+     */
+    private static boolean sameFloor(float a, float b) {
+        if (Math.abs(a) < 0x1p30f && Math.abs(b) < 0x1p30f) {
+            int floorA = (int) a;
+            int floorB = (int) b;
+            // (int) truncates toward zero: step down for negative non-integers.
+            floorA -= a < floorA ? 1 : 0;
+            floorB -= b < floorB ? 1 : 0;
+            return floorA == floorB;
+        }
+        return Math.floor(a) == Math.floor(b);
     }
 
     /** RMSE of the R, G and B channels (0..255) over all pixels. */

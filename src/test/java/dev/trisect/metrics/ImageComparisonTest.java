@@ -228,6 +228,8 @@ class ImageComparisonTest {
             {7.999, 1.0, 7.0, 1.0, 0},
             {100.5, 4.5, 100.5, 4.5, 0},
             {3.0, 3.0, 2.99, 3.0, 1},
+            {3e9, 0.5, 3e9 + 256, 0.5, 1}, // beyond int range: adjacent floats, different texels
+            {-3e9, 0.5, -3e9, 0.5, 0},
         };
         int w = cases.length;
         float[] reference = new float[3 * w];
@@ -240,8 +242,8 @@ class ImageComparisonTest {
 
         Comparison c = ImageComparison.compare(w, 1, argb, test, argb, reference);
 
-        assertEquals(10, c.comparedPixels());
-        assertEquals(0.4, c.texelDifferShare(), 1e-12);
+        assertEquals(12, c.comparedPixels());
+        assertEquals(5 / 12.0, c.texelDifferShare(), 1e-12);
     }
 
     @Test
