@@ -51,6 +51,8 @@ public record Comparison(
      * One line of JSON (no trailing newline) with the components under snake_case keys in declaration
      * order, for example {@code {"width":1280,"height":720,"compared_pixels":...,"psnr_db":null}}.
      * Non-finite numbers (NaN, infinities) are written as {@code null}, as JSON has no literal for them.
+     *
+     * @return the JSON object text
      */
     public String toJson() {
         StringBuilder json = new StringBuilder(512).append('{');

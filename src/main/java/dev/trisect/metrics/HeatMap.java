@@ -69,6 +69,8 @@ public final class HeatMap {
      * The ramp's key colours, from 0 to {@code maxPixels} pixels, for labelling a legend.
      *
      * @param maxPixels displacement in pixels drawn white; finite and positive
+     * @return the stops in increasing order of displacement, the first at 0 and the last at
+     *         {@code maxPixels} (white); unmodifiable
      */
     public static List<LegendStop> legendStops(double maxPixels) {
         scale(maxPixels);
@@ -98,11 +100,16 @@ public final class HeatMap {
      * {@link #UNCOVERED_ARGB} (black) where neither given UV buffer covers it (id 0), else
      * {@link #UNDEFINED_ARGB}. Pass the same buffer twice to use one render's coverage only.
      *
-     * @param uvTest      the test render's UV buffer ({@code 3 * width * height}, id in every third
-     *                    float), or null
-     * @param uvReference the reference render's UV buffer, or null; with both null this is
-     *                    {@link #render(float[], int, int, double, int[])}
-     * @see #render(float[], int, int, double, int[])
+     * @param displacement {@code width * height} displacements in pixels, row 0 at the top, NaN where
+     *                     undefined
+     * @param uvTest       the test render's UV buffer ({@code 3 * width * height}, id in every third
+     *                     float), or null
+     * @param uvReference  the reference render's UV buffer, or null; with both null this is
+     *                     {@link #render(float[], int, int, double, int[])}
+     * @param width        image width in pixels
+     * @param height       image height in pixels
+     * @param maxPixels    displacement in pixels drawn white; finite and positive
+     * @param argbOut      {@code width * height} pixels to fill, row 0 at the top
      */
     public static void render(float[] displacement, float[] uvTest, float[] uvReference, int width, int height,
                               double maxPixels, int[] argbOut) {

@@ -11,8 +11,9 @@ package dev.trisect.metrics;
  * <h2>Displacement</h2>
  * The displacement answers "how far on screen is the texture from where the reference puts it". At a
  * compared pixel p, let f be the reference's map from screen position to texel coordinates and
- * J = d(s, t)/d(x, y) its Jacobian at p. The test shows texel {@code (s, t)_test}; the reference draws
- * that texel at the p + d with f(p + d) = {@code (s, t)_test}. To first order,
+ * J = d(s, t)/d(x, y) = [[ds/dx, ds/dy], [dt/dx, dt/dy]] its Jacobian at p. The test shows texel
+ * {@code (s, t)_test} at p; the reference draws that texel at p + d, where f(p + d) = {@code (s, t)_test}.
+ * To first order,
  * {@code d = J^-1 ((s, t)_test - (s, t)_ref)}, and the displacement is |d| in pixels.
  * This is a first-order estimate: exact where the reference map is affine around p (within one
  * affinely textured triangle) and, for a perspective map, exact in the limit of small errors, its
@@ -23,16 +24,18 @@ package dev.trisect.metrics;
  * on that axis qualify, a one-sided difference where only one does. The displacement is undefined
  * (NaN, and left out of the displacement statistics) where an axis has no qualifying neighbour (a
  * triangle one pixel thin), or where J is singular: {@code |det J|} at most {@link #SINGULAR_TOLERANCE}
- * times {@code |J00 J11| + |J01 J10|}, i.e. the texture barely changes along some screen direction.
+ * times {@code |ds/dx dt/dy| + |ds/dy dt/dx|}, i.e. the texture does not change along some screen
+ * direction. A merely ill-conditioned J is kept: it gives a large displacement, which to first order is
+ * the truth (a tiny texel error moves the texture far along the direction where it barely changes).
  *
  * <p>Cost: one pass over the pixels, two whole-image {@code float} scratch arrays for the percentiles
  * (found by selection, not by sorting), no allocation per pixel.
  */
 public final class ImageComparison {
     /**
-     * Relative size of {@code |det J|}, against {@code |J00 J11| + |J01 J10|}, at or below which the
-     * reference Jacobian counts as singular and the displacement is undefined. Well above float rounding
-     * of finite differences, well below any usefully conditioned texture mapping.
+     * Relative size of {@code |det J|}, against {@code |ds/dx dt/dy| + |ds/dy dt/dx|}, at or below which
+     * the reference Jacobian counts as singular and the displacement is undefined: only (nearly) exact
+     * cancellation, as from texture coordinates that are collinear across a triangle.
      */
     public static final double SINGULAR_TOLERANCE = 1e-6;
 
@@ -63,10 +66,17 @@ public final class ImageComparison {
      * Compares two renders of the same size and also writes each pixel's displacement, for a heat map
      * ({@link HeatMap}) without recomputing.
      *
+     * @param width           image width in pixels, at least 1
+     * @param height          image height in pixels, at least 1
+     * @param argbTest        the test render's colours, {@code width * height}, row 0 at the top
+     * @param uvTest          the test render's UV buffer, {@code 3 * width * height}
+     * @param argbReference   the reference render's colours
+     * @param uvReference     the reference render's UV buffer
      * @param displacementOut {@code width * height} floats, filled with the displacement in pixels of
      *                        every pixel, row 0 at the top, NaN where it is undefined (not compared,
      *                        or no usable reference Jacobian); may be null
-     * @see #compare(int, int, int[], float[], int[], float[])
+     * @return the statistics
+     * @throws IllegalArgumentException when a size is not positive or an array's length does not match
      */
     public static Comparison compare(int width, int height, int[] argbTest, float[] uvTest,
                                      int[] argbReference, float[] uvReference, float[] displacementOut) {
