@@ -1,0 +1,93 @@
+package dev.trisect.metrics;
+
+/**
+ * How far a test render is from a reference render of the same scene and size, as measured by
+ * {@link ImageComparison#compare}.
+ *
+ * <p>A pixel is <em>compared</em> when both renders cover it with the same triangle id; only compared
+ * pixels enter the texel and displacement statistics. Statistics over no values (no compared pixel, or
+ * no defined displacement) are {@code NaN}. Percentiles are nearest-rank: the p99 is the smallest
+ * value that at least 99% of the values do not exceed.
+ *
+ * @param width              image width in pixels
+ * @param height             image height in pixels
+ * @param comparedPixels     pixels covered in both renders by the same triangle id (with finite s, t)
+ * @param otherPixels        pixels covered in one render only, by different ids in the two, or with a
+ *                           non-finite s or t; pixels covered in neither render are in neither count
+ * @param maxTexelError      largest texel error over compared pixels, in texels: the Euclidean distance
+ *                           between the (s, t) of the two renders
+ * @param p99TexelError      99th percentile of the texel error, in texels
+ * @param meanTexelError     mean texel error, in texels
+ * @param maxDisplacement    largest on-screen displacement, in pixels: how far from where the reference
+ *                           draws it the test draws a texel (see {@link ImageComparison})
+ * @param p99Displacement    99th percentile of the displacement, in pixels
+ * @param meanDisplacement   mean displacement, in pixels
+ * @param displacementPixels compared pixels whose displacement is defined (the reference's screen-space
+ *                           Jacobian exists there and is not singular)
+ * @param texelDifferShare   share (0..1) of compared pixels that sample a different texel, that is whose
+ *                           {@code floor(s)} or {@code floor(t)} differs between the renders
+ * @param colourRmse         root mean square difference of the R, G and B channels (0..255) over all
+ *                           pixels; alpha is ignored
+ * @param psnrDb             peak signal-to-noise ratio {@code 20 log10(255 / colourRmse)} in decibels;
+ *                           {@code +Infinity} when the colours are identical
+ */
+public record Comparison(
+        int width,
+        int height,
+        int comparedPixels,
+        int otherPixels,
+        double maxTexelError,
+        double p99TexelError,
+        double meanTexelError,
+        double maxDisplacement,
+        double p99Displacement,
+        double meanDisplacement,
+        int displacementPixels,
+        double texelDifferShare,
+        double colourRmse,
+        double psnrDb) {
+
+    /**
+     * One line of JSON (no trailing newline) with the components under snake_case keys in declaration
+     * order, for example {@code {"width":1280,"height":720,"compared_pixels":...,"psnr_db":null}}.
+     * Non-finite numbers (NaN, infinities) are written as {@code null}, as JSON has no literal for them.
+     *
+     * @return the JSON object text
+     */
+    public String toJson() {
+        StringBuilder json = new StringBuilder(512).append('{');
+        field(json, "width", width);
+        field(json, "height", height);
+        field(json, "compared_pixels", comparedPixels);
+        field(json, "other_pixels", otherPixels);
+        field(json, "max_texel_error", maxTexelError);
+        field(json, "p99_texel_error", p99TexelError);
+        field(json, "mean_texel_error", meanTexelError);
+        field(json, "max_displacement", maxDisplacement);
+        field(json, "p99_displacement", p99Displacement);
+        field(json, "mean_displacement", meanDisplacement);
+        field(json, "displacement_pixels", displacementPixels);
+        field(json, "texel_differ_share", texelDifferShare);
+        field(json, "colour_rmse", colourRmse);
+        field(json, "psnr_db", psnrDb);
+        return json.append('}').toString();
+    }
+
+    private static void field(StringBuilder json, String key, double value) {
+        key(json, key);
+        // Double.toString gives a valid JSON number for every finite double ("1.0", "2.5E-4").
+        json.append(Double.isFinite(value) ? Double.toString(value) : "null");
+    }
+
+    private static void field(StringBuilder json, String key, int value) {
+        key(json, key);
+        json.append(value);
+    }
+
+    private static void key(StringBuilder json, String key) {
+        if (json.length() > 1) {
+            json.append(',');
+        }
+        json.append('"').append(key).append("\":");
+    }
+}
