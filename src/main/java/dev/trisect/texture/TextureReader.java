@@ -63,8 +63,9 @@ public final class TextureReader {
             };
         } catch (InputException e) {
             throw e;
-        } catch (IOException | RuntimeException e) {
-            // Decoders signal damaged data with all sorts of exceptions, unchecked ones included.
+        } catch (IOException | RuntimeException | AssertionError e) {
+            // Decoders signal damaged data with all sorts of exceptions, unchecked ones included, and
+            // TwelveMonkeys with an AssertionError where it meets what it did not expect.
             throw new InputException(name + ": cannot decode the " + format.label + " data: corrupt, truncated "
                     + "or an unsupported variant (" + describe(e) + ")", e);
         } catch (OutOfMemoryError e) {

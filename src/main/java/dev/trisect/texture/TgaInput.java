@@ -50,8 +50,11 @@ final class TgaInput {
             throw error("unsupported image type " + imageType + " (supported: colour-mapped, true-colour and "
                     + "grey-scale, raw or run-length encoded: types 1, 2, 3, 9, 10, 11)");
         }
-        if (bitsPerPixel == 0 || bitsPerPixel > 32) {
-            throw error("corrupt header: " + bitsPerPixel + " bits per pixel");
+        if (bitsPerPixel != 8 && bitsPerPixel != 15 && bitsPerPixel != 16 && bitsPerPixel != 24
+                && bitsPerPixel != 32) {
+            // Checked here because TwelveMonkeys throws an AssertionError for some other depths.
+            throw error("unsupported or corrupt header: " + bitsPerPixel + " bits per pixel (TGA uses 8, 15, 16, "
+                    + "24 or 32)");
         }
         if ((descriptor & 0x10) != 0) {
             // TwelveMonkeys 3.13.1 rejects it with "Unsupported origin"; say so plainly.

@@ -180,6 +180,12 @@ class TextureReaderErrorsTest {
         header[1] = 7;
         assertFailsSaying("colourmap.tga", concat(header, new byte[40]), "colour map type 7");
         assertFailsSaying("stub.tga", bytes(0, 0, 2, 0, 0), "TGA truncated: the header needs 18 bytes");
+        // Colour-mapped with 2 bits a pixel: TwelveMonkeys would throw an AssertionError.
+        byte[] twoBit = tgaHeader(1, 2, 2, 2, 0);
+        twoBit[1] = 1;
+        twoBit[5] = 4;
+        twoBit[7] = 24;
+        assertFailsSaying("two-bit.tga", concat(twoBit, new byte[12 + 40]), "2 bits per pixel");
     }
 
     /** A valid 64x48 file in each format, with noise so compressed data is large enough to cut. */
