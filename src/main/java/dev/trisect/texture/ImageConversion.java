@@ -6,7 +6,9 @@ import java.awt.color.ColorSpace;
 import java.awt.image.BufferedImage;
 import java.awt.image.ColorModel;
 import java.awt.image.ComponentColorModel;
+import java.awt.image.ComponentSampleModel;
 import java.awt.image.DataBuffer;
+import java.awt.image.DataBufferByte;
 import java.awt.image.DataBufferInt;
 import java.awt.image.IndexColorModel;
 import java.awt.image.Raster;
@@ -84,25 +86,69 @@ final class ImageConversion {
         int height = raster.getHeight();
         int colours = model.getNumColorComponents();
         int bands = model.getNumComponents();
-        int[][] samples = new int[bands][width];
+        int[] argb = new int[width * height];
+        int[] sample = new int[4];
+        if (isInterleavedBytes(raster, model)) {
+            // The common case (PNG, JPEG, BMP, TGA: 8-bit samples side by side): read the bytes directly.
+            ComponentSampleModel layout = (ComponentSampleModel) raster.getSampleModel();
+            byte[] data = ((DataBufferByte) raster.getDataBuffer()).getData();
+            int[] offsets = layout.getBandOffsets();
+            int pixelStride = layout.getPixelStride();
+            int scanlineStride = layout.getScanlineStride();
+            int origin = raster.getDataBuffer().getOffset()
+                    + (raster.getMinY() - raster.getSampleModelTranslateY()) * scanlineStride
+                    + (raster.getMinX() - raster.getSampleModelTranslateX()) * pixelStride;
+            for (int y = 0; y < height; y++) {
+                int pixel = origin + y * scanlineStride;
+                for (int x = 0; x < width; x++, pixel += pixelStride) {
+                    for (int band = 0; band < bands; band++) {
+                        sample[band] = data[pixel + offsets[band]] & 0xFF;
+                    }
+                    argb[y * width + x] = pack(sample, colours, bands);
+                }
+            }
+            return argb;
+        }
+        int[][] rows = new int[bands][width];
         int[][] toByte = new int[bands][];
         for (int band = 0; band < bands; band++) {
             toByte[band] = scaleTable(model.getComponentSize(band));
         }
-        int[] argb = new int[width * height];
         for (int y = 0; y < height; y++) {
             for (int band = 0; band < bands; band++) {
-                raster.getSamples(raster.getMinX(), raster.getMinY() + y, width, 1, band, samples[band]);
+                raster.getSamples(raster.getMinX(), raster.getMinY() + y, width, 1, band, rows[band]);
             }
             for (int x = 0; x < width; x++) {
-                int r = toByte[0][samples[0][x]];
-                int g = colours == 3 ? toByte[1][samples[1][x]] : r;
-                int b = colours == 3 ? toByte[2][samples[2][x]] : r;
-                int a = bands > colours ? toByte[colours][samples[colours][x]] : 0xFF;
-                argb[y * width + x] = a << 24 | r << 16 | g << 8 | b;
+                for (int band = 0; band < bands; band++) {
+                    sample[band] = toByte[band][rows[band][x]];
+                }
+                argb[y * width + x] = pack(sample, colours, bands);
             }
         }
         return argb;
+    }
+
+    /** 8-bit samples, interleaved in one byte array: the layout the direct path understands. */
+    private static boolean isInterleavedBytes(Raster raster, ColorModel model) {
+        if (!(raster.getSampleModel() instanceof ComponentSampleModel layout)
+                || !(raster.getDataBuffer() instanceof DataBufferByte buffer) || buffer.getNumBanks() != 1) {
+            return false;
+        }
+        for (int band = 0; band < model.getNumComponents(); band++) {
+            if (model.getComponentSize(band) != 8 || layout.getBankIndices()[band] != 0) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** One ARGB texel from 0..255 samples: grey or R, G, B, then alpha if there is one. */
+    private static int pack(int[] sample, int colours, int bands) {
+        int r = sample[0];
+        int g = colours == 3 ? sample[1] : r;
+        int b = colours == 3 ? sample[2] : r;
+        int a = bands > colours ? sample[colours] : 0xFF;
+        return a << 24 | r << 16 | g << 8 | b;
     }
 
     /** Maps {@code bits}-bit samples to 0..255, rounding to nearest. */

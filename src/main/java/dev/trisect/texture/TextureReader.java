@@ -142,11 +142,21 @@ public final class TextureReader {
             throw error(name, "this Java runtime has no " + format.label + " decoder");
         }
         ImageReader reader = readers.next();
-        try (ImageInputStream in = new FileImageInputStream(file.toFile())) {
+        try (ImageInputStream in = openStream(file)) {
             return decode(reader, in, name, format);
         } finally {
             reader.dispose();
         }
+    }
+
+    /**
+     * A seekable stream on the file for javax.imageio, buffered where a registered provider offers
+     * one (TwelveMonkeys does; the JDK's plain FileImageInputStream reads unbuffered and decodes PNG
+     * about 15% slower).
+     */
+    static ImageInputStream openStream(Path file) throws IOException {
+        ImageInputStream in = ImageIO.createImageInputStream(file.toFile());
+        return in != null ? in : new FileImageInputStream(file.toFile());
     }
 
     /** Checks the size from the header, then decodes the first image. */

@@ -6,7 +6,6 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
-import javax.imageio.stream.FileImageInputStream;
 import javax.imageio.stream.ImageInputStream;
 import javax.imageio.stream.MemoryCacheImageInputStream;
 
@@ -98,7 +97,7 @@ final class TgaInput {
                     + Math.max(0, size - pixelDataOffset) + " after the header");
         }
         if (size >= pixelDataOffset + FOOTER_BYTES) {
-            return new FileImageInputStream(file.toFile());
+            return TextureReader.openStream(file);
         }
         byte[] data = Files.readAllBytes(file);
         if (imageType >= 9 && !runsComplete(data)) {
