@@ -31,6 +31,8 @@ import javax.imageio.stream.ImageInputStream;
  * one-line message that starts with the file name: a missing file, a directory, a file that cannot be
  * read, an unsupported format, corrupt or truncated data, or an image wider or taller than
  * {@link Texture#MAX_SIDE} texels. The size is checked from the header, before any pixel is decoded.
+ * A JPEG the decoder only warns about (damaged or missing scan data, which it fills with grey) counts
+ * as corrupt.
  */
 public final class TextureReader {
     private TextureReader() {

@@ -13,6 +13,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.zip.CRC32;
+import java.util.zip.Deflater;
 import javax.imageio.IIOImage;
 import javax.imageio.ImageIO;
 import javax.imageio.ImageWriteParam;
@@ -167,6 +168,54 @@ final class TestImages {
             out[i] = (byte) values[i];
         }
         return out;
+    }
+
+    /**
+     * A PNG written by hand, for the variants ImageIO's writer does not produce (low bit depths,
+     * transparency chunks): one IDAT, no filtering.
+     *
+     * @param rows   each row's packed samples, without the filter byte
+     * @param chunks extra chunks before IDAT, each as type (4 characters) followed by its data
+     */
+    static byte[] png(int width, int height, int bitDepth, int colourType, byte[][] rows, byte[]... chunks) {
+        ByteArrayOutputStream raw = new ByteArrayOutputStream();
+        for (byte[] row : rows) {
+            raw.write(0); // filter type None
+            raw.writeBytes(row);
+        }
+        Deflater deflater = new Deflater();
+        deflater.setInput(raw.toByteArray());
+        deflater.finish();
+        ByteArrayOutputStream compressed = new ByteArrayOutputStream();
+        byte[] buffer = new byte[4096];
+        while (!deflater.finished()) {
+            compressed.write(buffer, 0, deflater.deflate(buffer));
+        }
+        deflater.end();
+        ByteBuffer header = ByteBuffer.allocate(13).putInt(width).putInt(height);
+        header.put((byte) bitDepth).put((byte) colourType).put(new byte[3]);
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        out.writeBytes(bytes(0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A));
+        out.writeBytes(pngChunk(concat("IHDR".getBytes(StandardCharsets.US_ASCII), header.array())));
+        for (byte[] chunk : chunks) {
+            out.writeBytes(pngChunk(chunk));
+        }
+        out.writeBytes(pngChunk(concat("IDAT".getBytes(StandardCharsets.US_ASCII), compressed.toByteArray())));
+        out.writeBytes(pngChunk("IEND".getBytes(StandardCharsets.US_ASCII)));
+        return out.toByteArray();
+    }
+
+    /** Length, type and data, CRC: {@code typeAndData} is the chunk type's 4 bytes followed by its data. */
+    private static byte[] pngChunk(byte[] typeAndData) {
+        CRC32 crc = new CRC32();
+        crc.update(typeAndData);
+        return ByteBuffer.allocate(typeAndData.length + 8).putInt(typeAndData.length - 4).put(typeAndData)
+                .putInt((int) crc.getValue()).array();
+    }
+
+    /** A PNG chunk's type and data, for {@link #png}. */
+    static byte[] chunk(String type, int... data) {
+        return concat(type.getBytes(StandardCharsets.US_ASCII), bytes(data));
     }
 
     /** A PNG whose IHDR claims the given size (CRC fixed up), with no pixel data that could match it. */

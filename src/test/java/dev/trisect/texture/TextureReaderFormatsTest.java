@@ -5,11 +5,13 @@ import static dev.trisect.texture.TestImages.PATTERN_HEIGHT;
 import static dev.trisect.texture.TestImages.PATTERN_WIDTH;
 import static dev.trisect.texture.TestImages.assertTexels;
 import static dev.trisect.texture.TestImages.bytes;
+import static dev.trisect.texture.TestImages.chunk;
 import static dev.trisect.texture.TestImages.concat;
 import static dev.trisect.texture.TestImages.encode;
 import static dev.trisect.texture.TestImages.encodeGif;
 import static dev.trisect.texture.TestImages.opaquePattern;
 import static dev.trisect.texture.TestImages.pam;
+import static dev.trisect.texture.TestImages.png;
 import static dev.trisect.texture.TestImages.patternImage;
 import static dev.trisect.texture.TestImages.ppm;
 import static dev.trisect.texture.TestImages.samples;
@@ -28,10 +30,13 @@ import java.awt.image.IndexColorModel;
 import java.awt.image.WritableRaster;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
 /** Every supported format reads back to the texels that were written, row 0 at the top. */
@@ -84,6 +89,30 @@ class TextureReaderFormatsTest {
         raster.setPixels(0, 0, 2, 1, new int[] {65535, 0x8000, 0, 257 * 0x12, 257 * 0x34, 0x7F7F});
         Texture texture = read("deep.png", encode(new BufferedImage(model, raster, false, null), "png"));
         assertTexels(new int[] {0xFFFF8000, 0xFF12347F}, 2, 1, texture);
+    }
+
+    /** Hand-built PNGs: the low bit depths and transparency chunks ImageIO's writer never produces. */
+    static Stream<Arguments> handBuiltPngs() {
+        byte[][] twoBitGrey = {bytes(0b00_11_01_10)}; // 0, 3, 1, 2 of 3
+        byte[][] fourBitIndices = {bytes(0x01, 0x20)}; // 0, 1, 2, 0
+        byte[] palette = chunk("PLTE", 10, 20, 30, 200, 100, 50, 0, 255, 0);
+        return Stream.of(
+                Arguments.of("2-bit grey", png(4, 1, 2, 0, twoBitGrey),
+                        new int[] {0xFF000000, 0xFFFFFFFF, 0xFF555555, 0xFFAAAAAA}),
+                Arguments.of("4-bit palette, first entry half transparent",
+                        png(4, 1, 4, 3, fourBitIndices, palette, chunk("tRNS", 128)),
+                        new int[] {0x800A141E, 0xFFC86432, 0xFF00FF00, 0x800A141E}),
+                Arguments.of("8-bit grey, 50 transparent", png(2, 1, 8, 0, new byte[][] {bytes(50, 51)},
+                        chunk("tRNS", 0, 50)), new int[] {0x00323232, 0xFF333333}),
+                Arguments.of("16-bit RGB, (1, 2, 3) transparent", png(2, 1, 16, 2,
+                        new byte[][] {bytes(0, 1, 0, 2, 0, 3, 0xFF, 0xFF, 0, 0, 0, 0)}, chunk("tRNS", 0, 1, 0, 2, 0, 3)),
+                        new int[] {0x00000000, 0xFFFF0000}));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("handBuiltPngs")
+    void pngVariantsReadExactly(String variant, byte[] png, int[] expected) {
+        assertTexels(expected, expected.length, 1, read("variant.png", png));
     }
 
     @Test
