@@ -1,0 +1,93 @@
+package dev.trisect.texture;
+
+import java.util.Locale;
+
+/**
+ * The image file formats {@link TextureReader} reads, recognised by their first bytes. TGA has no magic
+ * number, so a file is taken as TGA only when nothing else matches and its name ends in {@code .tga}.
+ */
+enum ImageFormat {
+    PNG("PNG", "png"),
+    JPEG("JPEG", "jpeg"),
+    BMP("BMP", "bmp"),
+    GIF("GIF", "gif"),
+    TGA("TGA", null),
+    PPM("PPM", null),
+    PAM("PAM", null);
+
+    /** What every "unsupported format" message lists. */
+    static final String SUPPORTED = "PNG, JPEG, BMP, GIF, TGA (named *.tga), binary PPM (P6) and PAM (P7, "
+            + "tuple type RGB or RGB_ALPHA)";
+
+    /** Enough leading bytes to recognise every format (and to hold a whole TGA header). */
+    static final int HEAD_BYTES = 18;
+
+    /** The name used in messages. */
+    final String label;
+    /** The javax.imageio format name of the JDK's own reader, or null where Trisect decodes it otherwise. */
+    final String imageIoName;
+
+    ImageFormat(String label, String imageIoName) {
+        this.label = label;
+        this.imageIoName = imageIoName;
+    }
+
+    /**
+     * The format of a file from its first bytes (up to {@link #HEAD_BYTES}) and its name, or null when
+     * it is none of the supported ones.
+     */
+    static ImageFormat detect(byte[] head, int length, String fileName) {
+        if (startsWith(head, length, 0x89, 'P', 'N', 'G', 0x0D, 0x0A, 0x1A, 0x0A)) {
+            return PNG;
+        }
+        if (startsWith(head, length, 0xFF, 0xD8, 0xFF)) {
+            return JPEG;
+        }
+        if (startsWith(head, length, 'G', 'I', 'F', '8')) {
+            return GIF;
+        }
+        if (startsWith(head, length, 'B', 'M')) {
+            return BMP;
+        }
+        if (length >= 3 && head[0] == 'P' && isWhitespace(head[2])) {
+            if (head[1] == '6') {
+                return PPM;
+            }
+            if (head[1] == '7') {
+                return PAM;
+            }
+        }
+        if (fileName.toLowerCase(Locale.ROOT).endsWith(".tga")) {
+            return TGA;
+        }
+        return null;
+    }
+
+    /**
+     * For a file that is not supported but is a Netpbm or PFM file of another kind, the magic number
+     * ({@code P1}..{@code P5}, {@code PF}, {@code Pf}) to name in the message; otherwise null.
+     */
+    static String otherNetpbmMagic(byte[] head, int length) {
+        if (length >= 3 && head[0] == 'P' && "12345Ff".indexOf(head[1]) >= 0 && isWhitespace(head[2])) {
+            return "P" + (char) head[1];
+        }
+        return null;
+    }
+
+    /** Netpbm's whitespace: space, tab, CR, LF, vertical tab and form feed. */
+    static boolean isWhitespace(int b) {
+        return b == ' ' || b == '\t' || b == '\r' || b == '\n' || b == 0x0B || b == '\f';
+    }
+
+    private static boolean startsWith(byte[] head, int length, int... magic) {
+        if (length < magic.length) {
+            return false;
+        }
+        for (int i = 0; i < magic.length; i++) {
+            if ((head[i] & 0xFF) != magic[i]) {
+                return false;
+            }
+        }
+        return true;
+    }
+}

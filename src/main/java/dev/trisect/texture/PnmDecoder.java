@@ -1,0 +1,265 @@
+package dev.trisect.texture;
+
+import dev.trisect.base.InputException;
+import java.io.BufferedInputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+/**
+ * Reads binary PPM ({@code P6}) and PAM ({@code P7}, tuple types {@code RGB} and {@code RGB_ALPHA}),
+ * 8 or 16 bits a sample (any maxval 1..65535), as the Netpbm specifications describe them.
+ *
+ * <p>Trisect decodes these itself rather than through TwelveMonkeys' PNM plugin, whose PAM header
+ * parser (3.13.1) rejects valid headers: more than one space between keyword and value, and a missing
+ * (optional) {@code TUPLTYPE}. Both formats are simple enough that one small reader is clearer than
+ * patching around another.
+ */
+final class PnmDecoder {
+    /** A header longer than this is taken as a corrupt file rather than read on and on. */
+    private static final int MAX_HEADER_BYTES = 1 << 16;
+    /** Numbers are saturated here: far above any valid size or maxval, far below overflow. */
+    private static final long NUMBER_CAP = 1_000_000_000_000L;
+
+    private final InputStream in;
+    private final String name;
+    private final String label;
+    /** Bytes consumed so far. */
+    private long position;
+
+    private PnmDecoder(InputStream in, String name, String label) {
+        this.in = in;
+        this.name = name;
+        this.label = label;
+    }
+
+    /** The header fields that matter; {@code channels} is 3 (RGB) or 4 (RGB plus alpha). */
+    private record Header(long width, long height, int maxval, int channels) {
+        int bytesPerSample() {
+            return maxval < 256 ? 1 : 2;
+        }
+    }
+
+    /** Reads a whole PPM or PAM file (format as detected from its magic number). */
+    static Texture read(Path file, String name, ImageFormat format) throws IOException {
+        long fileSize = Files.size(file);
+        try (InputStream raw = Files.newInputStream(file)) {
+            PnmDecoder decoder = new PnmDecoder(new BufferedInputStream(raw, 1 << 16), name, format.label);
+            Header header = format == ImageFormat.PPM ? decoder.readPpmHeader() : decoder.readPamHeader();
+            TextureReader.checkSize(name, format.label, header.width, header.height);
+            // Checked before allocating the texels, so a truncated file claiming a large size fails fast.
+            long needed = header.width * header.height * header.channels * header.bytesPerSample();
+            long available = fileSize - decoder.position;
+            if (available < needed) {
+                throw decoder.error("truncated: the pixel data needs " + needed + " bytes, the file has "
+                        + available + " after the header");
+            }
+            return decoder.readPixels(header);
+        }
+    }
+
+    private Header readPpmHeader() throws IOException {
+        expectMagic('6');
+        long width = readNumber("width");
+        long height = readNumber("height");
+        long maxval = readNumber("maxval");
+        // readNumber consumed the single whitespace byte that separates maxval from the pixels.
+        return new Header(width, height, checkMaxval(maxval), 3);
+    }
+
+    private Header readPamHeader() throws IOException {
+        expectMagic('7');
+        String rest = readLine();
+        if (rest == null || !rest.isBlank()) {
+            throw error("corrupt header: the P7 line must have nothing after P7");
+        }
+        long width = -1;
+        long height = -1;
+        long depth = -1;
+        long maxval = -1;
+        String tupleType = null;
+        while (true) {
+            String line = readLine();
+            if (line == null) {
+                throw error("truncated header: no ENDHDR line");
+            }
+            line = line.strip();
+            if (line.isEmpty() || line.startsWith("#")) {
+                continue;
+            }
+            String[] parts = line.split("[ \\t\\x0B\\f\\r]+", 2);
+            String keyword = parts[0];
+            String value = parts.length > 1 ? parts[1] : "";
+            switch (keyword) {
+                case "ENDHDR" -> {
+                    return pamHeader(width, height, depth, maxval, tupleType);
+                }
+                case "WIDTH" -> width = parseHeaderNumber(keyword, value);
+                case "HEIGHT" -> height = parseHeaderNumber(keyword, value);
+                case "DEPTH" -> depth = parseHeaderNumber(keyword, value);
+                case "MAXVAL" -> maxval = parseHeaderNumber(keyword, value);
+                // The specification joins repeated TUPLTYPE lines with a space.
+                case "TUPLTYPE" -> tupleType = tupleType == null ? value : tupleType + " " + value;
+                default -> throw error("corrupt header: unknown PAM header line '" + printable(line) + "'");
+            }
+        }
+    }
+
+    private Header pamHeader(long width, long height, long depth, long maxval, String tupleType) {
+        String[] required = {"WIDTH", "HEIGHT", "DEPTH", "MAXVAL"};
+        long[] values = {width, height, depth, maxval};
+        for (int i = 0; i < required.length; i++) {
+            if (values[i] < 0) {
+                throw error("corrupt header: no " + required[i] + " line");
+            }
+        }
+        // TUPLTYPE is optional; without it, depth 3 and 4 can only sensibly be RGB and RGB_ALPHA.
+        String type = tupleType != null ? tupleType : depth == 3 ? "RGB" : depth == 4 ? "RGB_ALPHA" : null;
+        if (type == null) {
+            throw error("unsupported PAM: DEPTH " + depth + " without a TUPLTYPE (supported: RGB with "
+                    + "DEPTH 3, RGB_ALPHA with DEPTH 4)");
+        }
+        int channels;
+        switch (type) {
+            case "RGB" -> channels = 3;
+            case "RGB_ALPHA" -> channels = 4;
+            default -> throw error("unsupported PAM tuple type '" + printable(type)
+                    + "' (supported: RGB and RGB_ALPHA)");
+        }
+        if (depth != channels) {
+            throw error("corrupt header: tuple type " + type + " needs DEPTH " + channels + ", the header says "
+                    + depth);
+        }
+        return new Header(width, height, checkMaxval(maxval), channels);
+    }
+
+    private int checkMaxval(long maxval) {
+        if (maxval < 1 || maxval > 65535) {
+            throw error("corrupt header: maxval " + maxval + " is outside 1..65535");
+        }
+        return (int) maxval;
+    }
+
+    private Texture readPixels(Header header) throws IOException {
+        int width = (int) header.width;
+        int height = (int) header.height;
+        int bytesPerSample = header.bytesPerSample();
+        int[] toByte = scaleTable(header.maxval);
+        byte[] row = new byte[width * header.channels * bytesPerSample];
+        int[] argb = new int[width * height];
+        int[] sample = new int[4];
+        sample[3] = 255; // opaque where the format has no alpha
+        for (int y = 0; y < height; y++) {
+            if (in.readNBytes(row, 0, row.length) < row.length) {
+                throw error("truncated: the pixel data ends in row " + y + " of " + height);
+            }
+            int i = 0;
+            for (int x = 0; x < width; x++) {
+                for (int c = 0; c < header.channels; c++) {
+                    int value = bytesPerSample == 1 ? row[i] & 0xFF : (row[i] & 0xFF) << 8 | row[i + 1] & 0xFF;
+                    i += bytesPerSample;
+                    if (value > header.maxval) {
+                        throw error("corrupt pixel data: sample " + value + " at texel (" + x + ", " + y
+                                + ") is above maxval " + header.maxval);
+                    }
+                    sample[c] = toByte[value];
+                }
+                argb[y * width + x] = sample[3] << 24 | sample[0] << 16 | sample[1] << 8 | sample[2];
+            }
+        }
+        return new Texture(name, width, height, argb);
+    }
+
+    /** Maps samples 0..maxval to 0..255, rounding to nearest. */
+    private static int[] scaleTable(int maxval) {
+        int[] table = new int[maxval + 1];
+        for (int v = 0; v <= maxval; v++) {
+            table[v] = (int) ((v * 255L + maxval / 2) / maxval);
+        }
+        return table;
+    }
+
+    private void expectMagic(char kind) throws IOException {
+        if (next() != 'P' || next() != kind) {
+            throw error("corrupt header: expected the magic number P" + kind);
+        }
+    }
+
+    /**
+     * Reads a decimal header number after whitespace and {@code #} comments, and the one whitespace
+     * byte that must end it.
+     */
+    private long readNumber(String what) throws IOException {
+        int b = next();
+        while (ImageFormat.isWhitespace(b) || b == '#') {
+            if (b == '#') {
+                do {
+                    b = next();
+                } while (b != '\n' && b != '\r' && b != -1);
+            }
+            b = next();
+        }
+        if (b < '0' || b > '9') {
+            throw error(b == -1 ? "truncated header: no " + what
+                    : "corrupt header: expected a number for the " + what);
+        }
+        long value = 0;
+        while (b >= '0' && b <= '9') {
+            value = Math.min(NUMBER_CAP, value * 10 + (b - '0'));
+            b = next();
+        }
+        if (!ImageFormat.isWhitespace(b)) {
+            throw error(b == -1 ? "truncated header after the " + what
+                    : "corrupt header: the " + what + " must be followed by whitespace");
+        }
+        return value;
+    }
+
+    private long parseHeaderNumber(String keyword, String value) {
+        if (value.isEmpty() || !value.chars().allMatch(ch -> ch >= '0' && ch <= '9')) {
+            throw error("corrupt header: " + keyword + " '" + printable(value) + "' is not a number");
+        }
+        long result = 0;
+        for (int i = 0; i < value.length(); i++) {
+            result = Math.min(NUMBER_CAP, result * 10 + (value.charAt(i) - '0'));
+        }
+        return result;
+    }
+
+    /** A header line up to {@code \n} (a trailing {@code \r} kept for strip()), or null at end of file. */
+    private String readLine() throws IOException {
+        StringBuilder line = new StringBuilder();
+        int b = next();
+        if (b == -1) {
+            return null;
+        }
+        while (b != '\n' && b != -1) {
+            line.append((char) b);
+            b = next();
+        }
+        return line.toString();
+    }
+
+    /** The next header byte, or -1 at end of file; a header that goes on too long is corrupt. */
+    private int next() throws IOException {
+        if (position >= MAX_HEADER_BYTES) {
+            throw error("corrupt header: longer than " + MAX_HEADER_BYTES + " bytes");
+        }
+        int b = in.read();
+        if (b != -1) {
+            position++;
+        }
+        return b;
+    }
+
+    /** Header text made safe for a one-line message. */
+    private static String printable(String text) {
+        String shown = text.length() > 40 ? text.substring(0, 40) + "..." : text;
+        return shown.replaceAll("[^\\x20-\\x7E]", "?");
+    }
+
+    private InputException error(String what) {
+        return TextureReader.error(name, label + " " + what);
+    }
+}
