@@ -1,0 +1,176 @@
+package dev.trisect.cli;
+
+import dev.trisect.base.InputException;
+import dev.trisect.io.ObjWriter;
+import dev.trisect.math.Mat4;
+import dev.trisect.math.Vec3;
+import dev.trisect.pipeline.FrameRenderer;
+import dev.trisect.pipeline.FrameStats;
+import dev.trisect.pipeline.RenderMode;
+import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.raster.Framebuffer;
+import dev.trisect.scene.Camera;
+import dev.trisect.scene.Scene;
+import dev.trisect.texture.Texture;
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code trisect bench}: frame times of each path on one scene, and optionally of Mesa's llvmpipe
+ * (through tools/glref) on the same frame. Times are wall clock after a warm-up, so the JIT has
+ * compiled the hot loops; the median is reported because a shared machine adds outliers.
+ */
+@Command(name = "bench", sortOptions = false, mixinStandardHelpOptions = true,
+        description = {"Measure frame times of each texturing path on a scene (and of OpenGL's llvmpipe through "
+                + "tools/glref with --glref) and print a table, or JSON lines with --json."})
+final class BenchCommand extends SceneCommand {
+    @Option(names = "--modes", split = ",", paramLabel = "MODE[,MODE...]", converter = Converters.ModeConverter.class,
+            defaultValue = "perspective,affine,tessellated", description = "Paths to measure (default: all three).")
+    List<RenderMode> modes;
+
+    @Option(names = "--frames", paramLabel = "N", defaultValue = "200",
+            description = "Frames measured per path (default: ${DEFAULT-VALUE}).")
+    int frames;
+
+    @Option(names = "--warmup", paramLabel = "N", defaultValue = "100",
+            description = "Frames rendered first and not measured, for the JIT (default: ${DEFAULT-VALUE}).")
+    int warmup;
+
+    @Option(names = "--glref", paramLabel = "PROGRAM",
+            description = "Also time the frame in OpenGL with this glref binary (built from tools/glref), using the "
+                    + "same thread count; both renderers then use the first material's texture everywhere.")
+    Path glref;
+
+    @Option(names = "--json", description = "One JSON line per path instead of a table.")
+    boolean json;
+
+    @Override
+    void checkOutputs() {
+        if (frames < 1 || warmup < 0) {
+            throw InputException.usage("--frames must be at least 1 and --warmup at least 0");
+        }
+    }
+
+    @Override
+    int run(Scene scene, Camera camera) throws IOException, InterruptedException {
+        Texture[] textures = scene.textureArray();
+        if (glref != null) {
+            Arrays.fill(textures, textures[0]);
+        }
+        Framebuffer fb = Frames.allocate(frame.size);
+        Mat4 vp = camera.viewProjection(frame.size.viewport());
+        List<String> lines = new ArrayList<>();
+        int threads;
+        try (FrameRenderer renderer = common.renderer()) {
+            threads = renderer.threads();
+            if (!json) {
+                lines.add(String.format(Locale.ROOT, "scene %s, %s, %d triangles, %d threads, %d frames after %d "
+                        + "warm-up", scene.name(), frame.size, scene.mesh().triangleCount(), threads, frames, warmup));
+                lines.add(String.format(Locale.ROOT, "%-12s %10s %10s %10s %8s %10s", "path", "median ms", "mean ms",
+                        "p95 ms", "fps", "pieces"));
+            }
+            for (RenderMode mode : modes) {
+                RenderSettings settings = path.settings(frame).withMode(mode);
+                FrameStats last = null;
+                for (int i = 0; i < warmup; i++) {
+                    last = renderer.render(scene.mesh(), textures, vp, settings, fb);
+                }
+                double[] ms = new double[frames];
+                for (int i = 0; i < frames; i++) {
+                    long t0 = System.nanoTime();
+                    last = renderer.render(scene.mesh(), textures, vp, settings, fb);
+                    ms[i] = (System.nanoTime() - t0) / 1e6;
+                }
+                lines.add(row(mode.id(), ms, last.pieces()));
+            }
+        }
+        if (glref != null) {
+            lines.add(glrefRow(scene, textures[0], camera, threads));
+        }
+        lines.forEach(common.out()::println);
+        common.out().flush();
+        return 0;
+    }
+
+    private String row(String name, double[] ms, long pieces) {
+        double[] sorted = ms.clone();
+        Arrays.sort(sorted);
+        double median = sorted[sorted.length / 2];
+        double mean = Arrays.stream(ms).average().orElse(Double.NaN);
+        double p95 = sorted[Math.min(sorted.length - 1, (int) Math.ceil(sorted.length * 0.95) - 1)];
+        if (json) {
+            return String.format(Locale.ROOT, "{\"path\":\"%s\",\"size\":\"%s\",\"frames\":%d,\"median_ms\":%.3f,"
+                    + "\"mean_ms\":%.3f,\"p95_ms\":%.3f,\"fps\":%.1f,\"pieces\":%d}", name, frame.size, ms.length,
+                    median, mean, p95, 1000 / median, pieces);
+        }
+        return String.format(Locale.ROOT, "%-12s %10.3f %10.3f %10.3f %8.1f %10d", name, median, mean, p95,
+                1000 / median, pieces);
+    }
+
+    private static final Pattern GLREF_OUT = Pattern.compile("ms_per_frame\\s+([0-9.]+)");
+
+    /** Exports the scene, runs glref with LP_NUM_THREADS set, and reports its mean frame time. */
+    private String glrefRow(Scene scene, Texture texture, Camera camera, int threads)
+            throws IOException, InterruptedException {
+        if (!camera.up().normalize().equals(Vec3.UP)) {
+            common.note("glref always uses up = 0,1,0; its frame differs from ours for --up " + camera.up());
+        }
+        Path dir = Files.createTempDirectory("trisect-bench");
+        try {
+            Path obj = dir.resolve("scene.obj");
+            List<Path> maps = ObjWriter.write(obj, scene.mesh(), List.of(Arrays.stream(scene.textureArray())
+                    .map(t -> texture).toArray(Texture[]::new)));
+            List<String> cmd = new ArrayList<>(List.of(glref.toString(), obj.toString(), maps.get(0).toString(),
+                    dir.resolve("gl.ppm").toString(), Integer.toString(frame.size.width()),
+                    Integer.toString(frame.size.height())));
+            for (Vec3 v : List.of(camera.eye(), camera.target())) {
+                cmd.addAll(List.of(Double.toString(v.x()), Double.toString(v.y()), Double.toString(v.z())));
+            }
+            cmd.addAll(List.of(Double.toString(camera.fovY()), Double.toString(camera.near()),
+                    Double.toString(camera.far()), frame.cull.name().toLowerCase(Locale.ROOT),
+                    Integer.toString(frames + warmup)));
+            ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true);
+            pb.environment().put("LP_NUM_THREADS", Integer.toString(threads));
+            Process p;
+            try {
+                p = pb.start();
+            } catch (IOException e) {
+                throw new InputException(glref + ": cannot run: " + e.getMessage(), e);
+            }
+            String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+            if (!p.waitFor(10, TimeUnit.MINUTES) || p.exitValue() != 0) {
+                throw new InputException(glref + ": failed: " + output.strip().replace('\n', ' '));
+            }
+            Matcher m = GLREF_OUT.matcher(output);
+            if (!m.find()) {
+                throw new InputException(glref + ": printed no ms_per_frame: " + output.strip().replace('\n', ' '));
+            }
+            double ms = Double.parseDouble(m.group(1));
+            if (json) {
+                return String.format(Locale.ROOT, "{\"path\":\"glref-llvmpipe\",\"size\":\"%s\",\"frames\":%d,"
+                        + "\"mean_ms\":%.3f,\"fps\":%.1f,\"threads\":%d}", frame.size, frames + warmup, ms, 1000 / ms,
+                        threads);
+            }
+            return String.format(Locale.ROOT, "%-12s %10s %10.3f %10s %8.1f %10s  (Mesa llvmpipe, LP_NUM_THREADS=%d, "
+                    + "mean of %d frames incl. glFinish)", "glref", "-", ms, "-", 1000 / ms, "-", threads, frames + warmup);
+        } finally {
+            try (var files = Files.list(dir)) {
+                for (Path f : files.toList()) {
+                    Files.deleteIfExists(f);
+                }
+            }
+            Files.deleteIfExists(dir);
+        }
+    }
+}

@@ -1,0 +1,77 @@
+package dev.trisect.cli;
+
+import dev.trisect.base.InputException;
+import java.io.PrintWriter;
+import picocli.CommandLine;
+import picocli.CommandLine.ParseResult;
+
+/**
+ * Runs the command line. Bad input ends in one line on standard error and a non-zero status:
+ * 2 for a usage error (an unknown option, a value out of range), 1 for input that cannot be read.
+ * A stack trace is printed only with {@code --verbose}.
+ */
+public final class Cli {
+    private Cli() {
+    }
+
+    /** Runs {@code args} with the process's streams and returns the exit status. */
+    public static int run(String... args) {
+        return run(new PrintWriter(System.out, true), new PrintWriter(System.err, true), args);
+    }
+
+    /** Runs {@code args} writing to the given streams; returns the exit status. */
+    public static int run(PrintWriter out, PrintWriter err, String... args) {
+        System.setProperty("trisect.processors", Integer.toString(Runtime.getRuntime().availableProcessors()));
+        CommandLine cl = new CommandLine(new TrisectCommand());
+        cl.setOut(out);
+        cl.setErr(err);
+        cl.setParameterExceptionHandler((ex, arguments) -> {
+            String where = ex.getCommandLine().getCommandName();
+            err.println("trisect " + (where.equals("trisect") ? "" : where + " ").trim() + ": "
+                    + firstLine(ex.getMessage()) + " (see " + ex.getCommandLine().getCommandSpec().qualifiedName()
+                    + " --help)");
+            err.flush();
+            return 2;
+        });
+        cl.setExecutionExceptionHandler((ex, commandLine, parseResult) -> {
+            boolean verbose = verbose(parseResult);
+            int status;
+            if (ex instanceof InputException ie) {
+                err.println("trisect: " + ie.getMessage());
+                status = ie.exitStatus();
+            } else {
+                err.println("trisect: internal error: " + ex + (verbose ? "" : " (run with --verbose for details)"));
+                status = 3;
+            }
+            if (verbose) {
+                ex.printStackTrace(err);
+            }
+            err.flush();
+            return status;
+        });
+        try {
+            return cl.execute(args);
+        } catch (OutOfMemoryError e) {
+            err.println("trisect: out of memory (use a smaller --size or give Java more with -Xmx)");
+            err.flush();
+            return 1;
+        }
+    }
+
+    private static boolean verbose(ParseResult result) {
+        for (ParseResult r = result; r != null; r = r.subcommand()) {
+            if (r.hasMatchedOption("--verbose")) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private static String firstLine(String message) {
+        if (message == null) {
+            return "invalid arguments";
+        }
+        int nl = message.indexOf('\n');
+        return (nl < 0 ? message : message.substring(0, nl)).trim();
+    }
+}

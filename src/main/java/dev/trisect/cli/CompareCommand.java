@@ -1,0 +1,84 @@
+package dev.trisect.cli;
+
+import dev.trisect.io.ImageFiles;
+import dev.trisect.metrics.Comparison;
+import dev.trisect.metrics.HeatMap;
+import dev.trisect.metrics.ImageComparison;
+import dev.trisect.pipeline.FrameRenderer;
+import dev.trisect.pipeline.RenderMode;
+import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.raster.Framebuffer;
+import dev.trisect.scene.Camera;
+import dev.trisect.scene.Scene;
+import java.nio.file.Path;
+import java.util.Locale;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/** {@code trisect compare}: one frame in two paths, and how far apart they are. */
+@Command(name = "compare", sortOptions = false, mixinStandardHelpOptions = true,
+        description = {"Render the same frame with --mode and with --against, and print how far the first is "
+                + "from the second as one JSON line: texel error (texels) and on-screen displacement (pixels) "
+                + "over pixels both cover with the same triangle, the share of pixels whose texel differs, "
+                + "colour RMSE and PSNR."})
+final class CompareCommand extends SceneCommand {
+    @Option(names = "--against", paramLabel = "MODE", converter = Converters.ModeConverter.class,
+            defaultValue = "perspective", description = "Reference path (default: ${DEFAULT-VALUE}).")
+    RenderMode against;
+
+    @Option(names = "--heatmap", paramLabel = "FILE.png",
+            description = "Also write the displacement heat map: black nothing drawn, grey not comparable, "
+                    + "then dark to bright up to --heatmap-max pixels.")
+    Path heatmap;
+
+    @Option(names = "--heatmap-max", paramLabel = "PX", converter = Converters.PositiveConverter.class,
+            defaultValue = "2", description = "Displacement drawn at the top of the heat map's scale, pixels "
+                    + "(default: ${DEFAULT-VALUE}).")
+    double heatmapMax;
+
+    @Option(names = "--out", paramLabel = "FILE.png|FILE.ppm", description = "Also write the --mode image.")
+    Path out;
+
+    @Override
+    void checkOutputs() {
+        if (heatmap != null) {
+            Outputs.checkPng("--heatmap", heatmap);
+        }
+        if (out != null) {
+            Outputs.checkImage("--out", out);
+        }
+    }
+
+    @Override
+    int run(Scene scene, Camera camera) {
+        RenderSettings settings = path.settings(frame);
+        Framebuffer test = Frames.allocate(frame.size);
+        Framebuffer reference = Frames.allocate(frame.size);
+        test.recordUv(true);
+        reference.recordUv(true);
+        try (FrameRenderer renderer = common.renderer()) {
+            var vp = camera.viewProjection(frame.size.viewport());
+            renderer.render(scene.mesh(), scene.textureArray(), vp, settings, test);
+            // The reference never carries the overlay: it is compared texel by texel.
+            renderer.render(scene.mesh(), scene.textureArray(), vp, settings.withMode(against).withBorders(false),
+                    reference);
+        }
+        int w = test.width();
+        int h = test.height();
+        float[] displacement = heatmap == null ? null : new float[w * h];
+        Comparison c = ImageComparison.compare(w, h, test.color(), test.uv(), reference.color(), reference.uv(),
+                displacement);
+        if (heatmap != null) {
+            int[] argb = new int[w * h];
+            HeatMap.render(displacement, test.uv(), reference.uv(), w, h, heatmapMax, argb);
+            ImageFiles.write(heatmap, w, h, argb);
+        }
+        if (out != null) {
+            ImageFiles.write(out, w, h, test.color());
+        }
+        common.out().println(String.format(Locale.ROOT, "{\"mode\":\"%s\",\"against\":\"%s\",", path.mode.id(),
+                against.id()) + c.toJson().substring(1));
+        common.out().flush();
+        return 0;
+    }
+}

@@ -1,0 +1,143 @@
+package dev.trisect.cli;
+
+import dev.trisect.math.Vec3;
+import dev.trisect.math.Viewport;
+import dev.trisect.pipeline.CullMode;
+import dev.trisect.pipeline.RenderMode;
+import dev.trisect.tessellate.SplitPolicy;
+import java.util.Locale;
+import picocli.CommandLine.ITypeConverter;
+import picocli.CommandLine.TypeConversionException;
+
+/** Parsers for option values, each failing with a message that says what a good value looks like. */
+final class Converters {
+    private Converters() {
+    }
+
+    /** A frame size {@code WxH}, each side 1..16384 pixels. */
+    record Size(int width, int height) {
+        Viewport viewport() {
+            return new Viewport(width, height);
+        }
+
+        @Override
+        public String toString() {
+            return width + "x" + height;
+        }
+    }
+
+    static final class SizeConverter implements ITypeConverter<Size> {
+        @Override
+        public Size convert(String value) {
+            String[] parts = value.trim().toLowerCase(Locale.ROOT).split("x", -1);
+            if (parts.length == 2) {
+                try {
+                    int w = Integer.parseInt(parts[0].trim());
+                    int h = Integer.parseInt(parts[1].trim());
+                    if (w >= 1 && h >= 1 && w <= Viewport.MAX_SIDE && h <= Viewport.MAX_SIDE) {
+                        return new Size(w, h);
+                    }
+                } catch (NumberFormatException e) {
+                    // fall through to the message
+                }
+            }
+            throw new TypeConversionException("'" + value + "' is not a frame size: use WxH with each side 1.."
+                    + Viewport.MAX_SIDE + " pixels, e.g. 1280x720");
+        }
+    }
+
+    static final class Vec3Converter implements ITypeConverter<Vec3> {
+        @Override
+        public Vec3 convert(String value) {
+            String[] parts = value.split(",", -1);
+            if (parts.length == 3) {
+                try {
+                    Vec3 v = new Vec3(Double.parseDouble(parts[0].trim()), Double.parseDouble(parts[1].trim()),
+                            Double.parseDouble(parts[2].trim()));
+                    if (v.isFinite()) {
+                        return v;
+                    }
+                } catch (NumberFormatException e) {
+                    // fall through to the message
+                }
+            }
+            throw new TypeConversionException("'" + value + "' is not a point: use three finite numbers x,y,z, e.g. 0,1.7,6");
+        }
+    }
+
+    /** A finite number &gt; 0. */
+    static final class PositiveConverter implements ITypeConverter<Double> {
+        @Override
+        public Double convert(String value) {
+            try {
+                double d = Double.parseDouble(value.trim());
+                if (d > 0 && Double.isFinite(d)) {
+                    return d;
+                }
+            } catch (NumberFormatException e) {
+                // fall through to the message
+            }
+            throw new TypeConversionException("'" + value + "' is not a positive number");
+        }
+    }
+
+    /** An opaque colour {@code RRGGBB} (an optional leading # is allowed). */
+    static final class ColourConverter implements ITypeConverter<Integer> {
+        @Override
+        public Integer convert(String value) {
+            String v = value.trim();
+            if (v.startsWith("#")) {
+                v = v.substring(1);
+            }
+            if (v.matches("[0-9a-fA-F]{6}")) {
+                return Integer.parseInt(v, 16);
+            }
+            throw new TypeConversionException("'" + value + "' is not a colour: use six hex digits RRGGBB, e.g. 202830");
+        }
+    }
+
+    /** Names of an enum's constants, matched case-insensitively against a lower-case spelling. */
+    abstract static class NamedConverter<E extends Enum<E>> implements ITypeConverter<E> {
+        private final E[] values;
+        private final String what;
+
+        NamedConverter(E[] values, String what) {
+            this.values = values;
+            this.what = what;
+        }
+
+        String name(E value) {
+            return value.name().toLowerCase(Locale.ROOT);
+        }
+
+        @Override
+        public E convert(String value) {
+            StringBuilder known = new StringBuilder();
+            for (E e : values) {
+                if (name(e).equalsIgnoreCase(value.trim())) {
+                    return e;
+                }
+                known.append(known.length() == 0 ? "" : e == values[values.length - 1] ? " or " : ", ").append(name(e));
+            }
+            throw new TypeConversionException("'" + value + "' is not a " + what + ": use " + known);
+        }
+    }
+
+    static final class ModeConverter extends NamedConverter<RenderMode> {
+        ModeConverter() {
+            super(RenderMode.values(), "mode");
+        }
+    }
+
+    static final class SplitConverter extends NamedConverter<SplitPolicy> {
+        SplitConverter() {
+            super(SplitPolicy.values(), "split policy");
+        }
+    }
+
+    static final class CullConverter extends NamedConverter<CullMode> {
+        CullConverter() {
+            super(CullMode.values(), "cull mode");
+        }
+    }
+}

@@ -1,0 +1,92 @@
+package dev.trisect.cli;
+
+import dev.trisect.base.InputException;
+import dev.trisect.io.ImageFiles;
+import dev.trisect.io.Pfm;
+import dev.trisect.metrics.Comparison;
+import dev.trisect.metrics.HeatMap;
+import dev.trisect.metrics.ImageComparison;
+import dev.trisect.texture.Texture;
+import dev.trisect.texture.TextureReader;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+
+/**
+ * {@code trisect diff}: compares two renders given as files, such as Trisect's and OpenGL's (the glref
+ * tool writes the same UV output).
+ */
+@Command(name = "diff", sortOptions = false, mixinStandardHelpOptions = true,
+        description = {"Compare two renders given as files (an image and its UV output each), for example "
+                + "Trisect's against OpenGL's from tools/glref, and print one JSON line: the metrics of "
+                + "compare plus how many pixels differ in colour."})
+final class DiffCommand implements Callable<Integer> {
+    @Mixin
+    CommonOptions common;
+
+    @Option(names = "--image", required = true, paramLabel = "FILE", description = "Image under test (PNG, PPM, ...).")
+    Path image;
+
+    @Option(names = "--uv", required = true, paramLabel = "FILE.pfm", description = "Its UV output.")
+    Path uv;
+
+    @Option(names = "--reference", required = true, paramLabel = "FILE", description = "Reference image.")
+    Path referenceImage;
+
+    @Option(names = "--reference-uv", required = true, paramLabel = "FILE.pfm", description = "Reference UV output.")
+    Path referenceUv;
+
+    @Option(names = "--heatmap", paramLabel = "FILE.png", description = "Also write the displacement heat map.")
+    Path heatmap;
+
+    @Option(names = "--heatmap-max", paramLabel = "PX", converter = Converters.PositiveConverter.class,
+            defaultValue = "2", description = "Displacement at the top of the heat map's scale, pixels "
+                    + "(default: ${DEFAULT-VALUE}).")
+    double heatmapMax;
+
+    @Override
+    public Integer call() {
+        if (heatmap != null) {
+            Outputs.checkPng("--heatmap", heatmap);
+        }
+        Texture a = TextureReader.read(image);
+        Texture b = TextureReader.read(referenceImage);
+        Pfm.Image ua = Pfm.read(uv);
+        Pfm.Image ub = Pfm.read(referenceUv);
+        int w = a.width();
+        int h = a.height();
+        same(image, w, h, referenceImage, b.width(), b.height());
+        same(image, w, h, uv, ua.width(), ua.height());
+        same(image, w, h, referenceUv, ub.width(), ub.height());
+        if (ua.channels() != 3 || ub.channels() != 3) {
+            throw new InputException((ua.channels() != 3 ? uv : referenceUv)
+                    + ": a UV output has 3 channels (a colour PFM, PF)");
+        }
+        float[] displacement = heatmap == null ? null : new float[w * h];
+        Comparison c = ImageComparison.compare(w, h, a.argb(), ua.data(), b.argb(), ub.data(), displacement);
+        int differ = 0;
+        for (int i = 0; i < w * h; i++) {
+            if (((a.argb()[i] ^ b.argb()[i]) & 0xFFFFFF) != 0) {
+                differ++;
+            }
+        }
+        if (heatmap != null) {
+            int[] argb = new int[w * h];
+            HeatMap.render(displacement, ua.data(), ub.data(), w, h, heatmapMax, argb);
+            ImageFiles.write(heatmap, w, h, argb);
+        }
+        common.out().println(String.format(Locale.ROOT, "{\"colour_differ_pixels\":%d,\"colour_differ_share\":%s,",
+                differ, Double.toString((double) differ / (w * h))) + c.toJson().substring(1));
+        common.out().flush();
+        return 0;
+    }
+
+    private static void same(Path a, int wa, int ha, Path b, int wb, int hb) {
+        if (wa != wb || ha != hb) {
+            throw new InputException(b + ": is " + wb + "x" + hb + " but " + a + " is " + wa + "x" + ha);
+        }
+    }
+}

@@ -1,0 +1,38 @@
+package dev.trisect.cli;
+
+import dev.trisect.base.InputException;
+import java.nio.file.Path;
+import java.util.Locale;
+
+/** Checks of output file names, made before any work so that a typo costs nothing. */
+final class Outputs {
+    private Outputs() {
+    }
+
+    /** An image output: .png or .ppm. */
+    static void checkImage(String option, Path file) {
+        String name = lower(file);
+        if (!(name.endsWith(".png") || name.endsWith(".ppm"))) {
+            throw InputException.usage(option + " " + file + ": unsupported output format (use .png or .ppm)");
+        }
+    }
+
+    /** A PNG output. */
+    static void checkPng(String option, Path file) {
+        if (!lower(file).endsWith(".png")) {
+            throw InputException.usage(option + " " + file + ": must be a .png file");
+        }
+    }
+
+    /** A UV output: .pfm. */
+    static void checkPfm(String option, Path file) {
+        if (!lower(file).endsWith(".pfm")) {
+            throw InputException.usage(option + " " + file + ": the UV output is a PFM file (use .pfm)");
+        }
+    }
+
+    private static String lower(Path file) {
+        Path name = file.getFileName();
+        return name == null ? "" : name.toString().toLowerCase(Locale.ROOT);
+    }
+}

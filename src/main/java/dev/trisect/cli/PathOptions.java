@@ -1,0 +1,58 @@
+package dev.trisect.cli;
+
+import dev.trisect.base.InputException;
+import dev.trisect.pipeline.RenderMode;
+import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.tessellate.SplitPolicy;
+import dev.trisect.tessellate.TessellationSettings;
+import picocli.CommandLine.Option;
+
+/** Which texturing path and how it splits. Shared by the commands. */
+final class PathOptions {
+    @Option(names = "--mode", paramLabel = "perspective|affine|tessellated", converter = Converters.ModeConverter.class,
+            defaultValue = "tessellated",
+            description = "Texturing path: per-pixel perspective, affine, or tessellated pieces filled affinely "
+                    + "(default: ${DEFAULT-VALUE}).")
+    RenderMode mode;
+
+    @Option(names = "--split", paramLabel = "edge|error", converter = Converters.SplitConverter.class,
+            defaultValue = "edge",
+            description = "Tessellated split policy: longest screen edge, or worst affine error (default: edge).")
+    SplitPolicy split;
+
+    @Option(names = "--max-edge", paramLabel = "PX", converter = Converters.PositiveConverter.class,
+            defaultValue = "32", description = "Edge policy: longest piece edge on screen, pixels (default: ${DEFAULT-VALUE}).")
+    double maxEdge;
+
+    @Option(names = "--max-error", paramLabel = "PX", converter = Converters.PositiveConverter.class,
+            defaultValue = "0.5",
+            description = "Error policy: largest affine displacement allowed, pixels (default: ${DEFAULT-VALUE}).")
+    double maxError;
+
+    @Option(names = "--max-depth", paramLabel = "N", defaultValue = "16",
+            description = "Times an edge may be halved, 0..30 (default: ${DEFAULT-VALUE}).")
+    int maxDepth;
+
+    @Option(names = "--max-pieces", paramLabel = "N", defaultValue = "65536",
+            description = "Most pieces one triangle may become, at least 1 (default: ${DEFAULT-VALUE}).")
+    int maxPieces;
+
+    @Option(names = "--borders", description = "Draw the yellow outline of every piece filled (default: off).")
+    boolean borders;
+
+    /** The split settings, checked. */
+    TessellationSettings tessellation() {
+        if (maxDepth < 0 || maxDepth > 30) {
+            throw InputException.usage("--max-depth must be between 0 and 30, got " + maxDepth);
+        }
+        if (maxPieces < 1) {
+            throw InputException.usage("--max-pieces must be at least 1, got " + maxPieces);
+        }
+        return new TessellationSettings(split, maxEdge, maxError, maxDepth, maxPieces);
+    }
+
+    /** Render settings for this path with the frame's culling and background. */
+    RenderSettings settings(FrameOptions frame) {
+        return new RenderSettings(mode, tessellation(), frame.cull, frame.background, borders);
+    }
+}

@@ -1,0 +1,62 @@
+package dev.trisect.cli;
+
+import dev.trisect.io.ImageFiles;
+import dev.trisect.io.Pfm;
+import dev.trisect.pipeline.FrameRenderer;
+import dev.trisect.pipeline.FrameStats;
+import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.raster.Framebuffer;
+import dev.trisect.scene.Camera;
+import dev.trisect.scene.Scene;
+import java.nio.file.Path;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/** {@code trisect render}: one frame to an image file. */
+@Command(name = "render", sortOptions = false, mixinStandardHelpOptions = true,
+        description = "Render one frame of a scene or OBJ file to an image.")
+final class RenderCommand extends SceneCommand {
+    @Option(names = "--out", paramLabel = "FILE.png|FILE.ppm",
+            description = "Image to write (required unless --list-scenes).")
+    Path out;
+
+    @Option(names = "--uv-out", paramLabel = "FILE.pfm",
+            description = "Also write the UV output: per pixel the texel coordinates u*W, v*H and triangle index + 1 "
+                    + "(PFM, see docs/conventions.md).")
+    Path uvOut;
+
+    @Option(names = "--stats", description = "Print the frame statistics as one JSON line on standard output.")
+    boolean stats;
+
+    @Override
+    void checkOutputs() {
+        if (out == null) {
+            throw dev.trisect.base.InputException.usage("--out FILE.png|FILE.ppm is required");
+        }
+        Outputs.checkImage("--out", out);
+        if (uvOut != null) {
+            Outputs.checkPfm("--uv-out", uvOut);
+        }
+    }
+
+    @Override
+    int run(Scene scene, Camera camera) {
+        RenderSettings settings = path.settings(frame);
+        Framebuffer fb = Frames.allocate(frame.size);
+        fb.recordUv(uvOut != null);
+        FrameStats s;
+        try (FrameRenderer renderer = common.renderer()) {
+            s = renderer.render(scene.mesh(), scene.textureArray(), camera.viewProjection(frame.size.viewport()),
+                    settings, fb);
+        }
+        ImageFiles.write(out, fb.width(), fb.height(), fb.color());
+        if (uvOut != null) {
+            Pfm.write(uvOut, fb.width(), fb.height(), fb.uv());
+        }
+        if (stats) {
+            common.out().println(s.toJson());
+            common.out().flush();
+        }
+        return 0;
+    }
+}

@@ -1,0 +1,93 @@
+package dev.trisect.io;
+
+import dev.trisect.mesh.Mesh;
+import dev.trisect.texture.Texture;
+import java.io.BufferedWriter;
+import java.io.IOException;
+import java.io.Writer;
+import java.io.OutputStreamWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.List;
+
+/**
+ * Writes a mesh as Wavefront OBJ with an MTL file and one binary PPM texture per material, so that
+ * other renderers (OpenGL through tools/glref, say) can draw exactly the same triangles.
+ * Triangles are written in order as {@code f v/vt}, so triangle indices are preserved.
+ */
+public final class ObjWriter {
+    private ObjWriter() {
+    }
+
+    /**
+     * @param obj      the OBJ file to write; the MTL and textures go beside it, named after it
+     * @param mesh     positions and UVs, written as floats exactly (shortest round-trip decimal)
+     * @param textures one per material
+     * @return the texture files written, by material
+     */
+    public static List<Path> write(Path obj, Mesh mesh, List<Texture> textures) {
+        Path dir = obj.toAbsolutePath().getParent();
+        String base = obj.getFileName().toString().replaceFirst("\\.[^.]*$", "");
+        Path mtl = dir.resolve(base + ".mtl");
+        Path[] maps = new Path[mesh.materialCount()];
+        for (int m = 0; m < maps.length; m++) {
+            maps[m] = dir.resolve(base + "-" + safe(mesh.materialNames().get(m)) + ".ppm");
+            Texture t = textures.get(m);
+            ImageFiles.write(maps[m], t.width(), t.height(), t.argb());
+        }
+        writeText(mtl, w -> {
+            for (int m = 0; m < maps.length; m++) {
+                w.write("newmtl " + mesh.materialNames().get(m) + "\nmap_Kd " + maps[m].getFileName() + "\n");
+            }
+        });
+        writeText(obj, w -> {
+            w.write("# written by Trisect\nmtllib " + mtl.getFileName() + "\n");
+            float[] p = mesh.positions();
+            for (int i = 0; i < p.length; i += 3) {
+                w.write("v " + p[i] + " " + p[i + 1] + " " + p[i + 2] + "\n");
+            }
+            float[] uv = mesh.uvs();
+            for (int i = 0; i < uv.length; i += 2) {
+                w.write("vt " + uv[i] + " " + uv[i + 1] + "\n");
+            }
+            int[] cp = mesh.cornerPositions();
+            int[] cu = mesh.cornerUvs();
+            int[] mat = mesh.triangleMaterials();
+            int current = -1;
+            StringBuilder line = new StringBuilder(64);
+            for (int t = 0; t < mesh.triangleCount(); t++) {
+                if (mat[t] != current) {
+                    current = mat[t];
+                    w.write("usemtl " + mesh.materialNames().get(current) + "\n");
+                }
+                line.setLength(0);
+                line.append('f');
+                for (int k = 0; k < 3; k++) {
+                    line.append(' ').append(cp[3 * t + k] + 1);
+                    if (cu[3 * t + k] >= 0) {
+                        line.append('/').append(cu[3 * t + k] + 1);
+                    }
+                }
+                w.write(line.append('\n').toString());
+            }
+        });
+        return List.of(maps);
+    }
+
+    private static String safe(String name) {
+        return name.replaceAll("[^A-Za-z0-9_-]", "_");
+    }
+
+    private interface Body {
+        void write(Writer w) throws IOException;
+    }
+
+    /** Writes a UTF-8 text file all or nothing. */
+    private static void writeText(Path file, Body body) {
+        OutputFiles.writeAtomically(file, out -> {
+            Writer w = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8));
+            body.write(w);
+            w.flush();
+        });
+    }
+}

@@ -1,0 +1,120 @@
+package dev.trisect.scene;
+
+import dev.trisect.math.Vec3;
+import dev.trisect.mesh.MeshBuilder;
+import dev.trisect.mesh.Primitives;
+import dev.trisect.texture.ProceduralTextures;
+import dev.trisect.texture.Texture;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Optional;
+import java.util.function.Supplier;
+
+/**
+ * The built-in scenes, all procedural (no asset files). World units are metres; y is up; the
+ * floor is the plane y = 0.
+ */
+public final class DemoScenes {
+    /**
+     * Floor half-size, metres. At 400 m a floor seen from eye height lies within a few pixels of the
+     * horizon, so it reaches the horizon while keeping the triangle count modest.
+     */
+    private static final double FLOOR_HALF = 400;
+    /** Cells per side: 10 m cells, large enough on screen near the camera for affine warping to show. */
+    private static final int FLOOR_CELLS = 80;
+    /** One repeat of the UV grid per cell, metres. */
+    private static final double FLOOR_REPEAT = 10;
+
+    private static final Map<String, Entry> SCENES = new LinkedHashMap<>();
+
+    private record Entry(String description, Supplier<Scene> build) {
+    }
+
+    static {
+        SCENES.put("floor", new Entry("a floor with a labelled UV grid reaching to the horizon",
+                DemoScenes::floor));
+        SCENES.put("boxes", new Entry("textured crates on a checkered floor", DemoScenes::boxes));
+        SCENES.put("demo", new Entry("the desktop demo's scene: floor, crates, a brick wall seen at a grazing "
+                + "angle and a globe", DemoScenes::demo));
+    }
+
+    private DemoScenes() {
+    }
+
+    /** Names of the built-in scenes, in listing order. */
+    public static List<String> names() {
+        return List.copyOf(SCENES.keySet());
+    }
+
+    /** The one-line description of a built-in scene. */
+    public static String describe(String name) {
+        Entry e = SCENES.get(name);
+        return e == null ? "" : e.description();
+    }
+
+    /** Builds the named scene, or empty if there is none by that name (case-insensitive). */
+    public static Optional<Scene> byName(String name) {
+        Entry e = SCENES.get(name.toLowerCase(Locale.ROOT));
+        return e == null ? Optional.empty() : Optional.of(e.build().get());
+    }
+
+    /** The floor alone, camera low and looking toward the horizon. */
+    public static Scene floor() {
+        MeshBuilder b = new MeshBuilder();
+        List<Texture> textures = new ArrayList<>();
+        addFloor(b, textures, ProceduralTextures.uvGrid(512));
+        Camera camera = new Camera(new Vec3(1.3, 1.7, 6.2), new Vec3(0.4, 0, -2), Vec3.UP,
+                Camera.DEFAULT_FOV, Camera.DEFAULT_NEAR, Camera.DEFAULT_FAR);
+        return new Scene("floor", describe("floor"), b.build(), textures, camera);
+    }
+
+    /** A few crates on a checkered floor. */
+    public static Scene boxes() {
+        MeshBuilder b = new MeshBuilder();
+        List<Texture> textures = new ArrayList<>();
+        addFloor(b, textures, ProceduralTextures.checker(256, 8, 0xFFD8D2C4, 0xFF5A6E8C));
+        addCrates(b, textures);
+        Camera camera = new Camera(new Vec3(3.5, 3.2, 7), new Vec3(-0.5, 0.8, -6), Vec3.UP,
+                Camera.DEFAULT_FOV, Camera.DEFAULT_NEAR, Camera.DEFAULT_FAR);
+        return new Scene("boxes", describe("boxes"), b.build(), textures, camera);
+    }
+
+    /** Floor, crates, a long brick wall along the view direction, and a globe. */
+    public static Scene demo() {
+        MeshBuilder b = new MeshBuilder();
+        List<Texture> textures = new ArrayList<>();
+        addFloor(b, textures, ProceduralTextures.uvGrid(512));
+        addCrates(b, textures);
+        b.material("bricks");
+        textures.add(ProceduralTextures.bricks(512, 256));
+        // A wall 3 m high running 80 m away from the camera: seen almost edge-on, it is where affine
+        // texturing bends the courses of bricks the most. Front face toward -x (the camera's side).
+        Primitives.grid(b, new Vec3(6, 0, -80), new Vec3(0, 0, 80), new Vec3(0, 3, 0), 4, 1, 0, 0, 20, 1);
+        b.material("globe");
+        textures.add(ProceduralTextures.globe(512, 256));
+        Primitives.sphere(b, new Vec3(-3.5, 1.6, -9), 1.6, 32, 16);
+        Camera camera = new Camera(new Vec3(0.5, 1.8, 6), new Vec3(0, 1.0, -10), Vec3.UP,
+                Camera.DEFAULT_FOV, Camera.DEFAULT_NEAR, Camera.DEFAULT_FAR);
+        return new Scene("demo", describe("demo"), b.build(), textures, camera);
+    }
+
+    private static void addFloor(MeshBuilder b, List<Texture> textures, Texture texture) {
+        b.material("floor");
+        textures.add(texture);
+        Primitives.floor(b, -FLOOR_HALF, FLOOR_HALF, -FLOOR_HALF, FLOOR_HALF, 0, FLOOR_CELLS, FLOOR_CELLS,
+                FLOOR_REPEAT);
+    }
+
+    private static void addCrates(MeshBuilder b, List<Texture> textures) {
+        b.material("crate");
+        textures.add(ProceduralTextures.crate(256));
+        Primitives.box(b, new Vec3(0, 1, -6), new Vec3(2, 2, 2));
+        Primitives.box(b, new Vec3(2.6, 0.6, -4), new Vec3(1.2, 1.2, 1.2));
+        Primitives.box(b, new Vec3(-2.2, 0.75, -3.5), new Vec3(1.5, 1.5, 1.5));
+        Primitives.box(b, new Vec3(1.2, 2.5, -6.3), new Vec3(1, 1, 1));
+        Primitives.box(b, new Vec3(-1, 1.5, -16), new Vec3(3, 3, 3));
+    }
+}

@@ -1,0 +1,31 @@
+package dev.trisect.scene;
+
+import dev.trisect.mesh.Mesh;
+import dev.trisect.texture.Texture;
+import java.util.List;
+
+/**
+ * Something to draw: a mesh in world space, the texture of each of its materials, and the camera it
+ * is best seen from.
+ *
+ * @param name        short identifier (a built-in scene's name, or the OBJ file's name)
+ * @param description one line for listings
+ * @param mesh        the triangles, world space
+ * @param textures    one texture per material, in the mesh's material order
+ * @param camera      the scene's own camera, used when the user gives none
+ */
+public record Scene(String name, String description, Mesh mesh, List<Texture> textures, Camera camera) {
+
+    public Scene {
+        textures = List.copyOf(textures);
+        if (textures.size() != mesh.materialCount()) {
+            throw new IllegalArgumentException(name + ": " + mesh.materialCount() + " materials but "
+                    + textures.size() + " textures");
+        }
+    }
+
+    /** The textures as the array the renderer takes, indexed by material. */
+    public Texture[] textureArray() {
+        return textures.toArray(new Texture[0]);
+    }
+}

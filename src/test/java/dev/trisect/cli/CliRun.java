@@ -1,0 +1,24 @@
+package dev.trisect.cli;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+
+/** Test support: runs the command line in-process and keeps what it printed. */
+record CliRun(int status, String out, String err) {
+
+    static CliRun of(String... args) {
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        int status = Cli.run(new PrintWriter(out, true), new PrintWriter(err, true), args);
+        return new CliRun(status, out.toString(), err.toString());
+    }
+
+    /** Standard error as one line, or fails if it is more (or a stack trace). */
+    String errLine() {
+        String e = err.strip();
+        if (e.contains("\n") || e.contains("\tat ") || e.contains("Exception")) {
+            throw new AssertionError("expected one clean line on stderr, got:\n" + err);
+        }
+        return e;
+    }
+}

@@ -1,0 +1,172 @@
+package dev.trisect.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trisect.io.Pfm;
+import dev.trisect.texture.Texture;
+import dev.trisect.texture.TextureReader;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The commands doing their jobs: files written, JSON printed, numbers that mean what they say. */
+class CommandsTest {
+    @TempDir
+    Path dir;
+
+    private static double number(String json, String key) {
+        Matcher m = Pattern.compile("\"" + key + "\":(-?[0-9.eE+-]+|null)").matcher(json);
+        assertTrue(m.find(), key + " in " + json);
+        return m.group(1).equals("null") ? Double.NaN : Double.parseDouble(m.group(1));
+    }
+
+    @Test
+    void renderWritesImageUvOutputAndStatistics() throws IOException {
+        Path png = dir.resolve("f.png");
+        Path uv = dir.resolve("f.pfm");
+        CliRun r = CliRun.of("render", "--scene", "floor", "--size", "160x90", "--out", png.toString(),
+                "--uv-out", uv.toString(), "--stats");
+        assertEquals(0, r.status(), r.err());
+        Texture image = TextureReader.read(png);
+        assertEquals(160, image.width());
+        assertEquals(90, image.height());
+        Pfm.Image pfm = Pfm.read(uv);
+        assertEquals(160, pfm.width());
+        assertEquals(3, pfm.channels());
+        // Bottom row sees the floor (triangle id > 0), top row the sky (id 0).
+        assertTrue(pfm.data()[3 * (89 * 160 + 80) + 2] > 0);
+        assertEquals(0f, pfm.data()[3 * 80 + 2]);
+        String json = r.out().strip();
+        assertTrue(json.startsWith("{") && json.endsWith("}") && !json.contains("\n"), json);
+        assertEquals(80 * 80 * 2, number(json, "triangles_in"));
+        assertTrue(number(json, "pieces") > number(json, "triangles_in") - number(json, "culled"), json);
+        assertTrue(number(json, "pixels_written") > 160 * 90 / 2, json);
+    }
+
+    @Test
+    void ppmOutputAndBackground() throws IOException {
+        Path ppm = dir.resolve("f.ppm");
+        CliRun r = CliRun.of("render", "--scene", "floor", "--size", "40x30", "--background", "102030",
+                "--out", ppm.toString());
+        assertEquals(0, r.status(), r.err());
+        Texture t = TextureReader.read(ppm);
+        assertEquals(0xFF102030, t.argb()[0], "top-left is sky, drawn in the background colour");
+    }
+
+    @Test
+    void bordersAddYellow() throws IOException {
+        Path plain = dir.resolve("p.png");
+        Path borders = dir.resolve("b.png");
+        assertEquals(0, CliRun.of("render", "--scene", "boxes", "--size", "200x120", "--out", plain.toString()).status());
+        assertEquals(0, CliRun.of("render", "--scene", "boxes", "--size", "200x120", "--borders",
+                "--out", borders.toString()).status());
+        assertTrue(count(TextureReader.read(borders), 0xFFFFFF00) > 500);
+        assertEquals(0, count(TextureReader.read(plain), 0xFFFFFF00));
+    }
+
+    private static int count(Texture t, int argb) {
+        int n = 0;
+        for (int p : t.argb()) {
+            n += p == argb ? 1 : 0;
+        }
+        return n;
+    }
+
+    @Test
+    void errorPolicyKeepsEveryPixelWithinHalfAPixelOfThePerspectivePath() {
+        for (String scene : new String[] {"floor", "demo"}) {
+            CliRun r = CliRun.of("compare", "--scene", scene, "--size", "480x270", "--split", "error",
+                    "--max-error", "0.5", "--heatmap", dir.resolve(scene + ".png").toString());
+            assertEquals(0, r.status(), r.err());
+            String json = r.out().strip();
+            assertTrue(json.startsWith("{\"mode\":\"tessellated\",\"against\":\"perspective\","), json);
+            double max = number(json, "max_displacement");
+            assertTrue(max <= 0.5 && max > 0.2, scene + ": max displacement " + max);
+            assertTrue(number(json, "compared_pixels") > 480 * 270 / 2);
+            assertTrue(Files.exists(dir.resolve(scene + ".png")));
+        }
+    }
+
+    @Test
+    void affineIsFarFromPerspectiveAndPerspectiveFromItselfNot() {
+        CliRun affine = CliRun.of("compare", "--scene", "floor", "--size", "320x180", "--mode", "affine");
+        assertTrue(number(affine.out(), "max_displacement") > 10, affine.out());
+        CliRun same = CliRun.of("compare", "--scene", "floor", "--size", "320x180", "--mode", "perspective");
+        assertEquals(0.0, number(same.out(), "max_texel_error"), same.out());
+        assertTrue(Double.isNaN(number(same.out(), "psnr_db")), "identical images have infinite PSNR, printed null");
+    }
+
+    @Test
+    void diffOfTwoRendersAgreesWithCompare() {
+        String[] common = {"--scene", "boxes", "--size", "200x120"};
+        CliRun a = CliRun.of(cat(new String[] {"render", "--out", dir.resolve("a.png").toString(), "--uv-out",
+                dir.resolve("a.pfm").toString(), "--mode", "affine"}, common));
+        CliRun b = CliRun.of(cat(new String[] {"render", "--out", dir.resolve("b.png").toString(), "--uv-out",
+                dir.resolve("b.pfm").toString(), "--mode", "perspective"}, common));
+        assertEquals(0, a.status() + b.status());
+        CliRun diff = CliRun.of("diff", "--image", dir.resolve("a.png").toString(), "--uv",
+                dir.resolve("a.pfm").toString(), "--reference", dir.resolve("b.png").toString(), "--reference-uv",
+                dir.resolve("b.pfm").toString());
+        CliRun compare = CliRun.of(cat(new String[] {"compare", "--mode", "affine"}, common));
+        assertEquals(0, diff.status(), diff.err());
+        for (String key : new String[] {"max_displacement", "p99_texel_error", "texel_differ_share", "colour_rmse"}) {
+            assertEquals(number(compare.out(), key), number(diff.out(), key), 1e-9, key);
+        }
+        assertTrue(number(diff.out(), "colour_differ_pixels") > 0);
+    }
+
+    @Test
+    void exportWritesAnObjThatRendersTheSameFrame() throws IOException {
+        Path obj = dir.resolve("floor.obj");
+        CliRun e = CliRun.of("export", "--scene", "floor", "--to", obj.toString());
+        assertEquals(0, e.status(), e.err());
+        assertTrue(e.out().contains("--eye 1.3,1.7,6.2"), e.out());
+        String camera = e.out().lines().filter(l -> l.startsWith("camera:")).findFirst().orElseThrow();
+        String[] camArgs = camera.substring("camera: ".length()).split(" ");
+        CliRun builtIn = CliRun.of("render", "--scene", "floor", "--size", "120x80", "--mode", "perspective",
+                "--out", dir.resolve("a.png").toString());
+        CliRun fromObj = CliRun.of(cat(new String[] {"render", "--obj", obj.toString(), "--size", "120x80", "--mode",
+                "perspective", "--out", dir.resolve("b.png").toString()}, camArgs));
+        assertEquals(0, builtIn.status() + fromObj.status(), fromObj.err());
+        assertEquals(java.util.Arrays.toString(TextureReader.read(dir.resolve("a.png")).argb()),
+                java.util.Arrays.toString(TextureReader.read(dir.resolve("b.png")).argb()));
+    }
+
+    @Test
+    void objWithoutTextureGetsTheUvGridAndANote() throws IOException {
+        Path obj = dir.resolve("tri.obj");
+        Files.writeString(obj, "v -1 -1 0\nv 1 -1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0.5 1\nf 1/1 2/2 3/3\n");
+        CliRun r = CliRun.of("render", "--obj", obj.toString(), "--size", "64x64", "--out",
+                dir.resolve("t.png").toString());
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.err().contains("note: tri.obj: no texture"), r.err());
+    }
+
+    @Test
+    void listScenesAndHelpMentionEveryOptionWithItsDefault() {
+        CliRun list = CliRun.of("render", "--list-scenes");
+        assertTrue(list.out().contains("floor") && list.out().contains("demo"), list.out());
+        CliRun help = CliRun.of("render", "--help");
+        String flat = help.out().replaceAll("\\s+", " ");
+        for (String option : new String[] {"--size", "--eye", "--target", "--up", "--fov", "--near", "--far", "--cull",
+                "--background", "--mode", "--split", "--max-edge", "--max-error", "--max-depth", "--borders", "--out",
+                "--uv-out", "--stats"}) {
+            assertTrue(help.out().contains(option), option);
+        }
+        for (String value : new String[] {"1280x720", "0,1,0", "(default: 60)", "0.1", "1000", "(default: back)",
+                "000000", "(default: tessellated)", "(default: edge)", "(default: 32", "(default: 0.5)", "(default: 16)"}) {
+            assertTrue(flat.contains(value), "help shows default " + value + ":\n" + help.out());
+        }
+    }
+
+    private static String[] cat(String[] a, String[] b) {
+        String[] r = java.util.Arrays.copyOf(a, a.length + b.length);
+        System.arraycopy(b, 0, r, a.length, b.length);
+        return r;
+    }
+}
