@@ -28,20 +28,13 @@ public final class Rasterizer {
     private int rowEnd;
     private int colStart;
     private int colEnd;
-    // Edge k runs from corner k to corner k+1. Inside when K - m * x > 0 on the current row,
-    // m = ONE * dY; K advances by ONE * dX per row.
-    private long k0;
-    private long k1;
-    private long k2;
-    private long m0;
-    private long m1;
-    private long m2;
-    private long step0;
-    private long step1;
-    private long step2;
-    private double inv0;
-    private double inv1;
-    private double inv2;
+    /** The triangle's own first column, before clipping to the rectangle: the anchor of fixed-point stepping. */
+    private int firstColumn;
+    /**
+     * The covered pixels of each row of the current triangle: row {@code rowStart + j} covers
+     * [spans[2j], spans[2j + 1]); an empty row has start &gt;= end.
+     */
+    private int[] spans = new int[64];
     // Attribute planes over pixel centres: value = base + dx * x + dy * y for pixel (x, y).
     private double qBase;
     private double qDx;
@@ -52,6 +45,8 @@ public final class Rasterizer {
     private double tBase;
     private double tDx;
     private double tDy;
+    /** Whether the texel coordinates are small enough for 32.32 fixed point (|s|, |t| &lt; 2^30). */
+    private boolean fixedPointSafe;
 
     /**
      * Fills triangles {@code order[from..to)} of {@code triangles}, in that order, into the pixels
@@ -73,7 +68,9 @@ public final class Rasterizer {
                 continue;
             }
             Texture texture = textures[materials[tri]];
-            written += spans(frame, texture, ids[tri] + 1, perspective);
+            written += perspective || !fixedPointSafe
+                    ? spans(frame, texture, ids[tri] + 1, perspective)
+                    : spansAffineFixed(frame, texture, ids[tri] + 1);
         }
         return written;
     }
@@ -93,14 +90,14 @@ public final class Rasterizer {
             if (!setup(triangles, order[n], false, x0, y0, x1, y1)) {
                 continue;
             }
-            for (int y = rowStart; y < rowEnd; y++, nextRow()) {
-                if (span()) {
-                    int row = y * width;
-                    for (int x = spanStart; x < spanEnd; x++) {
-                        counts[row + x]++;
-                    }
-                    covered += spanEnd - spanStart;
+            int[] sp = spans;
+            for (int y = rowStart, j = 0; y < rowEnd; y++, j += 2) {
+                int row = y * width;
+                int end = sp[j + 1];
+                for (int x = sp[j]; x < end; x++) {
+                    counts[row + x]++;
                 }
+                covered += end - sp[j];
             }
         }
         return covered;
@@ -140,42 +137,17 @@ public final class Rasterizer {
         int maxX = (int) Math.max(ax, Math.max(bx, cx));
         int minY = (int) Math.min(ay, Math.min(by, cy));
         int maxY = (int) Math.max(ay, Math.max(by, cy));
-        colStart = Math.max(x0, ScreenTriangles.ceilDiv(minX - HALF, ONE));
+        firstColumn = ScreenTriangles.ceilDiv(minX - HALF, ONE);
+        colStart = Math.max(x0, firstColumn);
         colEnd = Math.min(x1, Math.floorDiv(maxX - HALF, ONE) + 1);
         rowStart = Math.max(y0, ScreenTriangles.ceilDiv(minY - HALF, ONE));
         rowEnd = Math.min(y1, Math.floorDiv(maxY - HALF, ONE) + 1);
         if (colStart >= colEnd || rowStart >= rowEnd) {
             return false;
         }
-        long py = (long) rowStart * ONE + HALF;
-        k0 = edgeK(ax, ay, bx, by, py);
-        k1 = edgeK(bx, by, cx, cy, py);
-        k2 = edgeK(cx, cy, ax, ay, py);
-        m0 = ONE * (by - ay);
-        m1 = ONE * (cy - by);
-        m2 = ONE * (ay - cy);
-        step0 = ONE * (bx - ax);
-        step1 = ONE * (cx - bx);
-        step2 = ONE * (ax - cx);
-        inv0 = m0 == 0 ? 0 : 1.0 / m0;
-        inv1 = m1 == 0 ? 0 : 1.0 / m1;
-        inv2 = m2 == 0 ? 0 : 1.0 / m2;
+        computeSpans(ax, ay, bx, by, cx, cy);
         planes(triangles, tri, i1, i2, perspective);
         return true;
-    }
-
-    /**
-     * The constant part K of edge a-&gt;b's function on the row with centre {@code py}, so that a pixel
-     * x is inside the edge when {@code K - ONE * (by - ay) * x > 0}. Includes the top-left bias: a
-     * centre exactly on a top edge (horizontal, interior below) or a left edge (going up) counts as
-     * inside, which for integers means adding 1.
-     */
-    private static long edgeK(long ax, long ay, long bx, long by, long py) {
-        long dx = bx - ax;
-        long dy = by - ay;
-        long bias = (dy < 0 || (dy == 0 && dx > 0)) ? 1 : 0;
-        // E(P) = dx * (Py - ay) - dy * (Px - ax) with Px = ONE * x + HALF.
-        return dx * (py - ay) - dy * (HALF - ax) + bias;
     }
 
     /** Attribute planes from the unsnapped corners, so snapping moves coverage but never the mapping. */
@@ -216,6 +188,9 @@ public final class Rasterizer {
         double t0 = at[c0 + 2];
         double t1 = at[c1 + 2];
         double t2 = at[c2 + 2];
+        double limit = 1 << 30;
+        fixedPointSafe = Math.abs(s0) < limit && Math.abs(s1) < limit && Math.abs(s2) < limit
+                && Math.abs(t0) < limit && Math.abs(t1) < limit && Math.abs(t2) < limit;
         if (perspective) {
             // Interpolate s/w and t/w; the pixel divides by the interpolated 1/w.
             s0 *= q0;
@@ -246,74 +221,152 @@ public final class Rasterizer {
         tBase = t0 + tDx * ox + tDy * oy;
     }
 
-    private int spanStart;
-    private int spanEnd;
+    /**
+     * ceil(a / m) for m &gt; 0, exactly, without an integer division: a floating-point estimate from
+     * {@code inv = 1.0 / m} is off by at most one here (|a| &lt; 2^52), and the integer checks fix it.
+     */
+    private static long ceilDiv(long a, long m, double inv) {
+        long q = (long) Math.ceil(a * inv);
+        if (q * m < a) {
+            q++;
+        } else if ((q - 1) * m >= a) {
+            q--;
+        }
+        return q;
+    }
+
+    /** Longs per edge in {@link #edgeState}: K, its step per row, m, q, r, dq, dr, carry. */
+    private static final int EDGE_STATE = 8;
+    private final long[] edgeState = new long[3 * EDGE_STATE];
 
     /**
-     * Narrows [colStart, colEnd) to the covered span of the current row into {@code spanStart} and
-     * {@code spanEnd}; returns false when the row is empty.
+     * Sets up edge a -&gt; a + (dx, dy) for the row whose centre is {@code py} (see {@link #computeSpans}):
+     * K with the top-left bias, its step ONE * dx per row, and for a non-horizontal edge m = ONE * |dy|,
+     * the bound q with remainder r, their steps dq, dr, and the carry a remainder overflow adds to q.
      */
-    private boolean span() {
-        long start = colStart;
-        long end = colEnd;
-        // Edge 0
-        if (m0 > 0) {
-            end = Math.min(end, endOf(k0, m0, inv0));
-        } else if (m0 < 0) {
-            start = Math.max(start, startOf(k0, m0, inv0));
-        } else if (k0 <= 0) {
-            return false;
+    private static void edge(long[] st, int o, long ax, long ay, long dx, long dy, long py) {
+        long k = dx * (py - ay) - dy * (HALF - ax) + ((dy < 0 || (dy == 0 && dx > 0)) ? 1 : 0);
+        long step = ONE * dx;
+        st[o] = k;
+        st[o + 1] = step;
+        if (dy == 0) {
+            // Horizontal: no bound to step; m = 0 marks it, and the row is in or out by the sign of K.
+            st[o + 2] = 0;
+            st[o + 3] = 0;
+            st[o + 4] = 0;
+            st[o + 5] = 0;
+            st[o + 6] = 0;
+            st[o + 7] = 0;
+            return;
         }
-        if (m1 > 0) {
-            end = Math.min(end, endOf(k1, m1, inv1));
-        } else if (m1 < 0) {
-            start = Math.max(start, startOf(k1, m1, inv1));
-        } else if (k1 <= 0) {
-            return false;
+        long m = ONE * Math.abs(dy);
+        double inv = 1.0 / m;
+        long q;
+        long dq;
+        if (dy > 0) {
+            // Right edge: q = ceil(K/m), K = q m - r with 0 <= r < m; K grows by step per row.
+            q = ceilDiv(k, m, inv);
+            dq = ceilDiv(step, m, inv);
+            st[o + 4] = q * m - k;
+            st[o + 6] = dq * m - step;
+            st[o + 7] = -1;
+        } else {
+            // Left edge: q = floor(N/m) = -ceil(K/m) for N = -K, N = q m + r; N shrinks by step per row.
+            q = -ceilDiv(k, m, inv);
+            dq = -ceilDiv(step, m, inv);
+            st[o + 4] = -k - q * m;
+            st[o + 6] = -step - dq * m;
+            st[o + 7] = 1;
         }
-        if (m2 > 0) {
-            end = Math.min(end, endOf(k2, m2, inv2));
-        } else if (m2 < 0) {
-            start = Math.max(start, startOf(k2, m2, inv2));
-        } else if (k2 <= 0) {
-            return false;
-        }
-        if (start >= end) {
-            return false;
-        }
-        spanStart = (int) start;
-        spanEnd = (int) end;
-        return true;
+        st[o + 2] = m;
+        st[o + 3] = q;
+        st[o + 5] = dq;
     }
 
-    /** For m &gt; 0 (inside where x &lt; K/m): the first x that is outside, ceil(K / m). */
-    private static long endOf(long k, long m, double inv) {
-        long x = (long) Math.ceil(k * inv);
-        while (k - m * (x - 1) <= 0) {
-            x--;
+    /**
+     * Fills {@link #spans} for rows [rowStart, rowEnd), clipped to [colStart, colEnd).
+     *
+     * <p>Edge k runs from corner k to corner k+1. With E(x) = K - m x on a row (m = ONE * dY, and
+     * the top-left bias folded into K: a centre exactly on a top edge, horizontal with the interior
+     * below, or on a left edge, going up, counts as inside, which for integers is adding 1), a pixel is
+     * inside when E(x) &gt; 0:
+     * <ul>
+     * <li>m &gt; 0 (a right edge): x &lt; K/m, so the first pixel outside is q = ceil(K / m);</li>
+     * <li>m &lt; 0 (a left edge): x &gt; -K/|m|, so the last pixel outside is q = floor(-K / |m|);</li>
+     * <li>m = 0 (horizontal): the whole row is in or out by the sign of K.</li>
+     * </ul>
+     * K grows by ONE * dX per row. Rather than divide on every row, each edge's q and its remainder
+     * are stepped with additions only (an exact DDA), in local variables; a right edge's q drops by one
+     * when its remainder overflows, a left edge's rises by one.
+     */
+    private void computeSpans(long ax, long ay, long bx, long by, long cx, long cy) {
+        int rows = rowEnd - rowStart;
+        if (spans.length < 2 * rows) {
+            spans = new int[Math.max(2 * rows, 2 * spans.length)];
         }
-        while (k - m * x > 0) {
-            x++;
+        long py = (long) rowStart * ONE + HALF;
+        long dx0 = bx - ax;
+        long dy0 = by - ay;
+        long dx1 = cx - bx;
+        long dy1 = cy - by;
+        long dx2 = ax - cx;
+        long dy2 = ay - cy;
+        long[] st = edgeState;
+        edge(st, 0, ax, ay, dx0, dy0, py);
+        edge(st, EDGE_STATE, bx, by, dx1, dy1, py);
+        edge(st, 2 * EDGE_STATE, cx, cy, dx2, dy2, py);
+        long k0 = st[0], s0 = st[1], m0 = st[2], q0 = st[3], r0 = st[4], dq0 = st[5], dr0 = st[6], carry0 = st[7];
+        long k1 = st[8], s1 = st[9], m1 = st[10], q1 = st[11], r1 = st[12], dq1 = st[13], dr1 = st[14], carry1 = st[15];
+        long k2 = st[16], s2 = st[17], m2 = st[18], q2 = st[19], r2 = st[20], dq2 = st[21], dr2 = st[22], carry2 = st[23];
+        int[] out = spans;
+        for (int j = 0; j < rows; j++) {
+            long start = colStart;
+            long end = colEnd;
+            if (dy0 > 0) {
+                end = Math.min(end, q0);
+            } else if (dy0 < 0) {
+                start = Math.max(start, q0 + 1);
+            } else if (k0 <= 0) {
+                end = start;
+            }
+            if (dy1 > 0) {
+                end = Math.min(end, q1);
+            } else if (dy1 < 0) {
+                start = Math.max(start, q1 + 1);
+            } else if (k1 <= 0) {
+                end = start;
+            }
+            if (dy2 > 0) {
+                end = Math.min(end, q2);
+            } else if (dy2 < 0) {
+                start = Math.max(start, q2 + 1);
+            } else if (k2 <= 0) {
+                end = start;
+            }
+            out[2 * j] = (int) start;
+            out[2 * j + 1] = (int) Math.max(start, end);
+            q0 += dq0;
+            r0 += dr0;
+            if (r0 >= m0 && m0 != 0) {
+                q0 += carry0;
+                r0 -= m0;
+            }
+            q1 += dq1;
+            r1 += dr1;
+            if (r1 >= m1 && m1 != 0) {
+                q1 += carry1;
+                r1 -= m1;
+            }
+            q2 += dq2;
+            r2 += dr2;
+            if (r2 >= m2 && m2 != 0) {
+                q2 += carry2;
+                r2 -= m2;
+            }
+            k0 += s0;
+            k1 += s1;
+            k2 += s2;
         }
-        return x;
-    }
-
-    /** For m &lt; 0 (inside where x &gt; K/m): the first x that is inside, floor(K / m) + 1. */
-    private static long startOf(long k, long m, double inv) {
-        long x = (long) Math.floor(k * inv) + 1;
-        while (k - m * (x - 1) > 0) {
-            x--;
-        }
-        while (k - m * x <= 0) {
-            x++;
-        }
-        return x;
-    }
-
-    private void nextRow() {
-        k0 += step0;
-        k1 += step1;
-        k2 += step2;
     }
 
     private long spans(Framebuffer frame, Texture texture, int uvId, boolean perspective) {
@@ -330,8 +383,11 @@ public final class Rasterizer {
         int hMask = th - 1;
         int topRow = th - 1;
         long written = 0;
-        for (int y = rowStart; y < rowEnd; y++, nextRow()) {
-            if (!span()) {
+        int[] sp = spans;
+        for (int y = rowStart, j = 0; y < rowEnd; y++, j += 2) {
+            int spanStart = sp[j];
+            int spanEnd = sp[j + 1];
+            if (spanStart >= spanEnd) {
                 continue;
             }
             double qRow = qBase + qDy * y;
@@ -357,6 +413,67 @@ public final class Rasterizer {
                     if (uv != null) {
                         uv[3 * i] = (float) s;
                         uv[3 * i + 1] = (float) t;
+                        uv[3 * i + 2] = uvId;
+                    }
+                    written++;
+                }
+            }
+        }
+        return written;
+    }
+
+    /** 2^32: texel coordinates in 32.32 fixed point. */
+    private static final double FIXED_SCALE = 4294967296.0;
+
+    /**
+     * The affine fill with texel coordinates stepped in 32.32 fixed point: per pixel an integer add,
+     * a shift and a mask instead of two multiply-adds, two floors and two conversions. Each row's
+     * values are anchored at the triangle's own first column and reach the span by an exact integer
+     * multiply, so a pixel's value depends on the triangle, the row and the column only — never on the
+     * rectangle being filled — and stepping error stays below 2^-32 texel per pixel of the row.
+     * Needs |s|, |t| &lt; 2^30 over the triangle.
+     */
+    private long spansAffineFixed(Framebuffer frame, Texture texture, int uvId) {
+        int width = frame.width();
+        int[] color = frame.color();
+        float[] depth = frame.depth();
+        float[] uv = frame.uv();
+        int[] texels = texture.argb();
+        int tw = texture.width();
+        int th = texture.height();
+        boolean pot = (tw & (tw - 1)) == 0 && (th & (th - 1)) == 0;
+        int wMask = tw - 1;
+        int hMask = th - 1;
+        int topRow = th - 1;
+        long ds = (long) Math.floor(sDx * FIXED_SCALE);
+        long dt = (long) Math.floor(tDx * FIXED_SCALE);
+        long written = 0;
+        int[] sp = spans;
+        for (int y = rowStart, j = 0; y < rowEnd; y++, j += 2) {
+            int spanStart = sp[j];
+            int spanEnd = sp[j + 1];
+            if (spanStart >= spanEnd) {
+                continue;
+            }
+            double qRow = qBase + qDy * y;
+            long skip = spanStart - firstColumn;
+            long s = (long) Math.floor((sBase + sDy * y + sDx * firstColumn) * FIXED_SCALE) + ds * skip;
+            long t = (long) Math.floor((tBase + tDy * y + tDx * firstColumn) * FIXED_SCALE) + dt * skip;
+            int rowOffset = y * width;
+            for (int x = spanStart; x < spanEnd; x++, s += ds, t += dt) {
+                float qf = (float) (qRow + qDx * x);
+                int i = rowOffset + x;
+                if (qf > depth[i]) {
+                    depth[i] = qf;
+                    // An arithmetic shift floors, negative coordinates included.
+                    int si = (int) (s >> 32);
+                    int ti = (int) (t >> 32);
+                    int column = pot ? si & wMask : Math.floorMod(si, tw);
+                    int rowFromBottom = pot ? ti & hMask : Math.floorMod(ti, th);
+                    color[i] = texels[(topRow - rowFromBottom) * tw + column] | 0xFF000000;
+                    if (uv != null) {
+                        uv[3 * i] = (float) (s / FIXED_SCALE);
+                        uv[3 * i + 1] = (float) (t / FIXED_SCALE);
                         uv[3 * i + 2] = uvId;
                     }
                     written++;
