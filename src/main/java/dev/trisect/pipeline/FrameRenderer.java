@@ -192,6 +192,7 @@ public final class FrameRenderer implements AutoCloseable {
         long invalid = 0;
         long clipped = 0;
         long pieces = 0;
+        long offScreen = 0;
         long splits = 0;
         int deepest = 0;
         long caps = 0;
@@ -205,6 +206,7 @@ public final class FrameRenderer implements AutoCloseable {
             invalid += k.invalid;
             clipped += k.clipped;
             pieces += k.pieces;
+            offScreen += k.offScreen;
             splits += k.splits;
             deepest = Math.max(deepest, k.deepest);
             caps += k.caps;
@@ -220,7 +222,8 @@ public final class FrameRenderer implements AutoCloseable {
         long geometryWall = geometryDone - transformed;
         long cpu = clipCpu + tessCpu;
         long clipWall = cpu == 0 ? 0 : Math.round(geometryWall * (double) clipCpu / cpu);
-        return new FrameStats(triangles, back, frustum, degenerate, invalid, clipped, pieces, splits, deepest,
+        return new FrameStats(triangles, back, frustum, degenerate, invalid, clipped, pieces, offScreen, splits,
+                deepest,
                 caps, pixels, threads, transformed - start, clipWall, geometryWall - clipWall,
                 rasterDone - geometryDone, end - rasterDone, end - start);
     }
@@ -343,6 +346,7 @@ public final class FrameRenderer implements AutoCloseable {
         long invalid;
         long clipped;
         long pieces;
+        long offScreen;
         long splits;
         int deepest;
         long caps;
@@ -380,6 +384,7 @@ public final class FrameRenderer implements AutoCloseable {
                 tessellateNanos += t2 - t1;
             }
             pieces = tess.pieces();
+            offScreen = tess.culledOffScreen();
             splits = tess.splits();
             deepest = tess.deepestLevel();
             caps = tess.capsReached();

@@ -1,0 +1,78 @@
+package dev.trisect.pipeline;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trisect.math.Vec3;
+import dev.trisect.math.Viewport;
+import dev.trisect.mesh.Mesh;
+import dev.trisect.mesh.MeshBuilder;
+import dev.trisect.mesh.Primitives;
+import dev.trisect.raster.Framebuffer;
+import dev.trisect.scene.Camera;
+import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.texture.Texture;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.Test;
+
+class FrameStatsTest {
+    private static final FrameRenderer RENDERER = new FrameRenderer(2);
+    private static final Texture[] TEX = {TestScenes.distinctTexels()};
+
+    @AfterAll
+    static void close() {
+        RENDERER.close();
+    }
+
+    private static FrameStats render(Mesh mesh, Camera cam, RenderSettings s) {
+        Framebuffer fb = new Framebuffer(160, 120);
+        return RENDERER.render(mesh, TEX, cam.viewProjection(new Viewport(160, 120)), s, fb);
+    }
+
+    @Test
+    void aBoxSeenFromACornerShowsThreeFacesAndCullsThree() {
+        MeshBuilder b = new MeshBuilder();
+        Primitives.box(b, Vec3.ZERO, new Vec3(1, 1, 1));
+        Camera cam = Camera.looking(new Vec3(2, 1.7, 2.4), Vec3.ZERO);
+        FrameStats back = render(b.build(), cam, RenderSettings.defaults().withMode(RenderMode.PERSPECTIVE));
+        assertEquals(12, back.trianglesIn());
+        assertEquals(6, back.culledBackFace());
+        assertEquals(6, back.pieces());
+        assertEquals(0, back.clipped());
+        FrameStats none = render(b.build(), cam, RenderSettings.defaults().withMode(RenderMode.PERSPECTIVE)
+                .withCull(CullMode.NONE));
+        assertEquals(0, none.culledBackFace());
+        assertEquals(12, none.pieces());
+        assertTrue(none.pixelsWritten() > back.pixelsWritten(), "back faces are drawn, then hidden or not");
+    }
+
+    @Test
+    void everyPieceIsAccountedFor() {
+        MeshBuilder b = new MeshBuilder();
+        Primitives.box(b, Vec3.ZERO, new Vec3(1, 1, 1));
+        // The sphere straddles the right edge of the frame; the second box is far outside the view.
+        Primitives.sphere(b, new Vec3(3.1, 0, -1), 1.2, 12, 6);
+        Primitives.box(b, new Vec3(60, 0, 0), new Vec3(1, 1, 1));
+        Camera cam = Camera.looking(new Vec3(1, 1.2, 3), new Vec3(0.6, 0, 0));
+        Mesh mesh = b.build();
+        RenderSettings s = RenderSettings.defaults().withMode(RenderMode.TESSELLATED)
+                .withTessellation(TessellationSettings.defaults().withMaxEdge(6));
+        FrameStats st = render(mesh, cam, s);
+        assertEquals(0, st.clipped(), "nothing crosses the near plane here");
+        long entering = st.trianglesIn() - st.culled() - st.skippedInvalid();
+        // Every split turns one piece into two; every piece ends filled or dropped off screen.
+        assertEquals(entering + st.splits(), st.pieces() + st.piecesOffScreen());
+        assertTrue(st.splits() > 0 && st.piecesOffScreen() > 0, st.toJson());
+        assertTrue(st.culledFrustum() >= 6, "the far box's front faces are outside the view: " + st.toJson());
+        assertTrue(st.deepestSplit() > 0 && st.capsReached() == 0, st.toJson());
+    }
+
+    @Test
+    void nearPlaneCutsAreCounted() {
+        Camera cam = TestScenes.floorCamera();
+        FrameStats st = render(TestScenes.floor(1), cam, RenderSettings.defaults().withMode(RenderMode.PERSPECTIVE));
+        assertEquals(2, st.trianglesIn());
+        assertTrue(st.clipped() >= 1, st.toJson());
+        assertTrue(st.pieces() >= 2, "a cut triangle is fanned into more than one: " + st.toJson());
+    }
+}

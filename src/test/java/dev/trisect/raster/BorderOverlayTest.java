@@ -1,0 +1,100 @@
+package dev.trisect.raster;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trisect.texture.Texture;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+
+class BorderOverlayTest {
+    private static final int W = 80;
+    private static final int H = 60;
+    private static final Texture[] GREY = {Texture.solid("grey", 0xFF808080), Texture.solid("blue", 0xFF0000FF)};
+
+    private static int[] all(ScreenTriangles t) {
+        int[] order = new int[t.count()];
+        for (int i = 0; i < order.length; i++) {
+            order[i] = i;
+        }
+        return order;
+    }
+
+    private static Framebuffer draw(ScreenTriangles t, int bandRows) {
+        Framebuffer fb = new Framebuffer(W, H);
+        fb.clearRows(0, H, 0);
+        new Rasterizer().fill(fb, t, all(t), 0, t.count(), GREY, true, 0, 0, W, H);
+        BorderOverlay overlay = new BorderOverlay();
+        for (int y = 0; y < H; y += bandRows) {
+            overlay.draw(fb, t, all(t), 0, t.count(), 0, y, W, Math.min(H, y + bandRows));
+        }
+        return fb;
+    }
+
+    @Test
+    void outlineFollowsTheEdgesAndStaysInsideTheFrame() {
+        ScreenTriangles t = new ScreenTriangles();
+        // Corners far outside the frame: the lines must be clipped, not wrapped or thrown.
+        t.add(5.3, 5.7, 1, 0, 0, 300, 40.2, 1, 0, 0, 40.6, -200, 1, 0, 0, 0, 0);
+        Framebuffer fb = draw(t, H);
+        int yellow = 0;
+        for (int y = 0; y < H; y++) {
+            for (int x = 0; x < W; x++) {
+                if (fb.color()[y * W + x] == BorderOverlay.YELLOW) {
+                    yellow++;
+                    assertTrue(distanceToEdges(t, x + 0.5, y + 0.5) <= 0.75, "pixel " + x + "," + y + " is off the edges");
+                }
+            }
+        }
+        assertTrue(yellow > 40, "the visible parts of two edges are drawn: " + yellow);
+    }
+
+    private static double distanceToEdges(ScreenTriangles t, double px, double py) {
+        double[] s = t.screen();
+        double best = Double.POSITIVE_INFINITY;
+        for (int e = 0; e < 3; e++) {
+            double ax = s[2 * e];
+            double ay = s[2 * e + 1];
+            double bx = s[2 * ((e + 1) % 3)];
+            double by = s[2 * ((e + 1) % 3) + 1];
+            double len = Math.hypot(bx - ax, by - ay);
+            best = Math.min(best, Math.abs((bx - ax) * (py - ay) - (by - ay) * (px - ax)) / len);
+        }
+        return best;
+    }
+
+    @Test
+    void drawingInBandsGivesTheSamePixels() {
+        Random rnd = new Random(11);
+        ScreenTriangles t = new ScreenTriangles();
+        for (int k = 0; k < 40; k++) {
+            double x = rnd.nextDouble() * W;
+            double y = rnd.nextDouble() * H;
+            t.add(x, y, 0.5, 0, 0, x + rnd.nextGaussian() * 25, y + rnd.nextGaussian() * 25, 0.4, 0, 0,
+                    x + rnd.nextGaussian() * 25, y + rnd.nextGaussian() * 25, 0.6, 0, 0, k, 0);
+        }
+        assertArrayEquals(draw(t, H).color(), draw(t, 7).color());
+        assertArrayEquals(draw(t, H).color(), draw(t, 1).color());
+    }
+
+    @Test
+    void outlinesOfHiddenPiecesStayHidden() {
+        ScreenTriangles t = new ScreenTriangles();
+        // A small far triangle (1/w = 0.1) wholly behind a big near one (1/w = 1).
+        t.add(30, 20, 0.1, 0, 0, 50, 20, 0.1, 0, 0, 40, 40, 0.1, 0, 0, 0, 1);
+        t.add(0, 0, 1, 0, 0, 80, 0, 1, 0, 0, 0, 120, 1, 0, 0, 1, 0);
+        Framebuffer fb = draw(t, H);
+        for (int y = 22; y < 38; y++) {
+            for (int x = 32; x < 48; x++) {
+                assertEquals(0xFF808080, fb.color()[y * W + x], "hidden outline shows at " + x + "," + y);
+            }
+        }
+        // The near triangle's own hypotenuse still shows.
+        int yellow = 0;
+        for (int c : fb.color()) {
+            yellow += c == BorderOverlay.YELLOW ? 1 : 0;
+        }
+        assertTrue(yellow > 40);
+    }
+}
