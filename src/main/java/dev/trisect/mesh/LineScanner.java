@@ -50,6 +50,10 @@ final class LineScanner implements Closeable {
         if (Files.isDirectory(file)) {
             throw new FileSystemException(file.toString(), null, "is a directory");
         }
+        // A pipe or device could block forever or never end; only regular files are read.
+        if (Files.exists(file) && !Files.isRegularFile(file)) {
+            throw new FileSystemException(file.toString(), null, "is not a regular file");
+        }
         this.in = Files.newInputStream(file);
         this.label = label;
     }

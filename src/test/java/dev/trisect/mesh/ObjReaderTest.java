@@ -271,6 +271,25 @@ class ObjReaderTest {
         assertEquals("scene.obj:1: cannot read material library 'mats': is a directory", error(obj, true));
     }
 
+    @org.junit.jupiter.api.Test
+    @org.junit.jupiter.api.Timeout(10)
+    void pipesAndDevicesAreRefusedWithoutBlocking() throws Exception {
+        Path fifo = dir.resolve("pipe.obj");
+        Process mk = new ProcessBuilder("mkfifo", fifo.toString()).start();
+        org.junit.jupiter.api.Assumptions.assumeTrue(mk.waitFor() == 0, "mkfifo is not available here");
+        InputException e = org.junit.jupiter.api.Assertions.assertThrows(InputException.class,
+                () -> ObjReader.read(fifo, true));
+        assertEquals(fifo + ": cannot read: is not a regular file", e.getMessage());
+        Path obj = write("scene.obj", "mtllib pipe.obj\n" + TRIANGLE_VERTICES + "f 1 2 3\n");
+        assertEquals("scene.obj:1: cannot read material library 'pipe.obj': is not a regular file", error(obj, true));
+        Path zero = Path.of("/dev/zero");
+        if (Files.exists(zero)) {
+            InputException z = org.junit.jupiter.api.Assertions.assertThrows(InputException.class,
+                    () -> ObjReader.read(zero, false));
+            assertEquals("/dev/zero: cannot read: is not a regular file", z.getMessage());
+        }
+    }
+
     @ParameterizedTest
     @CsvSource(delimiter = '|', value = {
         "newmtl a\\nKd 1 1 1\\nmap_Kd\\n | lib.mtl:3: map_Kd without a file name",
