@@ -1,18 +1,27 @@
 package dev.trisect;
 
 import dev.trisect.cli.Cli;
+import dev.trisect.ui.DemoApp;
+import java.util.Arrays;
 
 /**
- * The program's entry point: with arguments, the command line; without, the desktop demo.
+ * The program's entry point: without arguments (or with {@code demo ...}) the desktop demo,
+ * otherwise the command line.
  */
 public final class Trisect {
     private Trisect() {
     }
 
     public static void main(String[] args) {
-        int status = Cli.run(args);
-        if (status != 0 || args.length > 0) {
-            System.exit(status);
+        int status;
+        if (args.length == 0 || args[0].equals("demo")) {
+            status = DemoApp.launch(args.length == 0 ? args : Arrays.copyOfRange(args, 1, args.length));
+            if (status < 0) {
+                return; // the demo runs on; the JVM ends when its window closes
+            }
+        } else {
+            status = Cli.run(args);
         }
+        System.exit(status);
     }
 }

@@ -13,8 +13,15 @@ import java.util.List;
  * @param mesh        the triangles, world space
  * @param textures    one texture per material, in the mesh's material order
  * @param camera      the scene's own camera, used when the user gives none
+ * @param source      the OBJ file it was read from, or null for a built-in scene
  */
-public record Scene(String name, String description, Mesh mesh, List<Texture> textures, Camera camera) {
+public record Scene(String name, String description, Mesh mesh, List<Texture> textures, Camera camera,
+                    java.nio.file.Path source) {
+
+    /** A built-in scene (no source file). */
+    public Scene(String name, String description, Mesh mesh, List<Texture> textures, Camera camera) {
+        this(name, description, mesh, textures, camera, null);
+    }
 
     public Scene {
         textures = List.copyOf(textures);

@@ -58,7 +58,8 @@ public final class SceneLoader {
                         + String.join(", ", untextured) + " (no --texture and no map_Kd); using the built-in UV grid");
             }
         }
-        return new Scene(String.valueOf(obj.getFileName()), "OBJ file " + obj, mesh, textures, frame(mesh));
+        return new Scene(String.valueOf(obj.getFileName()), "OBJ file " + obj, mesh, textures, frame(mesh),
+                obj.toAbsolutePath());
     }
 
     /**

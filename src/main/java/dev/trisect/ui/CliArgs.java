@@ -1,0 +1,43 @@
+package dev.trisect.ui;
+
+import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.scene.Camera;
+import dev.trisect.scene.Scene;
+import dev.trisect.tessellate.TessellationSettings;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+/** The command line that reproduces a frame of the demo headless, for copying and for checks. */
+final class CliArgs {
+    private CliArgs() {
+    }
+
+    /** {@code compare} arguments for the measured frame: same scene, size, camera and path settings. */
+    static List<String> compare(Scene scene, DemoState.Measurement m) {
+        List<String> a = new ArrayList<>();
+        a.add("compare");
+        if (scene.source() != null) {
+            a.add("--obj");
+            a.add(scene.source().toString());
+        } else {
+            a.add("--scene");
+            a.add(scene.name());
+        }
+        Camera c = m.camera();
+        RenderSettings r = m.settings().render();
+        TessellationSettings t = r.tessellation();
+        a.addAll(List.of("--size", m.width() + "x" + m.height(),
+                "--eye", c.eye().toString(), "--target", c.target().toString(), "--up", c.up().toString(),
+                "--fov", Double.toString(c.fovY()), "--near", Double.toString(c.near()), "--far", Double.toString(c.far()),
+                "--cull", r.cull().name().toLowerCase(Locale.ROOT),
+                "--background", String.format(Locale.ROOT, "%06X", r.background()),
+                "--mode", r.mode().id(), "--split", t.policy().name().toLowerCase(Locale.ROOT),
+                "--max-edge", Double.toString(t.maxEdge()), "--max-error", Double.toString(t.maxError()),
+                "--max-depth", Integer.toString(t.maxDepth()), "--max-pieces", Integer.toString(t.maxPieces())));
+        if (r.borders()) {
+            a.add("--borders");
+        }
+        return a;
+    }
+}

@@ -1,0 +1,143 @@
+package dev.trisect.ui;
+
+import com.formdev.flatlaf.FlatDarkLaf;
+import dev.trisect.base.InputException;
+import dev.trisect.pipeline.RenderMode;
+import dev.trisect.scene.DemoScenes;
+import dev.trisect.scene.Scene;
+import dev.trisect.scene.SceneLoader;
+import java.awt.GraphicsEnvironment;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import java.util.concurrent.atomic.AtomicReference;
+import javax.swing.SwingUtilities;
+import javax.swing.ToolTipManager;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+/**
+ * Launches the desktop demo. Without a display it prints one line pointing to the headless
+ * {@code render} command and returns status 1.
+ */
+@Command(name = "demo", mixinStandardHelpOptions = true, sortOptions = false,
+        description = "Open the desktop demo: fly through a textured scene; F12 opens the developer tools.")
+public final class DemoApp implements Callable<Integer> {
+    @Option(names = "--scene", paramLabel = "NAME", defaultValue = "demo",
+            description = "Built-in scene to open (default: ${DEFAULT-VALUE}).")
+    String scene;
+
+    @Option(names = "--obj", paramLabel = "FILE", description = "Open this OBJ file instead of a built-in scene.")
+    Path obj;
+
+    @Option(names = "--mode", paramLabel = "perspective|affine|tessellated", defaultValue = "tessellated",
+            description = "Texturing path at start (default: ${DEFAULT-VALUE}).")
+    String mode;
+
+    @Option(names = "--render-scale", paramLabel = "F", defaultValue = "1",
+            description = "Frame pixels per device pixel, 0.25 to 1; lower is faster (default: ${DEFAULT-VALUE}).")
+    double renderScale;
+
+    @Option(names = "--threads", paramLabel = "N",
+            description = "Render threads (default: one per processor).")
+    Integer threads;
+
+    @Option(names = "--dev-tools", description = "Open the developer tools at start.")
+    boolean devTools;
+
+    @Option(names = "--soak", paramLabel = "SECONDS",
+            description = "Run the endurance check: measure frame rates per path, then change settings, sizes and "
+                    + "windows for this long while watching the heap and the event thread; print a report and exit.")
+    Integer soak;
+
+    @Option(names = "--report", paramLabel = "FILE", description = "With --soak: also write the report here (JSON).")
+    Path report;
+
+    /** Runs the demo's command line; returns a process exit status, or -1 when the demo is running. */
+    public static int launch(String... args) {
+        CommandLine cl = new CommandLine(new DemoApp());
+        PrintWriter err = new PrintWriter(System.err, true);
+        cl.setParameterExceptionHandler((ex, a) -> {
+            err.println("trisect demo: " + ex.getMessage().lines().findFirst().orElse("invalid arguments")
+                    + " (see trisect demo --help)");
+            return 2;
+        });
+        cl.setExecutionExceptionHandler((ex, c, r) -> {
+            err.println("trisect: " + DemoWindow.message(ex));
+            return ex instanceof InputException ie ? ie.exitStatus() : 1;
+        });
+        return cl.execute(args);
+    }
+
+    @Override
+    public Integer call() throws Exception {
+        if (GraphicsEnvironment.isHeadless()) {
+            System.err.println("trisect: no display for the desktop demo; render headless instead: "
+                    + "java -jar trisect.jar render --scene demo --out demo.png (see render --help)");
+            return 1;
+        }
+        RenderMode start = null;
+        for (RenderMode m : RenderMode.values()) {
+            if (m.id().equalsIgnoreCase(mode)) {
+                start = m;
+            }
+        }
+        if (start == null) {
+            throw InputException.usage("--mode must be perspective, affine or tessellated, got " + mode);
+        }
+        if (!(renderScale >= 0.25 && renderScale <= 1)) {
+            throw InputException.usage("--render-scale must be between 0.25 and 1, got " + renderScale);
+        }
+        Scene s = obj != null ? SceneLoader.load(obj, null, note -> System.err.println("trisect: note: " + note))
+                : DemoScenes.byName(scene).orElseThrow(() -> InputException.usage("unknown scene '" + scene
+                        + "' (built-in scenes: " + String.join(", ", DemoScenes.names()) + ")"));
+        DemoState state = new DemoState(s);
+        RenderMode initial = start;
+        state.settings(state.settings().withRenderScale(renderScale)
+                .withRender(state.settings().render().withMode(initial)));
+        int n = threads == null ? Runtime.getRuntime().availableProcessors() : threads;
+        if (n < 1 || n > 256) {
+            throw InputException.usage("--threads must be between 1 and 256, got " + n);
+        }
+        AtomicReference<DemoWindow> window = new AtomicReference<>();
+        AtomicReference<Throwable> failure = new AtomicReference<>();
+        SwingUtilities.invokeAndWait(() -> {
+            try {
+                FlatDarkLaf.setup();
+                ToolTipManager.sharedInstance().setDismissDelay(15000);
+                DemoWindow w = new DemoWindow(state, n);
+                w.start();
+                if (devTools) {
+                    w.devToolsCommand.actionPerformed(null);
+                }
+                window.set(w);
+            } catch (RuntimeException | Error e) {
+                failure.set(e);
+            }
+        });
+        if (failure.get() != null) {
+            System.err.println("trisect: cannot open the demo window: " + failure.get().getMessage()
+                    + "; render headless instead: java -jar trisect.jar render --help");
+            return 1;
+        }
+        if (soak != null) {
+            return new SoakRun(window.get(), soak, report).run();
+        }
+        return -1;
+    }
+
+    /** Opens the demo on the event thread for tests: the window, built and shown. */
+    static DemoWindow openForTest(Scene scene, ViewSettings settings, int threads) throws Exception {
+        DemoState state = new DemoState(scene);
+        state.settings(settings);
+        AtomicReference<DemoWindow> window = new AtomicReference<>();
+        SwingUtilities.invokeAndWait(() -> {
+            FlatDarkLaf.setup();
+            DemoWindow w = new DemoWindow(state, threads);
+            w.start();
+            window.set(w);
+        });
+        return window.get();
+    }
+}

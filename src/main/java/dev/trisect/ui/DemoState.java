@@ -1,0 +1,89 @@
+package dev.trisect.ui;
+
+import dev.trisect.metrics.Comparison;
+import dev.trisect.scene.Camera;
+import dev.trisect.scene.Scene;
+
+/**
+ * What the event thread and the render thread share. Each field is an immutable value behind a
+ * volatile reference: one side replaces it, the other reads the latest.
+ */
+final class DemoState {
+    /** Largest frame the view renders, in pixels, so a huge window cannot exhaust memory. */
+    static final long MAX_FRAME_PIXELS = 3840L * 2160;
+
+    final InputState input = new InputState();
+    private volatile ViewSettings settings = ViewSettings.defaults();
+    private volatile Scene scene;
+    private volatile long sceneSerial;
+    /** View size in device pixels, width in the high half; 0 when hidden or minimized. */
+    private volatile long viewSize;
+    private volatile Measurement measurement;
+    private volatile Progress progress = new Progress(0, 0, 0, 0, 0);
+
+    /** A comparison of one frame against the per-pixel path, and what it was made from. */
+    record Measurement(Comparison comparison, long frame, Camera camera, ViewSettings settings, int width,
+                       int height, long nanos) {
+    }
+
+    /**
+     * The render loop's pace: frames so far, frames per second over the last second, milliseconds of
+     * the last comparison, and the render and paint times of the latest frame.
+     */
+    record Progress(long frames, double fps, double compareMs, double frameMs, long sceneSerial) {
+    }
+
+    DemoState(Scene scene) {
+        this.scene = scene;
+    }
+
+    ViewSettings settings() {
+        return settings;
+    }
+
+    void settings(ViewSettings s) {
+        settings = s;
+    }
+
+    Scene scene() {
+        return scene;
+    }
+
+    long sceneSerial() {
+        return sceneSerial;
+    }
+
+    /** Shows another scene from the next frame on; the camera goes to the scene's own. */
+    void scene(Scene s) {
+        scene = s;
+        sceneSerial++;
+    }
+
+    void viewSize(int width, int height) {
+        viewSize = ((long) Math.max(0, width) << 32) | Math.max(0, height);
+    }
+
+    int viewWidth() {
+        return (int) (viewSize >>> 32);
+    }
+
+    int viewHeight() {
+        return (int) viewSize;
+    }
+
+    Measurement measurement() {
+        return measurement;
+    }
+
+    void measurement(Measurement m) {
+        measurement = m;
+    }
+
+    Progress progress() {
+        return progress;
+    }
+
+    void progress(Progress p) {
+        progress = p;
+    }
+}

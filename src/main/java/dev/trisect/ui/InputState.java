@@ -1,0 +1,89 @@
+package dev.trisect.ui;
+
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
+
+/**
+ * Input gathered on the event thread and consumed by the render thread: held movement keys, mouse
+ * drag and wheel amounts since the last frame, and one-shot requests. Lock-free.
+ */
+final class InputState {
+    static final int FORWARD = 1;
+    static final int BACK = 2;
+    static final int LEFT = 4;
+    static final int RIGHT = 8;
+    static final int UP = 16;
+    static final int DOWN = 32;
+    static final int FAST = 64;
+
+    private final AtomicInteger held = new AtomicInteger();
+    /** Drag in logical pixels, x in the high half and y in the low half, as two packed ints. */
+    private final AtomicLong drag = new AtomicLong();
+    private final AtomicInteger wheel = new AtomicInteger();
+    private final AtomicBoolean reset = new AtomicBoolean();
+    private volatile boolean orbit;
+
+    void press(int key) {
+        held.getAndUpdate(v -> v | key);
+    }
+
+    void release(int key) {
+        held.getAndUpdate(v -> v & ~key);
+    }
+
+    /** Forgets held keys, for when the window loses the keyboard and would miss their release. */
+    void releaseAll() {
+        held.set(0);
+    }
+
+    int held() {
+        return held.get();
+    }
+
+    void drag(int dx, int dy) {
+        drag.getAndUpdate(v -> pack(unpackX(v) + dx, unpackY(v) + dy));
+    }
+
+    /** The drag since the last call, {dx, dy} in logical pixels. */
+    int[] takeDrag() {
+        long v = drag.getAndSet(0);
+        return new int[] {unpackX(v), unpackY(v)};
+    }
+
+    void wheel(int notches) {
+        wheel.addAndGet(notches);
+    }
+
+    int takeWheel() {
+        return wheel.getAndSet(0);
+    }
+
+    void requestReset() {
+        reset.set(true);
+    }
+
+    boolean takeReset() {
+        return reset.getAndSet(false);
+    }
+
+    boolean orbit() {
+        return orbit;
+    }
+
+    void orbit(boolean on) {
+        orbit = on;
+    }
+
+    private static long pack(int x, int y) {
+        return ((long) x << 32) | (y & 0xFFFFFFFFL);
+    }
+
+    private static int unpackX(long v) {
+        return (int) (v >> 32);
+    }
+
+    private static int unpackY(long v) {
+        return (int) v;
+    }
+}

@@ -1,0 +1,210 @@
+package dev.trisect.ui;
+
+import dev.trisect.math.Mat4;
+import dev.trisect.math.Viewport;
+import dev.trisect.metrics.Comparison;
+import dev.trisect.metrics.HeatMap;
+import dev.trisect.metrics.ImageComparison;
+import dev.trisect.pipeline.FrameRenderer;
+import dev.trisect.pipeline.RenderMode;
+import dev.trisect.raster.Framebuffer;
+import dev.trisect.scene.Camera;
+import dev.trisect.scene.Scene;
+
+/**
+ * The render thread: draws frames continuously into the engine's framebuffers and hands them to the
+ * event thread through a {@link TripleBuffer}. It never touches Swing; it only asks for a repaint.
+ *
+ * <p>Per frame it reads the latest {@link ViewSettings}, moves the camera by the input gathered since
+ * the last frame, draws, and — for the difference and split views, or when a comparison is due (at
+ * least twice a second) — also draws the per-pixel path with UV output and measures the difference.
+ * It then waits until the event thread has shown the frame (at most a short while), so it never
+ * runs more than one frame ahead of the screen nor starves the event thread of processor time.
+ */
+final class RenderLoop implements Runnable {
+    /** A comparison is due when the last one is this old. */
+    static final long COMPARE_INTERVAL_NANOS = 400_000_000L;
+    /** Longest wait for the event thread to show a frame before drawing the next. */
+    static final long PAINT_WAIT_MILLIS = 40;
+
+    private final DemoState state;
+    private final TripleBuffer buffers;
+    private final Runnable repaint;
+    private final FrameRenderer renderer;
+    private volatile boolean running = true;
+    private final Object paintSignal = new Object();
+    private long painted;
+
+    private FrameSlot back;
+    private Framebuffer reference;
+    private float[] displacement;
+    private CameraRig rig;
+    private long sceneSerial = -1;
+    private long frames;
+    private long lastCompare;
+    private double compareMs;
+
+    RenderLoop(DemoState state, TripleBuffer buffers, Runnable repaint, int threads) {
+        this.state = state;
+        this.buffers = buffers;
+        this.repaint = repaint;
+        this.renderer = new FrameRenderer(threads);
+    }
+
+    int threads() {
+        return renderer.threads();
+    }
+
+    /** Asks the loop to finish its frame and stop. */
+    void stop() {
+        running = false;
+        framePainted(Long.MAX_VALUE);
+    }
+
+    /** Event thread: the frame with this serial number is now on screen. */
+    void framePainted(long serial) {
+        synchronized (paintSignal) {
+            if (serial > painted) {
+                painted = serial;
+                paintSignal.notifyAll();
+            }
+        }
+    }
+
+    @Override
+    public void run() {
+        long last = System.nanoTime();
+        long secondStart = last;
+        long secondFrames = 0;
+        double fps = 0;
+        try {
+            while (running) {
+                int w = state.viewWidth();
+                int h = state.viewHeight();
+                ViewSettings settings = state.settings();
+                long now = System.nanoTime();
+                double dt = Math.min(0.1, (now - last) / 1e9);
+                last = now;
+                if (w <= 0 || h <= 0) {
+                    // Minimized or not shown yet: nothing to draw.
+                    sleep(50);
+                    continue;
+                }
+                int fw = Math.max(1, (int) Math.round(w * settings.renderScale()));
+                int fh = Math.max(1, (int) Math.round(h * settings.renderScale()));
+                double shrink = Math.sqrt((double) DemoState.MAX_FRAME_PIXELS / ((long) fw * fh));
+                if (shrink < 1) {
+                    fw = Math.max(1, (int) (fw * shrink));
+                    fh = Math.max(1, (int) (fh * shrink));
+                }
+                long frameStart = System.nanoTime();
+                drawFrame(settings, fw, fh, dt);
+                double frameMs = (System.nanoTime() - frameStart) / 1e6;
+                long serial = back.serial;
+                back = buffers.publish(back);
+                repaint.run();
+                secondFrames++;
+                if (now - secondStart >= 1_000_000_000L) {
+                    fps = secondFrames * 1e9 / (now - secondStart);
+                    secondStart = now;
+                    secondFrames = 0;
+                }
+                state.progress(new DemoState.Progress(frames, fps, compareMs, frameMs, sceneSerial));
+                awaitPaint(serial);
+            }
+        } finally {
+            renderer.close();
+        }
+    }
+
+    private void drawFrame(ViewSettings settings, int fw, int fh, double dt) {
+        Scene scene = state.scene();
+        if (state.sceneSerial() != sceneSerial || rig == null) {
+            sceneSerial = state.sceneSerial();
+            rig = new CameraRig(scene.camera());
+        }
+        if (state.input.takeReset()) {
+            state.input.orbit(false);
+            rig.reset(scene.camera());
+        }
+        Camera camera = rig.update(state.input, dt);
+        if (back == null || !back.is(fw, fh)) {
+            back = new FrameSlot(fw, fh);
+        }
+        long now = System.nanoTime();
+        boolean compareDue = settings.compare() && now - lastCompare >= COMPARE_INTERVAL_NANOS;
+        boolean needReference = settings.view() != ViewKind.IMAGE || compareDue;
+        Framebuffer fb = back.frame;
+        fb.recordUv(needReference);
+        Mat4 vp = camera.viewProjection(new Viewport(fw, fh));
+        var textures = scene.textureArray();
+        back.stats = renderer.render(scene.mesh(), textures, vp, settings.render(), fb);
+        frames++;
+        back.serial = frames;
+        back.camera = camera;
+        back.view = settings.view();
+        back.splitFraction = settings.splitFraction();
+        back.heatmapMax = settings.heatmapMax();
+        if (!needReference) {
+            return;
+        }
+        if (reference == null || reference.width() != fw || reference.height() != fh) {
+            reference = new Framebuffer(fw, fh);
+            reference.recordUv(true);
+            displacement = new float[fw * fh];
+        }
+        renderer.render(scene.mesh(), textures, vp,
+                settings.render().withMode(RenderMode.PERSPECTIVE).withBorders(false), reference);
+        if (compareDue || settings.view() == ViewKind.DIFFERENCE) {
+            long t0 = System.nanoTime();
+            Comparison c = ImageComparison.compare(fw, fh, fb.color(), fb.uv(), reference.color(), reference.uv(),
+                    displacement);
+            compareMs = (System.nanoTime() - t0) / 1e6;
+            if (compareDue) {
+                lastCompare = now;
+                state.measurement(new DemoState.Measurement(c, back.serial, camera, settings, fw, fh,
+                        System.nanoTime()));
+            }
+        }
+        if (settings.view() == ViewKind.DIFFERENCE) {
+            HeatMap.render(displacement, fb.uv(), reference.uv(), fw, fh, settings.heatmapMax(), fb.color());
+        } else if (settings.view() == ViewKind.SPLIT) {
+            int divider = (int) Math.round(settings.splitFraction() * fw);
+            if (divider < fw) {
+                int[] dst = fb.color();
+                int[] src = reference.color();
+                for (int y = 0; y < fh; y++) {
+                    System.arraycopy(src, y * fw + divider, dst, y * fw + divider, fw - divider);
+                }
+            }
+        }
+    }
+
+    private void awaitPaint(long serial) {
+        long deadline = System.currentTimeMillis() + PAINT_WAIT_MILLIS;
+        synchronized (paintSignal) {
+            while (running && painted < serial) {
+                long left = deadline - System.currentTimeMillis();
+                if (left <= 0) {
+                    return;
+                }
+                try {
+                    paintSignal.wait(left);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    running = false;
+                    return;
+                }
+            }
+        }
+    }
+
+    private void sleep(long millis) {
+        try {
+            Thread.sleep(millis);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            running = false;
+        }
+    }
+}

@@ -1,0 +1,273 @@
+package dev.trisect.ui;
+
+import dev.trisect.pipeline.RenderMode;
+import dev.trisect.tessellate.SplitPolicy;
+import java.awt.Frame;
+import java.awt.event.WindowEvent;
+import java.io.IOException;
+import java.lang.management.ManagementFactory;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Random;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
+import javax.swing.SwingUtilities;
+
+/**
+ * The demo's endurance check ({@code trisect demo --soak SECONDS}). It measures the frame rate of
+ * each path, then for the given time keeps changing what a user can change — paths, policies,
+ * sliders, views, render scale, window size, minimizing, the developer tools window — while it:
+ * <ul>
+ * <li>posts a task to the event thread every 20 ms and records how long each waited (the event
+ * thread's responsiveness);</li>
+ * <li>samples the heap after a full collection every 15 s (it should stay flat);</li>
+ * <li>counts uncaught exceptions on any thread (there should be none).</li>
+ * </ul>
+ * Frame rates, heap and latency are measured and reported, not asserted: they depend on the machine.
+ */
+final class SoakRun {
+    private final DemoWindow window;
+    private final int seconds;
+    private final Path report;
+    private final AtomicInteger exceptions = new AtomicInteger();
+    private final List<String> exceptionLines = new ArrayList<>();
+    private final Random random = new Random(20261121);
+
+    SoakRun(DemoWindow window, int seconds, Path report) {
+        this.window = window;
+        this.seconds = seconds;
+        this.report = report;
+    }
+
+    int run() throws Exception {
+        Thread.setDefaultUncaughtExceptionHandler((t, e) -> {
+            exceptions.incrementAndGet();
+            synchronized (exceptionLines) {
+                exceptionLines.add(t.getName() + ": " + e);
+            }
+        });
+        Map<String, Object> out = new LinkedHashMap<>();
+        onEdt(w -> w.frame().setSize(w.frame().getWidth(), w.frame().getHeight()));
+        Thread.sleep(1500);
+        FrameSlot first = onEdtGet(w -> w.view().front());
+        out.put("frame_size", first == null ? "none" : first.width() + "x" + first.height());
+        out.put("render_threads", window.loop().threads());
+        out.put("fps_dev_tools_closed", pathRates(false));
+        out.put("fps_dev_tools_open_comparing", pathRates(true));
+        churn(out);
+        Thread.sleep(500);
+        out.put("uncaught_exceptions", exceptions.get());
+        synchronized (exceptionLines) {
+            out.put("exception_messages", new ArrayList<>(exceptionLines.subList(0, Math.min(5, exceptionLines.size()))));
+        }
+        long framesBefore = window.state().progress().frames();
+        Thread.sleep(1000);
+        boolean rendering = window.state().progress().frames() > framesBefore;
+        out.put("still_rendering", rendering);
+        onEdt(w -> w.frame().dispatchEvent(new WindowEvent(w.frame(), WindowEvent.WINDOW_CLOSING)));
+        String json = json(out);
+        System.out.println(json);
+        if (report != null) {
+            try {
+                Files.writeString(report, json + "\n", StandardCharsets.UTF_8);
+            } catch (IOException e) {
+                System.err.println("trisect: " + report + ": cannot write: " + e.getMessage());
+            }
+        }
+        return exceptions.get() == 0 && rendering ? 0 : 1;
+    }
+
+    /** Frames per second of each path, 2 s to settle then 6 s measured. */
+    private Map<String, Object> pathRates(boolean devTools) throws Exception {
+        onEdt(w -> {
+            if (w.devToolsCommand.selected() != devTools) {
+                w.devToolsCommand.actionPerformed(null);
+            }
+        });
+        Map<String, Object> rates = new LinkedHashMap<>();
+        for (RenderMode m : RenderMode.values()) {
+            onEdt(w -> w.selectMode(m));
+            Thread.sleep(2000);
+            long f0 = window.state().progress().frames();
+            long t0 = System.nanoTime();
+            Thread.sleep(6000);
+            long f1 = window.state().progress().frames();
+            rates.put(m.id(), round((f1 - f0) * 1e9 / (System.nanoTime() - t0)));
+        }
+        return rates;
+    }
+
+    private void churn(Map<String, Object> out) throws Exception {
+        AtomicLong worstWait = new AtomicLong();
+        AtomicLong over100 = new AtomicLong();
+        AtomicLong posts = new AtomicLong();
+        long[] histogram = new long[1001];
+        volatileRun = true;
+        Thread watchdog = new Thread(() -> {
+            while (volatileRun) {
+                long posted = System.nanoTime();
+                SwingUtilities.invokeLater(() -> {
+                    long waitedMs = (System.nanoTime() - posted) / 1_000_000;
+                    worstWait.accumulateAndGet(waitedMs, Math::max);
+                    if (waitedMs > 100) {
+                        over100.incrementAndGet();
+                    }
+                    histogram[(int) Math.min(1000, waitedMs)]++;
+                    posts.incrementAndGet();
+                });
+                try {
+                    Thread.sleep(20);
+                } catch (InterruptedException e) {
+                    return;
+                }
+            }
+        }, "trisect-soak-watchdog");
+        watchdog.setDaemon(true);
+        watchdog.start();
+        List<Double> heap = new ArrayList<>();
+        heap.add(heapAfterGc());
+        long start = System.nanoTime();
+        long nextHeap = start + 15_000_000_000L;
+        long f0 = window.state().progress().frames();
+        int actions = 0;
+        while (System.nanoTime() - start < seconds * 1_000_000_000L) {
+            act(actions++);
+            Thread.sleep(300 + random.nextInt(600));
+            if (System.nanoTime() >= nextHeap) {
+                heap.add(heapAfterGc());
+                nextHeap += 15_000_000_000L;
+            }
+        }
+        // End in a known state, then the last heap sample.
+        onEdt(w -> {
+            w.frame().setExtendedState(Frame.NORMAL);
+            w.frame().setSize(1296, 800);
+            w.update(s -> ViewSettings.defaults());
+        });
+        Thread.sleep(2000);
+        heap.add(heapAfterGc());
+        volatileRun = false;
+        watchdog.join(1000);
+        double elapsed = (System.nanoTime() - start) / 1e9;
+        out.put("soak_seconds", round(elapsed));
+        out.put("actions", actions);
+        out.put("frames_during_soak", window.state().progress().frames() - f0);
+        out.put("heap_after_gc_mb", heap.stream().map(SoakRun::round).toList());
+        out.put("heap_first_mb", round(heap.get(0)));
+        out.put("heap_last_mb", round(heap.get(heap.size() - 1)));
+        out.put("heap_max_mb", round(heap.stream().mapToDouble(Double::doubleValue).max().orElse(0)));
+        out.put("edt_tasks_timed", posts.get());
+        out.put("edt_max_wait_ms", worstWait.get());
+        out.put("edt_p99_wait_ms", percentile(histogram, 0.99));
+        out.put("edt_waits_over_100ms", over100.get());
+    }
+
+    private volatile boolean volatileRun;
+
+    /** One change a user could make, chosen at random among many. */
+    private void act(int n) throws Exception {
+        int choice = random.nextInt(16);
+        switch (choice) {
+            case 0 -> onEdt(w -> w.bordersCommand.actionPerformed(null));
+            case 1 -> onEdt(w -> w.selectMode(RenderMode.values()[random.nextInt(3)]));
+            case 2 -> onEdt(w -> w.devToolsCommand.actionPerformed(null));
+            case 3 -> onEdt(w -> w.update(s -> s.withRender(s.render().withTessellation(s.render().tessellation()
+                    .withPolicy(random.nextBoolean() ? SplitPolicy.EDGE : SplitPolicy.ERROR)))));
+            case 4 -> onEdt(w -> w.update(s -> s.withRender(s.render().withTessellation(s.render().tessellation()
+                    .withMaxEdge(2 + random.nextInt(120))))));
+            case 5 -> onEdt(w -> w.update(s -> s.withRender(s.render().withTessellation(s.render().tessellation()
+                    .withMaxError(DevToolsDialog.sliderToError(random.nextInt(1001)))))));
+            case 6 -> onEdt(w -> w.update(s -> s.withView(ViewKind.values()[random.nextInt(3)])
+                    .withSplitFraction(random.nextDouble())));
+            case 7 -> onEdt(w -> w.update(s -> s.withRenderScale(0.25 + 0.75 * random.nextDouble())));
+            case 8 -> onEdt(w -> {
+                int[][] sizes = {{80, 60}, {16, 12}, {1296, 800}, {2000, 1300}, {640, 480}, {300, 900}};
+                int[] size = sizes[random.nextInt(sizes.length)];
+                w.frame().setSize(size[0], size[1]);
+            });
+            case 9 -> {
+                onEdt(w -> w.frame().setExtendedState(Frame.ICONIFIED));
+                Thread.sleep(400);
+                onEdt(w -> w.frame().setExtendedState(Frame.NORMAL));
+            }
+            case 10 -> onEdt(w -> w.orbitCommand.actionPerformed(null));
+            case 11 -> onEdt(w -> w.resetCommand.actionPerformed(null));
+            case 12 -> {
+                int key = new int[] {InputState.FORWARD, InputState.LEFT, InputState.BACK, InputState.RIGHT}[n % 4];
+                window.state().input.press(key);
+                Thread.sleep(200);
+                window.state().input.release(key);
+            }
+            case 13 -> window.state().input.drag(random.nextInt(41) - 20, random.nextInt(21) - 10);
+            case 14 -> onEdt(w -> {
+                // Close the developer tools in the middle of whatever frame is being drawn.
+                if (w.devTools() != null && w.devTools().isVisible()) {
+                    w.devTools().dispatchEvent(new WindowEvent(w.devTools(), WindowEvent.WINDOW_CLOSING));
+                }
+            });
+            default -> onEdt(w -> w.update(s -> s.withRender(s.render().withTessellation(s.render().tessellation()
+                    .withMaxDepth(random.nextInt(25))))));
+        }
+    }
+
+    private static double heapAfterGc() {
+        System.gc();
+        return ManagementFactory.getMemoryMXBean().getHeapMemoryUsage().getUsed() / 1048576.0;
+    }
+
+    private static long percentile(long[] histogram, double q) {
+        long total = Arrays.stream(histogram).sum();
+        long seen = 0;
+        for (int i = 0; i < histogram.length; i++) {
+            seen += histogram[i];
+            if (seen >= q * total) {
+                return i;
+            }
+        }
+        return histogram.length - 1;
+    }
+
+    private void onEdt(Consumer<DemoWindow> task) throws Exception {
+        SwingUtilities.invokeAndWait(() -> task.accept(window));
+    }
+
+    private <T> T onEdtGet(java.util.function.Function<DemoWindow, T> task) throws Exception {
+        Object[] box = new Object[1];
+        SwingUtilities.invokeAndWait(() -> box[0] = task.apply(window));
+        @SuppressWarnings("unchecked")
+        T t = (T) box[0];
+        return t;
+    }
+
+    private static double round(double v) {
+        return Math.round(v * 10) / 10.0;
+    }
+
+    private static String json(Object v) {
+        if (v instanceof Map<?, ?> m) {
+            StringBuilder b = new StringBuilder("{");
+            for (Map.Entry<?, ?> e : m.entrySet()) {
+                b.append(b.length() > 1 ? "," : "").append('"').append(e.getKey()).append("\":").append(json(e.getValue()));
+            }
+            return b.append('}').toString();
+        }
+        if (v instanceof List<?> l) {
+            StringBuilder b = new StringBuilder("[");
+            for (Object o : l) {
+                b.append(b.length() > 1 ? "," : "").append(json(o));
+            }
+            return b.append(']').toString();
+        }
+        if (v instanceof String s) {
+            return '"' + s.replace("\\", "\\\\").replace("\"", "\\\"") + '"';
+        }
+        return String.valueOf(v);
+    }
+}

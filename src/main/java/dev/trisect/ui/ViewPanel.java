@@ -1,0 +1,171 @@
+package dev.trisect.ui;
+
+import dev.trisect.metrics.HeatMap;
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Dimension;
+import java.awt.Font;
+import java.awt.Graphics;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.event.MouseAdapter;
+import java.awt.event.MouseEvent;
+import java.awt.event.MouseWheelEvent;
+import java.awt.geom.AffineTransform;
+import java.util.List;
+import java.util.Locale;
+import java.util.function.DoubleConsumer;
+import javax.swing.JComponent;
+
+/**
+ * Shows the newest frame from the render thread, at device pixels on HiDPI screens, with the heat
+ * map's legend in the difference view and the divider in the split view. Mouse drags turn the camera
+ * (or move the divider), the wheel raises and lowers it. Event thread only.
+ */
+final class ViewPanel extends JComponent {
+    private static final long serialVersionUID = 1L;
+    /** Grab distance of the split divider, logical pixels. */
+    private static final int DIVIDER_GRAB = 8;
+
+    private final transient DemoState state;
+    private final transient TripleBuffer buffers;
+    private transient RenderLoop loop;
+    private transient FrameSlot front;
+    private final transient DoubleConsumer splitMoved;
+    private int lastX;
+    private int lastY;
+    private boolean draggingDivider;
+
+    ViewPanel(DemoState state, TripleBuffer buffers, DoubleConsumer splitMoved) {
+        this.state = state;
+        this.buffers = buffers;
+        this.splitMoved = splitMoved;
+        setPreferredSize(new Dimension(1280, 720));
+        setOpaque(true);
+        setFocusable(true);
+        setToolTipText(null);
+        MouseAdapter mouse = new MouseAdapter() {
+            @Override
+            public void mousePressed(MouseEvent e) {
+                lastX = e.getX();
+                lastY = e.getY();
+                draggingDivider = state.settings().view() == ViewKind.SPLIT
+                        && Math.abs(e.getX() - dividerX()) <= DIVIDER_GRAB;
+                requestFocusInWindow();
+            }
+
+            @Override
+            public void mouseDragged(MouseEvent e) {
+                if (draggingDivider) {
+                    splitMoved.accept(getWidth() == 0 ? 0.5 : (double) e.getX() / getWidth());
+                } else {
+                    state.input.drag(e.getX() - lastX, e.getY() - lastY);
+                }
+                lastX = e.getX();
+                lastY = e.getY();
+            }
+
+            @Override
+            public void mouseWheelMoved(MouseWheelEvent e) {
+                state.input.wheel(e.getWheelRotation());
+            }
+        };
+        addMouseListener(mouse);
+        addMouseMotionListener(mouse);
+        addMouseWheelListener(mouse);
+    }
+
+    /** Connects the loop that waits for frames to be shown. */
+    void attach(RenderLoop renderLoop) {
+        this.loop = renderLoop;
+    }
+
+    /** The frame on screen now, or null before the first one. Event thread only. */
+    FrameSlot front() {
+        return front;
+    }
+
+    private int dividerX() {
+        return (int) Math.round(state.settings().splitFraction() * getWidth());
+    }
+
+    /** Tells the render thread the view's size in device pixels. */
+    void publishSize() {
+        double scale = getGraphicsConfiguration() == null ? 1
+                : getGraphicsConfiguration().getDefaultTransform().getScaleX();
+        state.viewSize((int) Math.round(getWidth() * scale), (int) Math.round(getHeight() * scale));
+    }
+
+    @Override
+    protected void paintComponent(Graphics g) {
+        front = buffers.acquire(front);
+        Graphics2D g2 = (Graphics2D) g.create();
+        try {
+            int w = getWidth();
+            int h = getHeight();
+            if (front == null) {
+                g2.setColor(Color.DARK_GRAY);
+                g2.fillRect(0, 0, w, h);
+                return;
+            }
+            // Nearest neighbour: at render scale 1 the image maps onto device pixels one to one, and
+            // below it the pixels stay crisp rather than blurred.
+            g2.setRenderingHint(RenderingHints.KEY_INTERPOLATION, RenderingHints.VALUE_INTERPOLATION_NEAREST_NEIGHBOR);
+            g2.drawImage(front.image, 0, 0, w, h, null);
+            if (front.view == ViewKind.DIFFERENCE) {
+                paintLegend(g2, front.heatmapMax);
+            } else if (front.view == ViewKind.SPLIT) {
+                paintDivider(g2, (int) Math.round(front.splitFraction * w), h);
+            }
+        } finally {
+            g2.dispose();
+        }
+        if (loop != null) {
+            loop.framePainted(front.serial);
+        }
+    }
+
+    private void paintDivider(Graphics2D g, int x, int h) {
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        g.setColor(new Color(0, 0, 0, 120));
+        g.setStroke(new BasicStroke(3));
+        g.drawLine(x, 0, x, h);
+        g.setColor(Color.WHITE);
+        g.setStroke(new BasicStroke(1));
+        g.drawLine(x, 0, x, h);
+        g.fillOval(x - 6, h / 2 - 6, 12, 12);
+        g.setFont(g.getFont().deriveFont(Font.BOLD, 13f));
+        String left = state.settings().render().mode().id();
+        label(g, left, x - 10 - g.getFontMetrics().stringWidth(left), 22);
+        label(g, "per-pixel", x + 10, 22);
+    }
+
+    private void paintLegend(Graphics2D g, double max) {
+        List<HeatMap.LegendStop> stops = HeatMap.legendStops(max);
+        int x = 14;
+        int y = 14;
+        int barW = 220;
+        int barH = 14;
+        g.setColor(new Color(0, 0, 0, 150));
+        g.fillRoundRect(x - 8, y - 8, barW + 16, barH + 44, 10, 10);
+        for (int i = 0; i < barW; i++) {
+            g.setColor(new Color(HeatMap.colour(max * i / (barW - 1), max)));
+            g.fillRect(x + i, y, 1, barH);
+        }
+        g.setColor(Color.WHITE);
+        g.setFont(g.getFont().deriveFont(11f));
+        g.drawString("0", x, y + barH + 14);
+        String end = String.format(Locale.ROOT, "%.2f px", stops.get(stops.size() - 1).pixels());
+        g.drawString(end, x + barW - g.getFontMetrics().stringWidth(end), y + barH + 14);
+        g.drawString("displacement vs per-pixel; grey: not comparable", x, y + barH + 29);
+    }
+
+    private static void label(Graphics2D g, String text, int x, int y) {
+        AffineTransform t = g.getTransform();
+        g.setColor(new Color(0, 0, 0, 140));
+        g.drawString(text, x + 1, y + 1);
+        g.setColor(Color.WHITE);
+        g.drawString(text, x, y);
+        g.setTransform(t);
+    }
+}

@@ -1,0 +1,42 @@
+package dev.trisect.ui;
+
+import dev.trisect.pipeline.RenderSettings;
+
+/**
+ * Everything the user has chosen, as one immutable value: the event thread replaces it, the render
+ * thread reads the latest one at the start of each frame, so a change takes effect on the next frame.
+ *
+ * @param render        how frames are drawn
+ * @param view          image, difference heat map, or split
+ * @param splitFraction divider position in the split view, 0..1 of the width
+ * @param compare       measure the frame against the per-pixel path (at least twice a second)
+ * @param renderScale   frame pixels per device pixel, (0, 1]
+ * @param heatmapMax    displacement at the top of the heat map's scale, pixels
+ */
+record ViewSettings(RenderSettings render, ViewKind view, double splitFraction, boolean compare,
+                    double renderScale, double heatmapMax) {
+
+    static ViewSettings defaults() {
+        return new ViewSettings(RenderSettings.defaults().withBackground(0x9DB8D3), ViewKind.IMAGE, 0.5, true, 1.0, 2.0);
+    }
+
+    ViewSettings withRender(RenderSettings r) {
+        return new ViewSettings(r, view, splitFraction, compare, renderScale, heatmapMax);
+    }
+
+    ViewSettings withView(ViewKind v) {
+        return new ViewSettings(render, v, splitFraction, compare, renderScale, heatmapMax);
+    }
+
+    ViewSettings withSplitFraction(double f) {
+        return new ViewSettings(render, view, Math.max(0, Math.min(1, f)), compare, renderScale, heatmapMax);
+    }
+
+    ViewSettings withCompare(boolean c) {
+        return new ViewSettings(render, view, splitFraction, c, renderScale, heatmapMax);
+    }
+
+    ViewSettings withRenderScale(double s) {
+        return new ViewSettings(render, view, splitFraction, compare, s, heatmapMax);
+    }
+}

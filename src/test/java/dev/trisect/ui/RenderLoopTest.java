@@ -1,0 +1,106 @@
+package dev.trisect.ui;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trisect.cli.Cli;
+import dev.trisect.metrics.Comparison;
+import dev.trisect.pipeline.RenderMode;
+import dev.trisect.scene.DemoScenes;
+import dev.trisect.tessellate.SplitPolicy;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.Test;
+
+/** The render thread without a window: frames flow, settings apply, and its comparison is the CLI's. */
+class RenderLoopTest {
+    private static double number(String json, String key) {
+        Matcher m = Pattern.compile("\"" + key + "\":(-?[0-9.eE+-]+|null)").matcher(json);
+        assertTrue(m.find(), key + " in " + json);
+        return m.group(1).equals("null") ? Double.NaN : Double.parseDouble(m.group(1));
+    }
+
+    /** Runs the loop until a measurement of a frame drawn with {@code settings} exists. */
+    private static DemoState.Measurement measure(DemoState state, ViewSettings settings) throws Exception {
+        state.settings(settings);
+        TripleBuffer buffers = new TripleBuffer();
+        RenderLoop loop = new RenderLoop(state, buffers, () -> { }, 2);
+        Thread t = new Thread(loop, "test-render");
+        t.start();
+        try {
+            long deadline = System.currentTimeMillis() + 30_000;
+            while (System.currentTimeMillis() < deadline) {
+                DemoState.Measurement m = state.measurement();
+                if (m != null && m.settings().equals(settings)) {
+                    // Frames keep flowing even though nobody paints them (the wait times out).
+                    assertTrue(state.progress().frames() >= 1);
+                    return m;
+                }
+                Thread.sleep(20);
+            }
+            throw new AssertionError("no measurement within 30 s");
+        } finally {
+            loop.stop();
+            t.join(5000);
+        }
+    }
+
+    @Test
+    void theLoopsComparisonIsWhatTheCommandLinePrintsForTheSameFrame() throws Exception {
+        DemoState state = new DemoState(DemoScenes.demo());
+        state.viewSize(320, 180);
+        ViewSettings settings = ViewSettings.defaults().withRender(ViewSettings.defaults().render()
+                .withMode(RenderMode.TESSELLATED).withBorders(true)
+                .withTessellation(ViewSettings.defaults().render().tessellation().withPolicy(SplitPolicy.ERROR)
+                        .withMaxError(0.7)));
+        DemoState.Measurement m = measure(state, settings);
+        assertEquals(320, m.width());
+        List<String> args = CliArgs.compare(state.scene(), m);
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        int status = Cli.run(new PrintWriter(out, true), new PrintWriter(err, true), args.toArray(String[]::new));
+        assertEquals(0, status, err.toString());
+        String json = out.toString();
+        Comparison c = m.comparison();
+        assertEquals(c.maxDisplacement(), number(json, "max_displacement"), 0.0);
+        assertEquals(c.p99Displacement(), number(json, "p99_displacement"), 0.0);
+        assertEquals(c.texelDifferShare(), number(json, "texel_differ_share"), 0.0);
+        assertEquals(c.psnrDb(), number(json, "psnr_db"), 0.0);
+        assertTrue(c.maxDisplacement() <= 0.7, "the error policy's bound holds in the demo too");
+    }
+
+    @Test
+    void minimizedViewDrawsNothingAndResumes() throws Exception {
+        DemoState state = new DemoState(DemoScenes.floor());
+        state.viewSize(0, 0);
+        TripleBuffer buffers = new TripleBuffer();
+        RenderLoop loop = new RenderLoop(state, buffers, () -> { }, 1);
+        Thread t = new Thread(loop, "test-render");
+        t.start();
+        try {
+            Thread.sleep(300);
+            assertEquals(0, state.progress().frames(), "no frames while there is nothing to show");
+            state.viewSize(64, 48);
+            long deadline = System.currentTimeMillis() + 10_000;
+            while (state.progress().frames() < 3 && System.currentTimeMillis() < deadline) {
+                Thread.sleep(10);
+            }
+            assertTrue(state.progress().frames() >= 3);
+            FrameSlot shown = buffers.acquire(null);
+            assertNotNull(shown);
+            assertEquals(64, shown.width());
+            state.viewSize(1, 1);
+            state.settings(state.settings().withRenderScale(0.25));
+            Thread.sleep(300);
+            shown = buffers.acquire(shown);
+            assertEquals(1, shown.width(), "a tiny view still gets a frame of at least one pixel");
+        } finally {
+            loop.stop();
+            t.join(5000);
+        }
+    }
+}
