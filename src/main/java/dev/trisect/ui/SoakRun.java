@@ -27,7 +27,9 @@ import javax.swing.SwingUtilities;
  * <ul>
  * <li>posts a task to the event thread every 20 ms and records how long each waited (the event
  * thread's responsiveness);</li>
- * <li>samples the heap after a full collection every 15 s (it should stay flat);</li>
+ * <li>every 60 s returns to one standard state (window size, settings, developer tools closed) and
+ * samples the heap after a full collection there, so the samples are comparable and their trend
+ * shows whether anything accumulates; between checkpoints it also samples the heap as it is;</li>
  * <li>counts uncaught exceptions on any thread (there should be none).</li>
  * </ul>
  * Frame rates, heap and latency are measured and reported, not asserted: they depend on the machine.
@@ -59,6 +61,11 @@ final class SoakRun {
         FrameSlot first = onEdtGet(w -> w.view().front());
         out.put("frame_size", first == null ? "none" : first.width() + "x" + first.height());
         out.put("render_threads", window.loop().threads());
+        // Let the JIT compile every path's loops before anything is measured.
+        for (RenderMode m : RenderMode.values()) {
+            onEdt(w -> w.selectMode(m));
+            Thread.sleep(2500);
+        }
         out.put("fps_dev_tools_closed", pathRates(false));
         out.put("fps_dev_tools_open_comparing", pathRates(true));
         churn(out);
@@ -84,7 +91,7 @@ final class SoakRun {
         return exceptions.get() == 0 && rendering ? 0 : 1;
     }
 
-    /** Frames per second of each path, 2 s to settle then 6 s measured. */
+    /** Frames per second of each path, 2 s to settle then 8 s measured. */
     private Map<String, Object> pathRates(boolean devTools) throws Exception {
         onEdt(w -> {
             if (w.devToolsCommand.selected() != devTools) {
@@ -97,7 +104,7 @@ final class SoakRun {
             Thread.sleep(2000);
             long f0 = window.state().progress().frames();
             long t0 = System.nanoTime();
-            Thread.sleep(6000);
+            Thread.sleep(8000);
             long f1 = window.state().progress().frames();
             rates.put(m.id(), round((f1 - f0) * 1e9 / (System.nanoTime() - t0)));
         }
@@ -132,37 +139,38 @@ final class SoakRun {
         watchdog.setDaemon(true);
         watchdog.start();
         List<Double> heap = new ArrayList<>();
-        heap.add(heapAfterGc());
+        List<Double> checkpoints = new ArrayList<>();
+        checkpoints.add(checkpoint());
         long start = System.nanoTime();
         long nextHeap = start + 15_000_000_000L;
+        long nextCheckpoint = start + 60_000_000_000L;
         long f0 = window.state().progress().frames();
         int actions = 0;
         while (System.nanoTime() - start < seconds * 1_000_000_000L) {
             act(actions++);
             Thread.sleep(300 + random.nextInt(600));
-            if (System.nanoTime() >= nextHeap) {
+            if (System.nanoTime() >= nextCheckpoint) {
+                checkpoints.add(checkpoint());
+                nextCheckpoint += 60_000_000_000L;
+                nextHeap = System.nanoTime() + 15_000_000_000L;
+            } else if (System.nanoTime() >= nextHeap) {
                 heap.add(heapAfterGc());
                 nextHeap += 15_000_000_000L;
             }
         }
-        // End in a known state, then the last heap sample.
-        onEdt(w -> {
-            w.frame().setExtendedState(Frame.NORMAL);
-            w.frame().setSize(1296, 800);
-            w.update(s -> ViewSettings.defaults());
-        });
-        Thread.sleep(2000);
-        heap.add(heapAfterGc());
+        checkpoints.add(checkpoint());
         volatileRun = false;
         watchdog.join(1000);
         double elapsed = (System.nanoTime() - start) / 1e9;
         out.put("soak_seconds", round(elapsed));
         out.put("actions", actions);
         out.put("frames_during_soak", window.state().progress().frames() - f0);
-        out.put("heap_after_gc_mb", heap.stream().map(SoakRun::round).toList());
-        out.put("heap_first_mb", round(heap.get(0)));
-        out.put("heap_last_mb", round(heap.get(heap.size() - 1)));
-        out.put("heap_max_mb", round(heap.stream().mapToDouble(Double::doubleValue).max().orElse(0)));
+        out.put("heap_checkpoints_mb", checkpoints.stream().map(SoakRun::round).toList());
+        out.put("heap_checkpoint_first_mb", round(checkpoints.get(0)));
+        out.put("heap_checkpoint_last_mb", round(checkpoints.get(checkpoints.size() - 1)));
+        out.put("heap_checkpoint_slope_mb_per_min", round(slope(checkpoints) * 100) / 100.0);
+        out.put("heap_between_checkpoints_mb", heap.stream().map(SoakRun::round).toList());
+        out.put("heap_between_max_mb", round(heap.stream().mapToDouble(Double::doubleValue).max().orElse(0)));
         out.put("edt_tasks_timed", posts.get());
         out.put("edt_max_wait_ms", worstWait.get());
         out.put("edt_p99_wait_ms", percentile(histogram, 0.99));
@@ -216,6 +224,44 @@ final class SoakRun {
                     .withMaxDepth(random.nextInt(25))))));
         }
     }
+
+    /** The standard state, a moment to settle, then the heap after a full collection. */
+    private double checkpoint() throws Exception {
+        onEdt(w -> {
+            w.frame().setExtendedState(Frame.NORMAL);
+            w.frame().setSize(STANDARD_WIDTH, STANDARD_HEIGHT);
+            if (w.devToolsCommand.selected()) {
+                w.devToolsCommand.actionPerformed(null);
+            }
+            if (w.orbitCommand.selected()) {
+                w.orbitCommand.actionPerformed(null);
+            }
+            w.update(s -> ViewSettings.defaults());
+            w.selectMode(RenderMode.TESSELLATED);
+        });
+        Thread.sleep(1500);
+        return heapAfterGc();
+    }
+
+    /** Least-squares slope per sample interval (one minute between checkpoints). */
+    private static double slope(List<Double> y) {
+        int n = y.size();
+        if (n < 2) {
+            return 0;
+        }
+        double mx = (n - 1) / 2.0;
+        double my = y.stream().mapToDouble(Double::doubleValue).average().orElse(0);
+        double num = 0;
+        double den = 0;
+        for (int i = 0; i < n; i++) {
+            num += (i - mx) * (y.get(i) - my);
+            den += (i - mx) * (i - mx);
+        }
+        return num / den;
+    }
+
+    private static final int STANDARD_WIDTH = 1296;
+    private static final int STANDARD_HEIGHT = 800;
 
     private static double heapAfterGc() {
         System.gc();
