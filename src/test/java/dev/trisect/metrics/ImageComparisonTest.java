@@ -15,6 +15,40 @@ class ImageComparisonTest {
     private static final UvFields.Ids TWO_TRIANGLES = (x, y) -> y == 23 ? 0 : x < 13 ? 1 : 2;
 
     @Test
+    void displacementsAloneEqualThoseOfTheFullComparison() {
+        int w = 57;
+        int h = 41;
+        java.util.Random rnd = new java.util.Random(5);
+        float[] ref = new float[3 * w * h];
+        float[] test = new float[3 * w * h];
+        for (int y = 0; y < h; y++) {
+            for (int x = 0; x < w; x++) {
+                int k = 3 * (y * w + x);
+                // Three regions, a hole, a projective map, and a test render off by a little noise.
+                float id = (x + y) % 19 == 0 ? 0 : x < 20 ? 1 : y < 25 ? 2 : 3;
+                double q = 1 / (1 + 0.03 * x + 0.05 * y);
+                ref[k] = (float) (40 * x * q);
+                ref[k + 1] = (float) (25 * y * q - 7);
+                ref[k + 2] = id;
+                test[k] = ref[k] + (float) (0.3 * rnd.nextGaussian());
+                test[k + 1] = ref[k + 1] + (float) (0.3 * rnd.nextGaussian());
+                test[k + 2] = rnd.nextInt(50) == 0 ? 9 : id;
+            }
+        }
+        int[] argb = new int[w * h];
+        float[] full = new float[w * h];
+        float[] alone = new float[w * h];
+        ImageComparison.compare(w, h, argb, test, argb, ref, full);
+        ImageComparison.displacements(w, h, test, ref, alone);
+        org.junit.jupiter.api.Assertions.assertArrayEquals(full, alone);
+        long defined = 0;
+        for (float d : alone) {
+            defined += Float.isNaN(d) ? 0 : 1;
+        }
+        org.junit.jupiter.api.Assertions.assertTrue(defined > w * h / 2, "most pixels have a displacement");
+    }
+
+    @Test
     void identicalRendersHaveNoError() {
         int w = 32;
         int h = 24;
