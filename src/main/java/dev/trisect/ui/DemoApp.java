@@ -72,11 +72,6 @@ public final class DemoApp implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        if (GraphicsEnvironment.isHeadless()) {
-            System.err.println("trisect: no display for the desktop demo; render headless instead: "
-                    + "java -jar trisect.jar render --scene demo --out demo.png (see render --help)");
-            return 1;
-        }
         RenderMode start = null;
         for (RenderMode m : RenderMode.values()) {
             if (m.id().equalsIgnoreCase(mode)) {
@@ -89,6 +84,19 @@ public final class DemoApp implements Callable<Integer> {
         if (!(renderScale >= 0.25 && renderScale <= 1)) {
             throw InputException.usage("--render-scale must be between 0.25 and 1, got " + renderScale);
         }
+        int n = threads == null ? Runtime.getRuntime().availableProcessors() : threads;
+        if (n < 1 || n > 256) {
+            throw InputException.usage("--threads must be between 1 and 256, got " + n);
+        }
+        if (soak != null && soak < 1) {
+            throw InputException.usage("--soak must be at least 1 second, got " + soak);
+        }
+        if (GraphicsEnvironment.isHeadless()) {
+            System.err.println("trisect: no display for the desktop demo; render headless instead: "
+                    + "java -jar trisect.jar render --scene demo --out demo.png (see render --help)");
+            return 1;
+        }
+
         Scene s = obj != null ? SceneLoader.load(obj, null, note -> System.err.println("trisect: note: " + note))
                 : DemoScenes.byName(scene).orElseThrow(() -> InputException.usage("unknown scene '" + scene
                         + "' (built-in scenes: " + String.join(", ", DemoScenes.names()) + ")"));
@@ -96,10 +104,6 @@ public final class DemoApp implements Callable<Integer> {
         RenderMode initial = start;
         state.settings(state.settings().withRenderScale(renderScale)
                 .withRender(state.settings().render().withMode(initial)));
-        int n = threads == null ? Runtime.getRuntime().availableProcessors() : threads;
-        if (n < 1 || n > 256) {
-            throw InputException.usage("--threads must be between 1 and 256, got " + n);
-        }
         AtomicReference<DemoWindow> window = new AtomicReference<>();
         AtomicReference<Throwable> failure = new AtomicReference<>();
         SwingUtilities.invokeAndWait(() -> {

@@ -20,6 +20,7 @@ final class DemoState {
     private volatile long viewSize;
     private volatile Measurement measurement;
     private volatile Progress progress = new Progress(0, 0, 0, 0, 0);
+    private volatile String problem;
 
     /** A comparison of one frame against the per-pixel path, and what it was made from. */
     record Measurement(Comparison comparison, long frame, Camera camera, ViewSettings settings, int width,
@@ -77,6 +78,17 @@ final class DemoState {
 
     void measurement(Measurement m) {
         measurement = m;
+    }
+
+    /** A problem the render thread met, for the status bar; taken once. */
+    String takeProblem() {
+        String p = problem;
+        problem = null;
+        return p;
+    }
+
+    void problem(String message) {
+        problem = message;
     }
 
     Progress progress() {

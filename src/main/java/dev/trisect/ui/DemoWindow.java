@@ -301,6 +301,10 @@ final class DemoWindow {
     }
 
     private void refreshReadouts() {
+        String problem = state.takeProblem();
+        if (problem != null) {
+            status(problem);
+        }
         DemoState.Progress p = state.progress();
         RenderSettings r = state.settings().render();
         FrameSlot f = view.front();

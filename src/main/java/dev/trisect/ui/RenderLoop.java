@@ -98,7 +98,16 @@ final class RenderLoop implements Runnable {
                     fh = Math.max(1, (int) (fh * shrink));
                 }
                 long frameStart = System.nanoTime();
-                drawFrame(settings, fw, fh, dt);
+                try {
+                    drawFrame(settings, fw, fh, dt);
+                } catch (RuntimeException | OutOfMemoryError e) {
+                    // Keep the demo alive and say what happened; the next frame starts afresh.
+                    state.problem("rendering failed: " + DemoWindow.message(e));
+                    back = null;
+                    reference = null;
+                    sleep(200);
+                    continue;
+                }
                 double frameMs = (System.nanoTime() - frameStart) / 1e6;
                 long serial = back.serial;
                 back = buffers.publish(back);

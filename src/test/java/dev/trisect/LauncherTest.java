@@ -1,0 +1,61 @@
+package dev.trisect;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+
+/** The entry point as a user starts it, in a separate JVM without a display. */
+class LauncherTest {
+    private record Run(int status, String out, String err) {
+    }
+
+    private static Run launch(String... args) throws IOException, InterruptedException {
+        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"), Trisect.class.getName()));
+        cmd.addAll(List.of(args));
+        ProcessBuilder pb = new ProcessBuilder(cmd);
+        pb.environment().remove("DISPLAY");
+        Process p = pb.start();
+        // Hang guard only.
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS), "the launcher ended");
+        return new Run(p.exitValue(), new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8),
+                new String(p.getErrorStream().readAllBytes(), StandardCharsets.UTF_8));
+    }
+
+    @Test
+    void withoutADisplayTheDemoSaysOneLinePointingToRender() throws Exception {
+        Run r = launch();
+        assertEquals(1, r.status());
+        String err = r.err().strip();
+        assertFalse(err.contains("\n") || err.contains("Exception"), "one clean line: " + r.err());
+        assertTrue(err.contains("no display") && err.contains("render"), err);
+    }
+
+    @Test
+    void demoOptionsAreCheckedAndHelpWorksWithoutADisplay() throws Exception {
+        Run help = launch("demo", "--help");
+        assertEquals(0, help.status(), help.err());
+        assertTrue(help.out().contains("--soak") && help.out().contains("--render-scale"), help.out());
+        Run bad = launch("demo", "--render-scale", "5");
+        assertEquals(2, bad.status(), bad.err());
+        assertEquals("trisect: --render-scale must be between 0.25 and 1, got 5.0", bad.err().strip());
+    }
+
+    @Test
+    void argumentsRunTheCommandLine() throws Exception {
+        Run r = launch("render", "--list-scenes");
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.out().contains("floor"));
+        Run bad = launch("render", "--size", "0x0");
+        assertEquals(2, bad.status());
+        assertTrue(bad.err().strip().startsWith("trisect render:"), bad.err());
+    }
+}
