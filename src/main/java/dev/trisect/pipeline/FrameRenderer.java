@@ -41,6 +41,15 @@ public final class FrameRenderer implements AutoCloseable {
     private static final int BATCH = 1024;
     /** Smallest chunk worth a task of its own. */
     private static final int MIN_CHUNK = 2048;
+    /**
+     * Scratch that has been more than this many times larger than a frame needed, for
+     * {@link #TRIM_FRAMES} frames in a row, shrinks to twice the need: memory taken by one extreme
+     * frame goes back to the collector within about a second, while steady frames allocate nothing.
+     */
+    static final int TRIM_FACTOR = 4;
+    static final int TRIM_FRAMES = 60;
+    /** Storage below this many triangles is never worth trimming. */
+    static final int TRIM_FLOOR = 16384;
 
     private final int threads;
     private final ExecutorService pool;
@@ -180,6 +189,7 @@ public final class FrameRenderer implements AutoCloseable {
             int to = Math.min(triangles, from + perChunk);
             chunk.geometry(w, mesh, textures, clip, invalidPosition, from, to, settings, viewport, gx, gy, split);
             chunk.bin(bands, height);
+            chunk.trimIfOversized();
         });
         return chunkCount;
     }
@@ -245,6 +255,15 @@ public final class FrameRenderer implements AutoCloseable {
                         && Double.isFinite(clip[4 * i + 2]) && Double.isFinite(clip[4 * i + 3]));
             }
         });
+    }
+
+    /** Triangles the chunks' screen-triangle storage holds room for, for tests of trimming. */
+    long retainedTriangleCapacity() {
+        long total = 0;
+        for (Chunk c : chunks) {
+            total += c.out.capacity() + c.binItems.length / 2;
+        }
+        return total;
     }
 
     private void ensureChunks(int count) {
@@ -354,6 +373,23 @@ public final class FrameRenderer implements AutoCloseable {
         long tessellateNanos;
         private int currentId;
         private int currentMaterial;
+        private int oversizedFrames;
+        /** Band-list entries the last frame used. */
+        private int lastBinItems;
+
+        /** Gives back storage that has long been far larger than frames need (see TRIM_FACTOR). */
+        void trimIfOversized() {
+            int need = Math.max(out.count(), TRIM_FLOOR / TRIM_FACTOR);
+            boolean oversized = out.capacity() > TRIM_FLOOR && out.capacity() > TRIM_FACTOR * need;
+            oversizedFrames = oversized ? oversizedFrames + 1 : 0;
+            if (oversizedFrames >= TRIM_FRAMES) {
+                oversizedFrames = 0;
+                out.shrinkTo(2 * need);
+                binItems = new int[Math.min(binItems.length, Math.max(2 * lastBinItems, 2 * need))];
+                firstBand = new int[Math.min(firstBand.length, 2 * need)];
+                lastBand = new int[firstBand.length];
+            }
+        }
 
         void geometry(Worker w, Mesh mesh, Texture[] textures, double[] clip, boolean[] invalidPosition,
                       int from, int to, RenderSettings settings, Viewport viewport, double gx, double gy,
@@ -543,6 +579,7 @@ public final class FrameRenderer implements AutoCloseable {
             if (binItems.length < total) {
                 binItems = new int[Math.max(total, 2 * binItems.length)];
             }
+            lastBinItems = total;
             // Fill each band's list in triangle order, using binStart as moving cursors, then restore.
             for (int i = 0; i < n; i++) {
                 for (int b = firstBand[i]; b <= lastBand[i]; b++) {

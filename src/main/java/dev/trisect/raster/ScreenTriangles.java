@@ -9,7 +9,7 @@ import java.util.Arrays;
  * unsnapped in pixels (for attribute planes, so snapping never bends the texture mapping), and per
  * corner {@code 1/w} (view-space units^-1) and texel coordinates s, t. Plus the input triangle's index
  * (for the UV output) and its material (the texture to sample). The arrays grow as needed and are
- * reused from frame to frame.
+ * reused from frame to frame; {@link #shrinkTo} gives storage back after a spike.
  */
 public final class ScreenTriangles {
     /** Ints per triangle in {@link #fixed()}: x0, y0, x1, y1, x2, y2. */
@@ -34,6 +34,27 @@ public final class ScreenTriangles {
     /** Removes all triangles, keeping the storage. */
     public void clear() {
         count = 0;
+    }
+
+    /** How many triangles fit before the storage must grow. */
+    public int capacity() {
+        return ids.length;
+    }
+
+    /**
+     * Reallocates the storage to hold {@code triangles} (at least the current count), giving the rest
+     * back to the garbage collector: for after a spike in the number of triangles.
+     */
+    public void shrinkTo(int triangles) {
+        int n = Math.max(Math.max(triangles, count), 1);
+        if (n >= ids.length) {
+            return;
+        }
+        fixed = Arrays.copyOf(fixed, n * FIXED_STRIDE);
+        screen = Arrays.copyOf(screen, n * SCREEN_STRIDE);
+        attributes = Arrays.copyOf(attributes, n * ATTRIBUTE_STRIDE);
+        ids = Arrays.copyOf(ids, n);
+        materials = Arrays.copyOf(materials, n);
     }
 
     /** Snapped corners, sub-pixel units. Read-only outside this package. */
