@@ -47,7 +47,7 @@ public final class FrameRenderer implements AutoCloseable {
      * frame goes back to the collector within about a second, while steady frames allocate nothing.
      */
     static final int TRIM_FACTOR = 4;
-    static final int TRIM_FRAMES = 60;
+    public static final int TRIM_FRAMES = 60;
     /** Storage below this many triangles is never worth trimming. */
     static final int TRIM_FLOOR = 16384;
 

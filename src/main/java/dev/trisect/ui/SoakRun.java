@@ -1,5 +1,6 @@
 package dev.trisect.ui;
 
+import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.RenderMode;
 import dev.trisect.tessellate.SplitPolicy;
 import java.awt.Frame;
@@ -239,7 +240,23 @@ final class SoakRun {
             w.update(s -> ViewSettings.defaults());
             w.selectMode(RenderMode.TESSELLATED);
         });
-        Thread.sleep(1500);
+        // Settled means: frames of the standard size are on screen, and well over the renderer's trim
+        // window of ordinary frames has passed since (so no buffer of an earlier state is still held).
+        long deadline = System.currentTimeMillis() + 20_000;
+        long settledFrom = -1;
+        while (System.currentTimeMillis() < deadline) {
+            Thread.sleep(100);
+            FrameSlot front = onEdtGet(w -> w.view().front());
+            boolean standard = front != null && front.view == ViewKind.IMAGE
+                    && onEdtGet(w -> front.width() == w.state().viewWidth() && front.height() == w.state().viewHeight());
+            if (!standard) {
+                settledFrom = -1;
+            } else if (settledFrom < 0) {
+                settledFrom = front.serial;
+            } else if (front.serial - settledFrom > 3 * FrameRenderer.TRIM_FRAMES) {
+                break;
+            }
+        }
         return heapAfterGc();
     }
 
@@ -264,6 +281,7 @@ final class SoakRun {
     private static final int STANDARD_HEIGHT = 800;
 
     private static double heapAfterGc() {
+        System.gc();
         System.gc();
         return ManagementFactory.getMemoryMXBean().getHeapMemoryUsage().getUsed() / 1048576.0;
     }
