@@ -115,11 +115,6 @@ public final class Mat4 {
         return new Vec3(o[0] / o[3], o[1] / o[3], o[2] / o[3]);
     }
 
-    /** The 16 elements in column-major order (a copy). */
-    public double[] toColumnMajor() {
-        return m.clone();
-    }
-
     @Override
     public boolean equals(Object o) {
         return o instanceof Mat4 other && Arrays.equals(m, other.m);

@@ -482,17 +482,4 @@ public final class Rasterizer {
         }
         return written;
     }
-
-    // Accessors for the overlay, which reuses the setup's depth plane.
-    double qBase() {
-        return qBase;
-    }
-
-    double qDx() {
-        return qDx;
-    }
-
-    double qDy() {
-        return qDy;
-    }
 }

@@ -66,9 +66,4 @@ public record Camera(Vec3 eye, Vec3 target, Vec3 up, double fovY, double near, d
     public Mat4 viewProjection(Viewport viewport) {
         return projection(viewport.aspect()).mul(view());
     }
-
-    /** A copy at another position and target. */
-    public Camera moved(Vec3 newEye, Vec3 newTarget) {
-        return new Camera(newEye, newTarget, up, fovY, near, far);
-    }
 }

@@ -19,7 +19,7 @@ final class DemoState {
     /** View size in device pixels, width in the high half; 0 when hidden or minimized. */
     private volatile long viewSize;
     private volatile Measurement measurement;
-    private volatile Progress progress = new Progress(0, 0, 0, 0, 0);
+    private volatile Progress progress = new Progress(0, 0, 0);
     private volatile String problem;
 
     /** A comparison of one frame against the per-pixel path, and what it was made from. */
@@ -28,10 +28,10 @@ final class DemoState {
     }
 
     /**
-     * The render loop's pace: frames so far, frames per second over the last second, milliseconds of
-     * the last comparison, and the render and paint times of the latest frame.
+     * The render loop's pace: frames so far, frames per second over the last second, and milliseconds
+     * the last comparison took.
      */
-    record Progress(long frames, double fps, double compareMs, double frameMs, long sceneSerial) {
+    record Progress(long frames, double fps, double compareMs) {
     }
 
     DemoState(Scene scene) {

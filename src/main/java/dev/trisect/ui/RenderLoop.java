@@ -97,7 +97,6 @@ final class RenderLoop implements Runnable {
                     fw = Math.max(1, (int) (fw * shrink));
                     fh = Math.max(1, (int) (fh * shrink));
                 }
-                long frameStart = System.nanoTime();
                 try {
                     drawFrame(settings, fw, fh, dt);
                 } catch (RuntimeException | OutOfMemoryError e) {
@@ -108,7 +107,6 @@ final class RenderLoop implements Runnable {
                     sleep(200);
                     continue;
                 }
-                double frameMs = (System.nanoTime() - frameStart) / 1e6;
                 long serial = back.serial;
                 back = buffers.publish(back);
                 repaint.run();
@@ -118,7 +116,7 @@ final class RenderLoop implements Runnable {
                     secondStart = now;
                     secondFrames = 0;
                 }
-                state.progress(new DemoState.Progress(frames, fps, compareMs, frameMs, sceneSerial));
+                state.progress(new DemoState.Progress(frames, fps, compareMs));
                 awaitPaint(serial);
             }
         } finally {
