@@ -18,9 +18,7 @@ public final class BorderOverlay {
     /** Relative 1/w tolerance: a line pixel may lie this much behind the stored surface and still show. */
     private static final double DEPTH_TOLERANCE = 1.0 / 512;
 
-    private double qBase;
-    private double qDx;
-    private double qDy;
+    private final Plane depth = new Plane();
 
     /**
      * Outlines triangles {@code order[from..to)} within pixels {@code [x0, x1) x [y0, y1)}.
@@ -62,11 +60,7 @@ public final class BorderOverlay {
         if (det == 0 || !Double.isFinite(det)) {
             return false;
         }
-        double dq1 = at[a + 3] - at[a];
-        double dq2 = at[a + 6] - at[a];
-        qDx = (dq1 * ey2 - dq2 * ey1) / det;
-        qDy = (dq2 * ex1 - dq1 * ex2) / det;
-        qBase = at[a] + qDx * (0.5 - x0) + qDy * (0.5 - y0);
+        depth.fit(x0, y0, ex1, ey1, ex2, ey2, 1 / det, at[a], at[a + 3], at[a + 6]);
         return true;
     }
 
@@ -118,7 +112,7 @@ public final class BorderOverlay {
 
     private int plot(Framebuffer frame, int x, int y) {
         int i = y * frame.width() + x;
-        double q = qBase + qDx * x + qDy * y;
+        double q = depth.base + depth.dx * x + depth.dy * y;
         if (q < frame.depth()[i] * (1 - DEPTH_TOLERANCE)) {
             return 0;
         }

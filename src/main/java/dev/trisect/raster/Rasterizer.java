@@ -8,8 +8,8 @@ import dev.trisect.texture.Texture;
  * <p>Coverage is exact integer arithmetic on snapped corners: a pixel belongs to a triangle when its
  * centre is inside, and a centre exactly on an edge goes to the triangle for which that edge is a top
  * or a left edge (image coordinates, y down). Each row's covered span is solved from the three edge
- * functions directly instead of testing every pixel of the bounding box; the division is estimated in
- * floating point and then corrected with the exact integer test, so the span is exactly the set of
+ * functions instead of testing every pixel of the bounding box: each edge's bound is stepped from row
+ * to row with integer additions (an exact DDA, set up per triangle), so the span is exactly the set of
  * centres that a per-pixel test would accept.
  *
  * <p>Because every decision is a function of the triangle and the pixel alone, filling the frame in
@@ -36,15 +36,9 @@ public final class Rasterizer {
      */
     private int[] spans = new int[64];
     // Attribute planes over pixel centres: value = base + dx * x + dy * y for pixel (x, y).
-    private double qBase;
-    private double qDx;
-    private double qDy;
-    private double sBase;
-    private double sDx;
-    private double sDy;
-    private double tBase;
-    private double tDx;
-    private double tDy;
+    private final Plane qPlane = new Plane();
+    private final Plane sPlane = new Plane();
+    private final Plane tPlane = new Plane();
     /** Whether the texel coordinates are small enough for 32.32 fixed point (|s|, |t| &lt; 2^30). */
     private boolean fixedPointSafe;
 
@@ -200,25 +194,9 @@ public final class Rasterizer {
             t1 *= q1;
             t2 *= q2;
         }
-        // Pixel (x, y) has its centre at (x + 0.5, y + 0.5); plane value there is
-        // v0 + dx * (x + 0.5 - x0) + dy * (y + 0.5 - y0).
-        double ox = 0.5 - x0;
-        double oy = 0.5 - y0;
-        double dq1 = q1 - q0;
-        double dq2 = q2 - q0;
-        qDx = (dq1 * ey2 - dq2 * ey1) * inv;
-        qDy = (dq2 * ex1 - dq1 * ex2) * inv;
-        qBase = q0 + qDx * ox + qDy * oy;
-        double ds1 = s1 - s0;
-        double ds2 = s2 - s0;
-        sDx = (ds1 * ey2 - ds2 * ey1) * inv;
-        sDy = (ds2 * ex1 - ds1 * ex2) * inv;
-        sBase = s0 + sDx * ox + sDy * oy;
-        double dt1 = t1 - t0;
-        double dt2 = t2 - t0;
-        tDx = (dt1 * ey2 - dt2 * ey1) * inv;
-        tDy = (dt2 * ex1 - dt1 * ex2) * inv;
-        tBase = t0 + tDx * ox + tDy * oy;
+        qPlane.fit(x0, y0, ex1, ey1, ex2, ey2, inv, q0, q1, q2);
+        sPlane.fit(x0, y0, ex1, ey1, ex2, ey2, inv, s0, s1, s2);
+        tPlane.fit(x0, y0, ex1, ey1, ex2, ey2, inv, t0, t1, t2);
     }
 
     /**
@@ -370,6 +348,15 @@ public final class Rasterizer {
     }
 
     private long spans(Framebuffer frame, Texture texture, int uvId, boolean perspective) {
+        double qBase = qPlane.base;
+        double qDx = qPlane.dx;
+        double qDy = qPlane.dy;
+        double sBase = sPlane.base;
+        double sDx = sPlane.dx;
+        double sDy = sPlane.dy;
+        double tBase = tPlane.base;
+        double tDx = tPlane.dx;
+        double tDy = tPlane.dy;
         int width = frame.width();
         int[] color = frame.color();
         float[] depth = frame.depth();
@@ -434,6 +421,15 @@ public final class Rasterizer {
      * Needs |s|, |t| &lt; 2^30 over the triangle.
      */
     private long spansAffineFixed(Framebuffer frame, Texture texture, int uvId) {
+        double qBase = qPlane.base;
+        double qDx = qPlane.dx;
+        double qDy = qPlane.dy;
+        double sBase = sPlane.base;
+        double sDx = sPlane.dx;
+        double sDy = sPlane.dy;
+        double tBase = tPlane.base;
+        double tDx = tPlane.dx;
+        double tDy = tPlane.dy;
         int width = frame.width();
         int[] color = frame.color();
         float[] depth = frame.depth();
