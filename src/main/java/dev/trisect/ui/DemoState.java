@@ -21,6 +21,8 @@ final class DemoState {
     private volatile Measurement measurement;
     private volatile Progress progress = new Progress(0, 0, 0);
     private volatile String problem;
+    /** Whether the developer tools are showing, so that their numbers are worth measuring. */
+    private volatile boolean toolsOpen;
 
     /** A comparison of one frame against the per-pixel path, and what it was made from. */
     record Measurement(Comparison comparison, long frame, Camera camera, ViewSettings settings, int width,
@@ -78,6 +80,14 @@ final class DemoState {
 
     void measurement(Measurement m) {
         measurement = m;
+    }
+
+    boolean toolsOpen() {
+        return toolsOpen;
+    }
+
+    void toolsOpen(boolean open) {
+        toolsOpen = open;
     }
 
     /** A problem the render thread met, for the status bar; taken once. */

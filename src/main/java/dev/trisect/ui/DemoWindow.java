@@ -293,11 +293,13 @@ final class DemoWindow {
             devTools.setVisible(false);
         }
         devToolsCommand.show(on);
+        state.toolsOpen(on);
     }
 
     /** Called when the developer tools window is closed by its own close button. */
     void devToolsClosed() {
         devToolsCommand.show(false);
+        state.toolsOpen(false);
     }
 
     private void refreshReadouts() {

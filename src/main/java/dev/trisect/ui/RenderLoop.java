@@ -17,7 +17,8 @@ import dev.trisect.scene.Scene;
  *
  * <p>Per frame it reads the latest {@link ViewSettings}, moves the camera by the input gathered since
  * the last frame, draws, and — for the difference and split views, or when a comparison is due (at
- * least twice a second) — also draws the per-pixel path with UV output and measures the difference.
+ * least twice a second while the developer tools are open) — also draws the per-pixel path with UV
+ * output and measures the difference.
  * It then waits until the event thread has shown the frame (at most a short while), so it never
  * runs more than one frame ahead of the screen nor starves the event thread of processor time.
  */
@@ -139,7 +140,8 @@ final class RenderLoop implements Runnable {
             back = new FrameSlot(fw, fh);
         }
         long now = System.nanoTime();
-        boolean compareDue = settings.compare() && now - lastCompare >= COMPARE_INTERVAL_NANOS;
+        // Measure only while someone can read the numbers: the developer tools are open.
+        boolean compareDue = settings.compare() && state.toolsOpen() && now - lastCompare >= COMPARE_INTERVAL_NANOS;
         boolean needReference = settings.view() != ViewKind.IMAGE || compareDue;
         Framebuffer fb = back.frame;
         fb.recordUv(needReference);

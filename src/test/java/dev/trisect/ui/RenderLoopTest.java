@@ -27,6 +27,7 @@ class RenderLoopTest {
     /** Runs the loop until a measurement of a frame drawn with {@code settings} exists. */
     private static DemoState.Measurement measure(DemoState state, ViewSettings settings) throws Exception {
         state.settings(settings);
+        state.toolsOpen(true);
         TripleBuffer buffers = new TripleBuffer();
         RenderLoop loop = new RenderLoop(state, buffers, () -> { }, 2);
         Thread t = new Thread(loop, "test-render");
