@@ -11,7 +11,6 @@ import java.awt.RenderingHints;
 import java.awt.event.MouseAdapter;
 import java.awt.event.MouseEvent;
 import java.awt.event.MouseWheelEvent;
-import java.awt.geom.AffineTransform;
 import java.util.List;
 import java.util.Locale;
 import java.util.function.DoubleConsumer;
@@ -43,7 +42,6 @@ final class ViewPanel extends JComponent {
         setPreferredSize(new Dimension(1280, 720));
         setOpaque(true);
         setFocusable(true);
-        setToolTipText(null);
         MouseAdapter mouse = new MouseAdapter() {
             @Override
             public void mousePressed(MouseEvent e) {
@@ -161,11 +159,9 @@ final class ViewPanel extends JComponent {
     }
 
     private static void label(Graphics2D g, String text, int x, int y) {
-        AffineTransform t = g.getTransform();
         g.setColor(new Color(0, 0, 0, 140));
         g.drawString(text, x + 1, y + 1);
         g.setColor(Color.WHITE);
         g.drawString(text, x, y);
-        g.setTransform(t);
     }
 }
