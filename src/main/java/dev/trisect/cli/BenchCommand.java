@@ -1,6 +1,7 @@
 package dev.trisect.cli;
 
 import dev.trisect.base.InputException;
+import dev.trisect.base.JsonObject;
 import dev.trisect.io.ObjWriter;
 import dev.trisect.math.Mat4;
 import dev.trisect.math.Vec3;
@@ -110,9 +111,16 @@ final class BenchCommand extends SceneCommand {
         double mean = Arrays.stream(ms).average().orElse(Double.NaN);
         double p95 = sorted[Math.min(sorted.length - 1, (int) Math.ceil(sorted.length * 0.95) - 1)];
         if (json) {
-            return String.format(Locale.ROOT, "{\"path\":\"%s\",\"size\":\"%s\",\"frames\":%d,\"median_ms\":%.3f,"
-                    + "\"mean_ms\":%.3f,\"p95_ms\":%.3f,\"fps\":%.1f,\"pieces\":%d}", name, frame.size, ms.length,
-                    median, mean, p95, 1000 / median, pieces);
+            return new JsonObject()
+                    .put("path", name)
+                    .put("size", frame.size.toString())
+                    .put("frames", ms.length)
+                    .put("median_ms", median, 3)
+                    .put("mean_ms", mean, 3)
+                    .put("p95_ms", p95, 3)
+                    .put("fps", 1000 / median, 1)
+                    .put("pieces", pieces)
+                    .toString();
         }
         return String.format(Locale.ROOT, "%-12s %10.3f %10.3f %10.3f %8.1f %10d", name, median, mean, p95,
                 1000 / median, pieces);
@@ -158,9 +166,14 @@ final class BenchCommand extends SceneCommand {
             }
             double ms = Double.parseDouble(m.group(1));
             if (json) {
-                return String.format(Locale.ROOT, "{\"path\":\"glref-llvmpipe\",\"size\":\"%s\",\"frames\":%d,"
-                        + "\"mean_ms\":%.3f,\"fps\":%.1f,\"threads\":%d}", frame.size, frames + warmup, ms, 1000 / ms,
-                        threads);
+                return new JsonObject()
+                        .put("path", "glref-llvmpipe")
+                        .put("size", frame.size.toString())
+                        .put("frames", frames + warmup)
+                        .put("mean_ms", ms, 3)
+                        .put("fps", 1000 / ms, 1)
+                        .put("threads", threads)
+                        .toString();
             }
             return String.format(Locale.ROOT, "%-12s %10s %10.3f %10s %8.1f %10s  (Mesa llvmpipe, LP_NUM_THREADS=%d, "
                     + "mean of %d frames incl. glFinish)", "glref", "-", ms, "-", 1000 / ms, "-", threads, frames + warmup);

@@ -1,5 +1,6 @@
 package dev.trisect.cli;
 
+import dev.trisect.base.JsonObject;
 import dev.trisect.io.ImageFiles;
 import dev.trisect.metrics.Comparison;
 import dev.trisect.metrics.HeatMap;
@@ -11,7 +12,6 @@ import dev.trisect.raster.Framebuffer;
 import dev.trisect.scene.Camera;
 import dev.trisect.scene.Scene;
 import java.nio.file.Path;
-import java.util.Locale;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -76,8 +76,10 @@ final class CompareCommand extends SceneCommand {
         if (out != null) {
             ImageFiles.write(out, w, h, test.color());
         }
-        common.out().println(String.format(Locale.ROOT, "{\"mode\":\"%s\",\"against\":\"%s\",", path.mode.id(),
-                against.id()) + c.toJson().substring(1));
+        common.out().println(new JsonObject()
+                .put("mode", path.mode.id())
+                .put("against", against.id())
+                .putAll(c.json()));
         common.out().flush();
         return 0;
     }

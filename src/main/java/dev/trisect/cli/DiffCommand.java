@@ -1,6 +1,7 @@
 package dev.trisect.cli;
 
 import dev.trisect.base.InputException;
+import dev.trisect.base.JsonObject;
 import dev.trisect.io.ImageFiles;
 import dev.trisect.io.Pfm;
 import dev.trisect.metrics.Comparison;
@@ -9,7 +10,6 @@ import dev.trisect.metrics.ImageComparison;
 import dev.trisect.texture.Texture;
 import dev.trisect.texture.TextureReader;
 import java.nio.file.Path;
-import java.util.Locale;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -78,8 +78,10 @@ final class DiffCommand implements Callable<Integer> {
             HeatMap.render(displacement, ua.data(), ub.data(), w, h, heatmapMax, argb);
             ImageFiles.write(heatmap, w, h, argb);
         }
-        common.out().println(String.format(Locale.ROOT, "{\"colour_differ_pixels\":%d,\"colour_differ_share\":%s,",
-                differ, Double.toString((double) differ / (w * h))) + c.toJson().substring(1));
+        common.out().println(new JsonObject()
+                .put("colour_differ_pixels", differ)
+                .put("colour_differ_share", (double) differ / (w * h))
+                .putAll(c.json()));
         common.out().flush();
         return 0;
     }

@@ -1,5 +1,7 @@
 package dev.trisect.metrics;
 
+import dev.trisect.base.JsonObject;
+
 /**
  * How far a test render is from a reference render of the same scene and size, as measured by
  * {@link ImageComparison#compare}.
@@ -48,46 +50,32 @@ public record Comparison(
         double psnrDb) {
 
     /**
-     * One line of JSON (no trailing newline) with the components under snake_case keys in declaration
-     * order, for example {@code {"width":1280,"height":720,"compared_pixels":...,"psnr_db":null}}.
-     * Non-finite numbers (NaN, infinities) are written as {@code null}, as JSON has no literal for them.
+     * The components as a JSON object under snake_case keys in declaration order, for example
+     * {@code {"width":1280,"height":720,"compared_pixels":...,"psnr_db":null}}. Non-finite numbers (NaN,
+     * infinities) are written as {@code null}, as JSON has no literal for them.
      *
-     * @return the JSON object text
+     * @return the JSON object
      */
+    public JsonObject json() {
+        return new JsonObject()
+                .put("width", width)
+                .put("height", height)
+                .put("compared_pixels", comparedPixels)
+                .put("other_pixels", otherPixels)
+                .put("max_texel_error", maxTexelError)
+                .put("p99_texel_error", p99TexelError)
+                .put("mean_texel_error", meanTexelError)
+                .put("max_displacement", maxDisplacement)
+                .put("p99_displacement", p99Displacement)
+                .put("mean_displacement", meanDisplacement)
+                .put("displacement_pixels", displacementPixels)
+                .put("texel_differ_share", texelDifferShare)
+                .put("colour_rmse", colourRmse)
+                .put("psnr_db", psnrDb);
+    }
+
+    /** {@link #json()} as one line (no trailing newline). */
     public String toJson() {
-        StringBuilder json = new StringBuilder(512).append('{');
-        field(json, "width", width);
-        field(json, "height", height);
-        field(json, "compared_pixels", comparedPixels);
-        field(json, "other_pixels", otherPixels);
-        field(json, "max_texel_error", maxTexelError);
-        field(json, "p99_texel_error", p99TexelError);
-        field(json, "mean_texel_error", meanTexelError);
-        field(json, "max_displacement", maxDisplacement);
-        field(json, "p99_displacement", p99Displacement);
-        field(json, "mean_displacement", meanDisplacement);
-        field(json, "displacement_pixels", displacementPixels);
-        field(json, "texel_differ_share", texelDifferShare);
-        field(json, "colour_rmse", colourRmse);
-        field(json, "psnr_db", psnrDb);
-        return json.append('}').toString();
-    }
-
-    private static void field(StringBuilder json, String key, double value) {
-        key(json, key);
-        // Double.toString gives a valid JSON number for every finite double ("1.0", "2.5E-4").
-        json.append(Double.isFinite(value) ? Double.toString(value) : "null");
-    }
-
-    private static void field(StringBuilder json, String key, int value) {
-        key(json, key);
-        json.append(value);
-    }
-
-    private static void key(StringBuilder json, String key) {
-        if (json.length() > 1) {
-            json.append(',');
-        }
-        json.append('"').append(key).append("\":");
+        return json().toString();
     }
 }

@@ -1,6 +1,6 @@
 package dev.trisect.pipeline;
 
-import java.util.Locale;
+import dev.trisect.base.JsonObject;
 
 /**
  * What one frame did. Times are wall-clock nanoseconds per stage.
@@ -36,17 +36,34 @@ public record FrameStats(long trianglesIn, long culledBackFace, long culledFrust
         return culledBackFace + culledFrustum + culledDegenerate;
     }
 
-    /** One line of JSON, snake_case keys, times in milliseconds. */
+    /** The statistics as a JSON object: snake_case keys in this order, times in milliseconds. */
+    public JsonObject json() {
+        return new JsonObject()
+                .put("triangles_in", trianglesIn)
+                .put("culled", culled())
+                .put("culled_back_face", culledBackFace)
+                .put("culled_frustum", culledFrustum)
+                .put("culled_degenerate", culledDegenerate)
+                .put("skipped_invalid", skippedInvalid)
+                .put("clipped", clipped)
+                .put("pieces", pieces)
+                .put("pieces_off_screen", piecesOffScreen)
+                .put("splits", splits)
+                .put("deepest_split", deepestSplit)
+                .put("caps_reached", capsReached)
+                .put("pixels_written", pixelsWritten)
+                .put("threads", threads)
+                .put("ms", new JsonObject()
+                        .put("transform", transformNanos / 1e6, 3)
+                        .put("clip", clipNanos / 1e6, 3)
+                        .put("tessellate", tessellateNanos / 1e6, 3)
+                        .put("raster", rasterNanos / 1e6, 3)
+                        .put("overlay", overlayNanos / 1e6, 3)
+                        .put("total", totalNanos / 1e6, 3));
+    }
+
+    /** {@link #json()} as one line. */
     public String toJson() {
-        return String.format(Locale.ROOT,
-                "{\"triangles_in\":%d,\"culled\":%d,\"culled_back_face\":%d,\"culled_frustum\":%d,"
-                        + "\"culled_degenerate\":%d,\"skipped_invalid\":%d,\"clipped\":%d,\"pieces\":%d,"
-                        + "\"pieces_off_screen\":%d,\"splits\":%d,\"deepest_split\":%d,\"caps_reached\":%d,"
-                        + "\"pixels_written\":%d,\"threads\":%d,\"ms\":{\"transform\":%.3f,\"clip\":%.3f,\"tessellate\":%.3f,"
-                        + "\"raster\":%.3f,\"overlay\":%.3f,\"total\":%.3f}}",
-                trianglesIn, culled(), culledBackFace, culledFrustum, culledDegenerate, skippedInvalid, clipped,
-                pieces, piecesOffScreen, splits, deepestSplit, capsReached, pixelsWritten, threads,
-                transformNanos / 1e6, clipNanos / 1e6, tessellateNanos / 1e6, rasterNanos / 1e6,
-                overlayNanos / 1e6, totalNanos / 1e6);
+        return json().toString();
     }
 }

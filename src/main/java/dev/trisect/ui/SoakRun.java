@@ -1,5 +1,6 @@
 package dev.trisect.ui;
 
+import dev.trisect.base.JsonObject;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.RenderMode;
 import dev.trisect.tessellate.SplitPolicy;
@@ -12,9 +13,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.Random;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
@@ -56,7 +55,7 @@ final class SoakRun {
                 exceptionLines.add(t.getName() + ": " + e);
             }
         });
-        Map<String, Object> out = new LinkedHashMap<>();
+        JsonObject out = new JsonObject();
         onEdt(w -> w.frame().setSize(w.frame().getWidth(), w.frame().getHeight()));
         Thread.sleep(1500);
         FrameSlot first = onEdtGet(w -> w.view().front());
@@ -80,7 +79,7 @@ final class SoakRun {
         boolean rendering = window.state().progress().frames() > framesBefore;
         out.put("still_rendering", rendering);
         onEdt(w -> w.frame().dispatchEvent(new WindowEvent(w.frame(), WindowEvent.WINDOW_CLOSING)));
-        String json = json(out);
+        String json = out.toString();
         System.out.println(json);
         if (report != null) {
             try {
@@ -93,13 +92,13 @@ final class SoakRun {
     }
 
     /** Frames per second of each path, 2 s to settle then 8 s measured. */
-    private Map<String, Object> pathRates(boolean devTools) throws Exception {
+    private JsonObject pathRates(boolean devTools) throws Exception {
         onEdt(w -> {
             if (w.devToolsCommand.selected() != devTools) {
                 w.devToolsCommand.actionPerformed(null);
             }
         });
-        Map<String, Object> rates = new LinkedHashMap<>();
+        JsonObject rates = new JsonObject();
         for (RenderMode m : RenderMode.values()) {
             onEdt(w -> w.selectMode(m));
             Thread.sleep(2000);
@@ -112,7 +111,7 @@ final class SoakRun {
         return rates;
     }
 
-    private void churn(Map<String, Object> out) throws Exception {
+    private void churn(JsonObject out) throws Exception {
         AtomicLong worstWait = new AtomicLong();
         AtomicLong over100 = new AtomicLong();
         AtomicLong posts = new AtomicLong();
@@ -312,26 +311,5 @@ final class SoakRun {
 
     private static double round(double v) {
         return Math.round(v * 10) / 10.0;
-    }
-
-    private static String json(Object v) {
-        if (v instanceof Map<?, ?> m) {
-            StringBuilder b = new StringBuilder("{");
-            for (Map.Entry<?, ?> e : m.entrySet()) {
-                b.append(b.length() > 1 ? "," : "").append('"').append(e.getKey()).append("\":").append(json(e.getValue()));
-            }
-            return b.append('}').toString();
-        }
-        if (v instanceof List<?> l) {
-            StringBuilder b = new StringBuilder("[");
-            for (Object o : l) {
-                b.append(b.length() > 1 ? "," : "").append(json(o));
-            }
-            return b.append(']').toString();
-        }
-        if (v instanceof String s) {
-            return '"' + s.replace("\\", "\\\\").replace("\"", "\\\"") + '"';
-        }
-        return String.valueOf(v);
     }
 }
