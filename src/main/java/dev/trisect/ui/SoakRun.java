@@ -191,7 +191,7 @@ final class SoakRun {
             case 4 -> onEdt(w -> w.update(s -> s.withRender(s.render().withTessellation(s.render().tessellation()
                     .withMaxEdge(2 + random.nextInt(120))))));
             case 5 -> onEdt(w -> w.update(s -> s.withRender(s.render().withTessellation(s.render().tessellation()
-                    .withMaxError(DevToolsDialog.sliderToError(random.nextInt(1001)))))));
+                    .withMaxError(SplitPolicySection.sliderToError(random.nextInt(1001)))))));
             case 6 -> onEdt(w -> w.update(s -> s.withView(ViewKind.values()[random.nextInt(3)])
                     .withSplitFraction(random.nextDouble())));
             case 7 -> onEdt(w -> w.update(s -> s.withRenderScale(0.25 + 0.75 * random.nextDouble())));

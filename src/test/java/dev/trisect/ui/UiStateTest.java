@@ -139,10 +139,10 @@ class UiStateTest {
 
     @Test
     void maxErrorSliderMapsLogarithmicallyAndRoundTrips() {
-        assertEquals(0.05, DevToolsDialog.sliderToError(0), 1e-12);
-        assertEquals(8, DevToolsDialog.sliderToError(1000), 1e-9);
+        assertEquals(0.05, SplitPolicySection.sliderToError(0), 1e-12);
+        assertEquals(8, SplitPolicySection.sliderToError(1000), 1e-9);
         for (double px : new double[] {0.05, 0.1, 0.5, 1, 2, 8}) {
-            assertEquals(px, DevToolsDialog.sliderToError(DevToolsDialog.errorToSlider(px)), px * 0.006);
+            assertEquals(px, SplitPolicySection.sliderToError(SplitPolicySection.errorToSlider(px)), px * 0.006);
         }
     }
 

@@ -1,0 +1,110 @@
+package dev.trisect.ui;
+
+import dev.trisect.metrics.Comparison;
+import java.util.Locale;
+import javax.swing.BoxLayout;
+import javax.swing.ButtonGroup;
+import javax.swing.JCheckBox;
+import javax.swing.JComponent;
+import javax.swing.JPanel;
+import javax.swing.JRadioButton;
+
+/** Developer tools: the live comparison with the per-pixel path, its numbers, and the view it shows. */
+final class CompareSection implements ToolSection {
+    static final String[] MEASURES = {"Max displacement", "p99 displacement", "Texels that differ", "PSNR", "Measured"};
+
+    private final DemoWindow owner;
+    private final ToolsForm form = new ToolsForm("Compare with per-pixel");
+    private boolean syncing;
+    private final JCheckBox compare = new JCheckBox("Measure against the per-pixel path");
+    private final JRadioButton viewImage = new JRadioButton("Image");
+    private final JRadioButton viewDifference = new JRadioButton("Difference");
+    private final JRadioButton viewSplit = new JRadioButton("Split");
+
+    CompareSection(DemoWindow owner) {
+        this.owner = owner;
+        compare.setToolTipText("Render the same frame with the per-pixel perspective path as well, and measure "
+                + "how far this path's texture is from it, at least twice a second");
+        compare.addActionListener(e -> {
+            if (!syncing) {
+                owner.update(s -> s.withCompare(compare.isSelected()));
+            }
+        });
+        form.row(compare);
+        form.readouts(new String[][] {
+            {MEASURES[0], "Largest on-screen distance, in pixels, between where this path and the per-pixel "
+                    + "path show the same texture, over pixels both draw with the same triangle"},
+            {MEASURES[1], "99th percentile of that distance, in pixels"},
+            {MEASURES[2], "Share of compared pixels whose sampled texel differs from the per-pixel path's"},
+            {MEASURES[3], "Peak signal-to-noise ratio of the colours against the per-pixel image, dB (higher is closer)"},
+            {MEASURES[4], "Age of these numbers and the time the comparison took"}});
+        ButtonGroup views = new ButtonGroup();
+        JPanel viewRow = new JPanel();
+        viewRow.setLayout(new BoxLayout(viewRow, BoxLayout.X_AXIS));
+        viewImage.setToolTipText("Show this path's image");
+        viewDifference.setToolTipText("Show the displacement against the per-pixel path as a heat map, with its "
+                + "colour legend, in place of the image");
+        viewSplit.setToolTipText("Show this path left of a divider and the per-pixel path right of it; drag the "
+                + "divider in the view");
+        for (JRadioButton b : new JRadioButton[] {viewImage, viewDifference, viewSplit}) {
+            views.add(b);
+            viewRow.add(b);
+        }
+        viewImage.addActionListener(e -> setView(ViewKind.IMAGE));
+        viewDifference.addActionListener(e -> setView(ViewKind.DIFFERENCE));
+        viewSplit.addActionListener(e -> setView(ViewKind.SPLIT));
+        form.row(ToolsForm.label("View", "What the main window shows"));
+        form.row(viewRow);
+    }
+
+    @Override
+    public JComponent component() {
+        return form.panel();
+    }
+
+    private void setView(ViewKind kind) {
+        if (!syncing) {
+            owner.update(s -> s.withView(kind).withCompare(kind == ViewKind.IMAGE ? s.compare() : true));
+        }
+    }
+
+    @Override
+    public void sync(ViewSettings s) {
+        syncing = true;
+        try {
+            compare.setSelected(s.compare());
+            viewImage.setSelected(s.view() == ViewKind.IMAGE);
+            viewDifference.setSelected(s.view() == ViewKind.DIFFERENCE);
+            viewSplit.setSelected(s.view() == ViewKind.SPLIT);
+        } finally {
+            syncing = false;
+        }
+    }
+
+    @Override
+    public void refresh(DemoState.Progress progress, FrameSlot front, DemoState.Measurement m) {
+        ViewSettings now = owner.state().settings();
+        boolean measuring = now.compare() || now.view() != ViewKind.IMAGE;
+        if (m == null || !measuring) {
+            for (String k : MEASURES) {
+                form.set(k, "\u2014");
+            }
+            return;
+        }
+        Comparison c = m.comparison();
+        form.set(MEASURES[0], String.format(Locale.ROOT, "%.3f px", c.maxDisplacement()));
+        form.set(MEASURES[1], String.format(Locale.ROOT, "%.3f px", c.p99Displacement()));
+        form.set(MEASURES[2], String.format(Locale.ROOT, "%.2f %%", 100 * c.texelDifferShare()));
+        form.set(MEASURES[3], Double.isInfinite(c.psnrDb()) ? "identical" : String.format(Locale.ROOT, "%.2f dB", c.psnrDb()));
+        form.set(MEASURES[4], String.format(Locale.ROOT, "%.1f s ago, %.0f ms", (System.nanoTime() - m.nanos()) / 1e9,
+                progress.compareMs()));
+        if (now.render().mode() != m.settings().render().mode()) {
+            form.set(MEASURES[4], "updating\u2026");
+        }
+    }
+
+    @Override
+    public String readout(String name) {
+        return form.get(name);
+    }
+}

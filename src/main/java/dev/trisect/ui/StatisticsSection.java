@@ -1,0 +1,70 @@
+package dev.trisect.ui;
+
+import dev.trisect.pipeline.FrameStats;
+import java.util.Locale;
+import javax.swing.JComponent;
+
+/** Developer tools: frame rate, frame size and the engine's statistics of the frame on screen. */
+final class StatisticsSection implements ToolSection {
+    private final DemoWindow owner;
+    private final ToolsForm form = new ToolsForm("Statistics");
+
+    StatisticsSection(DemoWindow owner) {
+        this.owner = owner;
+        form.readouts(new String[][] {
+            {"Frames per second", "Frames shown per second, over the last second"},
+            {"Frame size", "Pixels rendered per frame (view size in device pixels times render scale)"},
+            {"Render threads", "Threads that fill each frame"},
+            {"ms transform", "Milliseconds per frame transforming vertices to clip space"},
+            {"ms clip", "Milliseconds culling and clipping triangles"},
+            {"ms tessellate", "Milliseconds splitting triangles into pieces and projecting them"},
+            {"ms raster", "Milliseconds clearing and filling the frame"},
+            {"ms overlay", "Milliseconds drawing polygon borders"},
+            {"ms total", "Milliseconds for the whole frame in the engine"},
+            {"Triangles in", "Triangles in the scene"},
+            {"Culled", "Triangles dropped as facing away, off screen, or without area"},
+            {"Pieces filled", "Triangles filled: tessellated pieces, or clipped triangles in the other paths"},
+            {"Splits", "Midpoint splits made this frame"},
+            {"Deepest split", "The most times an edge was halved this frame"},
+            {"Caps reached", "Triangles whose splitting a depth or piece cap stopped short"},
+            {"Pixels written", "Pixels that passed the depth test"}});
+    }
+
+    @Override
+    public JComponent component() {
+        return form.panel();
+    }
+
+    @Override
+    public void refresh(DemoState.Progress progress, FrameSlot front, DemoState.Measurement m) {
+        form.set("Frames per second", String.format(Locale.ROOT, "%.1f", progress.fps()));
+        form.set("Render threads", Integer.toString(owner.loop().threads()));
+        if (front == null || front.stats == null) {
+            return;
+        }
+        FrameStats st = front.stats;
+        form.set("Frame size", front.width() + "x" + front.height());
+        form.set("ms transform", ms(st.transformNanos()));
+        form.set("ms clip", ms(st.clipNanos()));
+        form.set("ms tessellate", ms(st.tessellateNanos()));
+        form.set("ms raster", ms(st.rasterNanos()));
+        form.set("ms overlay", ms(st.overlayNanos()));
+        form.set("ms total", ms(st.totalNanos()));
+        form.set("Triangles in", Long.toString(st.trianglesIn()));
+        form.set("Culled", Long.toString(st.culled()));
+        form.set("Pieces filled", Long.toString(st.pieces()));
+        form.set("Splits", Long.toString(st.splits()));
+        form.set("Deepest split", Integer.toString(st.deepestSplit()));
+        form.set("Caps reached", Long.toString(st.capsReached()));
+        form.set("Pixels written", Long.toString(st.pixelsWritten()));
+    }
+
+    @Override
+    public String readout(String name) {
+        return form.get(name);
+    }
+
+    private static String ms(long nanos) {
+        return String.format(Locale.ROOT, "%.2f", nanos / 1e6);
+    }
+}
