@@ -5,6 +5,7 @@ import dev.trisect.io.ImageFiles;
 import dev.trisect.metrics.Comparison;
 import dev.trisect.metrics.HeatMap;
 import dev.trisect.metrics.ImageComparison;
+import dev.trisect.metrics.TexelToScreen;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.RenderMode;
 import dev.trisect.pipeline.RenderSettings;
@@ -18,16 +19,18 @@ import picocli.CommandLine.Option;
 /** {@code trisect compare}: one frame in two paths, and how far apart they are. */
 @Command(name = "compare", sortOptions = false, mixinStandardHelpOptions = true,
         description = {"Render the same frame with --mode and with --against, and print how far the first is "
-                + "from the second as one JSON line: texel error (texels) and on-screen displacement (pixels) "
-                + "over pixels both cover with the same triangle, the share of pixels whose texel differs, "
-                + "colour RMSE and PSNR."})
+                + "from the second as one JSON line: texel error (texels) over pixels both cover with the same "
+                + "triangle, the share of those pixels whose texel differs, colour RMSE and PSNR, and the exact "
+                + "displacement (pixels) of the --mode image over those pixels: each pixel's texel coordinates "
+                + "mapped back to the 3D point that carries them, projected, and measured from the pixel centre "
+                + "(max_displacement, p99_displacement, mean_displacement)."})
 final class CompareCommand extends SceneCommand {
     @Option(names = "--against", paramLabel = "MODE", converter = Converters.ModeConverter.class,
             defaultValue = "perspective", description = "Reference path (default: ${DEFAULT-VALUE}).")
     RenderMode against;
 
     @Option(names = "--heatmap", paramLabel = "FILE.png",
-            description = "Also write the displacement heat map: black nothing drawn, grey not comparable, "
+            description = "Also write the exact displacement heat map: black nothing drawn, grey not comparable, "
                     + "then dark to bright up to --heatmap-max pixels.")
     Path heatmap;
 
@@ -56,8 +59,8 @@ final class CompareCommand extends SceneCommand {
         Framebuffer reference = Frames.allocate(frame.size);
         test.recordUv(true);
         reference.recordUv(true);
+        var vp = camera.viewProjection(frame.size.viewport());
         try (FrameRenderer renderer = common.renderer()) {
-            var vp = camera.viewProjection(frame.size.viewport());
             renderer.render(scene.mesh(), scene.textureArray(), vp, settings, test);
             // The reference never carries the overlay: it is compared texel by texel.
             renderer.render(scene.mesh(), scene.textureArray(), vp, settings.withMode(against).withBorders(false),
@@ -66,8 +69,9 @@ final class CompareCommand extends SceneCommand {
         int w = test.width();
         int h = test.height();
         float[] displacement = heatmap == null ? null : new float[w * h];
+        TexelToScreen exact = new TexelToScreen(scene.mesh(), scene.textureArray(), vp, frame.size.viewport());
         Comparison c = ImageComparison.compare(w, h, test.color(), test.uv(), reference.color(), reference.uv(),
-                displacement);
+                exact, displacement);
         if (heatmap != null) {
             int[] argb = new int[w * h];
             HeatMap.render(displacement, test.uv(), reference.uv(), w, h, heatmapMax, argb);

@@ -22,7 +22,10 @@ import picocli.CommandLine.Option;
 @Command(name = "diff", sortOptions = false, mixinStandardHelpOptions = true,
         description = {"Compare two renders given as files (an image and its UV output each), for example "
                 + "Trisect's against OpenGL's from tools/glref, and print one JSON line: the metrics of "
-                + "compare plus how many pixels differ in colour."})
+                + "compare plus how many pixels differ in colour. Files carry no geometry, so the displacement "
+                + "is an estimate (the texel difference through the reference's screen-space Jacobian, which "
+                + "over-reports where perspective bends the mapping) and its fields say so: "
+                + "max_displacement_estimate, p99_displacement_estimate, mean_displacement_estimate."})
 final class DiffCommand implements Callable<Integer> {
     @Mixin
     CommonOptions common;
@@ -39,11 +42,11 @@ final class DiffCommand implements Callable<Integer> {
     @Option(names = "--reference-uv", required = true, paramLabel = "FILE.pfm", description = "Reference UV output.")
     Path referenceUv;
 
-    @Option(names = "--heatmap", paramLabel = "FILE.png", description = "Also write the displacement heat map.")
+    @Option(names = "--heatmap", paramLabel = "FILE.png", description = "Also write the heat map of the displacement estimate.")
     Path heatmap;
 
     @Option(names = "--heatmap-max", paramLabel = "PX", converter = Converters.PositiveConverter.class,
-            defaultValue = "2", description = "Displacement at the top of the heat map's scale, pixels "
+            defaultValue = "2", description = "Displacement estimate at the top of the heat map's scale, pixels "
                     + "(default: ${DEFAULT-VALUE}).")
     double heatmapMax;
 

@@ -1,5 +1,7 @@
 package dev.trisect.metrics;
 
+import java.util.Objects;
+
 /**
  * Compares a test render with a reference render of the same size: texel error, on-screen
  * displacement, how often a different texel is sampled, and colour RMSE / PSNR (see {@link Comparison}).
@@ -9,26 +11,37 @@ package dev.trisect.metrics;
  * y down (image rows); texel coordinates are {@code (u * texWidth, v * texHeight)}.
  *
  * <h2>Displacement</h2>
- * The displacement answers "how far on screen is the texture from where the reference puts it". At a
- * compared pixel p, let f be the reference's map from screen position to texel coordinates and
+ * The displacement answers "how far on screen is the texture from where true perspective puts it".
+ *
+ * <p><b>Exact</b>, when the geometry is known ({@link TexelToScreen}, as in {@code compare} and the
+ * demo): the texel coordinates the test shows at pixel p are mapped back to the 3D point of the
+ * pixel's triangle that carries them, that point is projected, and the displacement is its distance
+ * in pixels from p's centre. It depends on the test render alone; the reference only decides which
+ * pixels are compared (the same triangle visible in both). It is undefined (NaN, left out of the
+ * statistics) where the triangle's UV mapping is degenerate (counted as
+ * {@link Comparison#degenerateUvPixels()}) or the point does not project.
+ *
+ * <p><b>Estimate</b>, when only the two UV buffers are known ({@code diff}): at a compared pixel p,
+ * let f be the reference's map from screen position to texel coordinates and
  * J = d(s, t)/d(x, y) = [[ds/dx, ds/dy], [dt/dx, dt/dy]] its Jacobian at p. The test shows texel
  * {@code (s, t)_test} at p; the reference draws that texel at p + d, where f(p + d) = {@code (s, t)_test}.
  * To first order,
- * {@code d = J^-1 ((s, t)_test - (s, t)_ref)}, and the displacement is |d| in pixels.
- * This is a first-order estimate: exact where the reference map is affine around p (within one
- * affinely textured triangle) and, for a perspective map, exact in the limit of small errors, its
- * relative error growing with |d| times the map's curvature.
+ * {@code d = J^-1 ((s, t)_test - (s, t)_ref)}, and the estimate is |d| in pixels.
+ * It is exact where the reference map is affine around p (within one affinely textured triangle) and,
+ * for a perspective map, exact in the limit of small errors, its relative error growing with |d|
+ * times the map's curvature: on a floor seen at a grazing angle it over-reports by a few percent.
  *
  * <p>J is estimated by finite differences of the <em>reference</em> UV buffer between p and its
  * neighbours covered by the same triangle id: a central difference along an axis where both neighbours
- * on that axis qualify, a one-sided difference where only one does. The displacement is undefined
- * (NaN, and left out of the displacement statistics) where an axis has no qualifying neighbour (a
+ * on that axis qualify, a one-sided difference where only one does. The estimate is undefined
+ * (NaN, and left out of the statistics) where an axis has no qualifying neighbour (a
  * triangle one pixel thin), or where J is singular: {@code |det J|} at most {@link #SINGULAR_TOLERANCE}
  * times {@code |ds/dx dt/dy| + |ds/dy dt/dx|}, i.e. the texture does not change along some screen
  * direction. A merely ill-conditioned J is kept: it gives a large displacement, which to first order is
  * the truth (a tiny texel error moves the texture far along the direction where it barely changes).
  *
- * <p>Cost: one pass over the pixels, two whole-image {@code float} scratch arrays for the percentiles
+ * <p>Cost: one pass over the pixels (the exact displacement costs one 3x3 map, a division and a
+ * square root per pixel, plus one map per visible triangle), two whole-image {@code float} scratch arrays for the percentiles
  * (found by selection, not by sorting), no allocation per pixel.
  */
 public final class ImageComparison {
@@ -63,8 +76,10 @@ public final class ImageComparison {
     }
 
     /**
-     * Compares two renders of the same size and also writes each pixel's displacement, for a heat map
-     * ({@link HeatMap}) without recomputing.
+     * Compares two renders of the same size, estimating the displacement from the UV buffers alone
+     * (see the class comment; {@link Comparison#displacementExact()} is false), and also writes each
+     * pixel's estimate, for a heat map ({@link HeatMap}) without recomputing. For when the geometry is
+     * unknown, such as renders read from files; otherwise use the exact overload.
      *
      * @param width           image width in pixels, at least 1
      * @param height          image height in pixels, at least 1
@@ -72,20 +87,53 @@ public final class ImageComparison {
      * @param uvTest          the test render's UV buffer, {@code 3 * width * height}
      * @param argbReference   the reference render's colours
      * @param uvReference     the reference render's UV buffer
-     * @param displacementOut {@code width * height} floats, filled with the displacement in pixels of
-     *                        every pixel, row 0 at the top, NaN where it is undefined (not compared,
-     *                        or no usable reference Jacobian); may be null
+     * @param displacementOut {@code width * height} floats, filled with the estimated displacement in
+     *                        pixels of every pixel, row 0 at the top, NaN where it is undefined (not
+     *                        compared, or no usable reference Jacobian); may be null
      * @return the statistics
      * @throws IllegalArgumentException when a size is not positive or an array's length does not match
      */
     public static Comparison compare(int width, int height, int[] argbTest, float[] uvTest,
                                      int[] argbReference, float[] uvReference, float[] displacementOut) {
+        return measure(width, height, argbTest, uvTest, argbReference, uvReference, null, displacementOut);
+    }
+
+    /**
+     * Compares two renders of the same frame with the exact displacement (see the class comment;
+     * {@link Comparison#displacementExact()} is true), and also writes each pixel's displacement.
+     *
+     * @param width           image width in pixels, at least 1
+     * @param height          image height in pixels, at least 1
+     * @param argbTest        the test render's colours, {@code width * height}, row 0 at the top
+     * @param uvTest          the test render's UV buffer, {@code 3 * width * height}
+     * @param argbReference   the reference render's colours
+     * @param uvReference     the reference render's UV buffer
+     * @param exact           the frame's texel-to-screen maps (same mesh, textures, camera and size as
+     *                        the renders); not null
+     * @param displacementOut {@code width * height} floats, filled with the exact displacement in pixels
+     *                        of every pixel, row 0 at the top, NaN where it is undefined (not compared,
+     *                        degenerate UV mapping, or a point that does not project); may be null
+     * @return the statistics
+     * @throws IllegalArgumentException when a size is not positive or an array's length does not match
+     */
+    public static Comparison compare(int width, int height, int[] argbTest, float[] uvTest,
+                                     int[] argbReference, float[] uvReference, TexelToScreen exact,
+                                     float[] displacementOut) {
+        return measure(width, height, argbTest, uvTest, argbReference, uvReference,
+                Objects.requireNonNull(exact, "exact"), displacementOut);
+    }
+
+    /** The comparison, with the exact displacement where {@code exact} is not null, else the estimate. */
+    private static Comparison measure(int width, int height, int[] argbTest, float[] uvTest,
+                                      int[] argbReference, float[] uvReference, TexelToScreen exact,
+                                      float[] displacementOut) {
         int pixels = checkSizes(width, height, argbTest, uvTest, argbReference, uvReference, displacementOut);
         float[] texelErrors = new float[pixels];
         float[] displacements = new float[pixels];
         int compared = 0;
         int other = 0;
         int defined = 0;
+        int degenerateUv = 0;
         int texelDiffers = 0;
         double texelSum = 0;
         double displacementSum = 0;
@@ -120,11 +168,15 @@ public final class ImageComparison {
                             texelDiffers++;
                         }
 
-                        displacement = displacementAt(uvReference, k, id, x, y, width, height, ds, dt);
+                        displacement = exact == null
+                                ? displacementAt(uvReference, k, id, x, y, width, height, ds, dt)
+                                : exactAt(exact, id, sTest, tTest, x, y);
                         if (!Float.isNaN(displacement)) {
                             displacements[defined++] = displacement;
                             displacementSum += displacement;
                             displacementMax = Math.max(displacementMax, displacement);
+                        } else if (exact != null && exact.isDegenerate(triangleOf(id))) {
+                            degenerateUv++;
                         }
                     }
                 }
@@ -143,19 +195,57 @@ public final class ImageComparison {
                 Percentiles.nearestRank(displacements, defined, PERCENT),
                 defined == 0 ? Double.NaN : displacementSum / defined,
                 defined,
+                degenerateUv,
+                exact != null,
                 compared == 0 ? Double.NaN : (double) texelDiffers / compared,
                 rmse,
                 rmse == 0 ? Double.POSITIVE_INFINITY : 20 * Math.log10(255 / rmse));
     }
 
     /**
-     * Only the displacement of every pixel (see {@link #compare(int, int, int[], float[], int[], float[], float[])}),
-     * without the statistics: what a live heat map needs each frame, at a fraction of the cost.
+     * The exact displacement (pixels, as a float) of pixel (x, y) showing texel coordinates (s, t) of
+     * the triangle with UV-output id {@code id}; NaN where undefined.
+     */
+    private static float exactAt(TexelToScreen exact, float id, double s, double t, int x, int y) {
+        float d = (float) exact.displacement(triangleOf(id), s, t, x, y);
+        return d <= Float.MAX_VALUE ? d : Float.NaN;
+    }
+
+    /**
+     * The 0-based triangle index of a UV-output id; -1 (no triangle) where the id is not a whole number
+     * that a float holds exactly, so that a rounded id never picks a wrong triangle.
+     */
+    private static int triangleOf(float id) {
+        return id >= 1 && id < 0x1p24f && id == (int) id ? (int) id - 1 : -1;
+    }
+
+    /**
+     * Only the estimated displacement of every pixel (see
+     * {@link #compare(int, int, int[], float[], int[], float[], float[])}), without the statistics.
      *
      * @param displacementOut {@code width * height} floats: pixels, NaN where undefined
      */
     public static void displacements(int width, int height, float[] uvTest, float[] uvReference,
                                      float[] displacementOut) {
+        perPixel(width, height, uvTest, uvReference, null, displacementOut);
+    }
+
+    /**
+     * Only the exact displacement of every pixel (see
+     * {@link #compare(int, int, int[], float[], int[], float[], TexelToScreen, float[])}), without the
+     * statistics: what a live heat map or a pixel inspector needs each frame, at a fraction of the cost.
+     *
+     * @param exact           the frame's texel-to-screen maps; not null
+     * @param displacementOut {@code width * height} floats: pixels, NaN where undefined
+     */
+    public static void displacements(int width, int height, float[] uvTest, float[] uvReference, TexelToScreen exact,
+                                     float[] displacementOut) {
+        perPixel(width, height, uvTest, uvReference, Objects.requireNonNull(exact, "exact"), displacementOut);
+    }
+
+    /** Per-pixel displacements, exact where {@code exact} is not null, else estimated. */
+    private static void perPixel(int width, int height, float[] uvTest, float[] uvReference, TexelToScreen exact,
+                                 float[] displacementOut) {
         long pixels = (long) width * height;
         if (width < 1 || height < 1 || uvTest.length != 3 * pixels || uvReference.length != 3 * pixels
                 || displacementOut.length != pixels) {
@@ -171,7 +261,9 @@ public final class ImageComparison {
                     double ds = (double) uvTest[k] - uvReference[k];
                     double dt = (double) uvTest[k + 1] - uvReference[k + 1];
                     if (Double.isFinite(ds + dt)) {
-                        displacement = displacementAt(uvReference, k, id, x, y, width, height, ds, dt);
+                        displacement = exact == null
+                                ? displacementAt(uvReference, k, id, x, y, width, height, ds, dt)
+                                : exactAt(exact, id, uvTest[k], uvTest[k + 1], x, y);
                     }
                 }
                 displacementOut[i] = displacement;

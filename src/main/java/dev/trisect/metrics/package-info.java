@@ -1,6 +1,9 @@
 /**
  * How far one render is from another, in numbers ({@link dev.trisect.metrics.ImageComparison},
- * {@link dev.trisect.metrics.Comparison}) and in pictures ({@link dev.trisect.metrics.HeatMap}).
+ * {@link dev.trisect.metrics.Comparison}) and in pictures ({@link dev.trisect.metrics.HeatMap}), and
+ * how far each pixel's texture is from where true perspective puts it
+ * ({@link dev.trisect.metrics.TexelToScreen}, the exact displacement, for callers that know the
+ * geometry).
  *
  * <p>Everything here works on plain arrays, row 0 at the top: colour images as {@code int[]} ARGB,
  * {@code width * height}; UV buffers as {@code float[]}, {@code 3 * width * height}, pixel (x, y) at

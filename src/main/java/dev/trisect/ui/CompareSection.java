@@ -32,9 +32,10 @@ final class CompareSection implements ToolSection {
         });
         form.row(compare);
         form.readouts(new String[][] {
-            {MEASURES[0], "Largest on-screen distance, in pixels, between where this path and the per-pixel "
-                    + "path show the same texture, over pixels both draw with the same triangle"},
-            {MEASURES[1], "99th percentile of that distance, in pixels"},
+            {MEASURES[0], "Exact: largest distance, in pixels, from a pixel's centre to where true perspective "
+                    + "draws the texel coordinates it shows, over pixels this path and the per-pixel path draw "
+                    + "with the same triangle"},
+            {MEASURES[1], "99th percentile of that exact distance, in pixels"},
             {MEASURES[2], "Share of compared pixels whose sampled texel differs from the per-pixel path's"},
             {MEASURES[3], "Peak signal-to-noise ratio of the colours against the per-pixel image, dB (higher is closer)"},
             {MEASURES[4], "Age of these numbers and the time the comparison took"}});
@@ -42,7 +43,8 @@ final class CompareSection implements ToolSection {
         JPanel viewRow = new JPanel();
         viewRow.setLayout(new BoxLayout(viewRow, BoxLayout.X_AXIS));
         viewImage.setToolTipText("Show this path's image");
-        viewDifference.setToolTipText("Show the displacement against the per-pixel path as a heat map, with its "
+        viewDifference.setToolTipText("Show the exact displacement as a heat map (grey where the per-pixel path "
+                + "shows another triangle), with its "
                 + "colour legend, in place of the image");
         viewSplit.setToolTipText("Show this path left of a divider and the per-pixel path right of it; drag the "
                 + "divider in the view");

@@ -5,6 +5,7 @@ import dev.trisect.math.Viewport;
 import dev.trisect.metrics.Comparison;
 import dev.trisect.metrics.HeatMap;
 import dev.trisect.metrics.ImageComparison;
+import dev.trisect.metrics.TexelToScreen;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.RenderMode;
 import dev.trisect.raster.Framebuffer;
@@ -145,7 +146,8 @@ final class RenderLoop implements Runnable {
         boolean needReference = settings.view() != ViewKind.IMAGE || compareDue;
         Framebuffer fb = back.frame;
         fb.recordUv(needReference);
-        Mat4 vp = camera.viewProjection(new Viewport(fw, fh));
+        Viewport viewport = new Viewport(fw, fh);
+        Mat4 vp = camera.viewProjection(viewport);
         var textures = scene.textureArray();
         back.stats = renderer.render(scene.mesh(), textures, vp, settings.render(), fb);
         frames++;
@@ -166,14 +168,17 @@ final class RenderLoop implements Runnable {
                 settings.render().withMode(RenderMode.PERSPECTIVE).withBorders(false), reference);
         if (compareDue) {
             long t0 = System.nanoTime();
+            // The exact displacement: the loop knows the geometry (maps are built per visible triangle).
+            TexelToScreen exact = new TexelToScreen(scene.mesh(), textures, vp, viewport);
             Comparison c = ImageComparison.compare(fw, fh, fb.color(), fb.uv(), reference.color(), reference.uv(),
-                    displacement);
+                    exact, displacement);
             compareMs = (System.nanoTime() - t0) / 1e6;
             lastCompare = now;
             state.measurement(new DemoState.Measurement(c, back.serial, camera, settings, fw, fh, System.nanoTime()));
         } else if (settings.view() == ViewKind.DIFFERENCE) {
             // Between measurements the heat map needs only the displacements, at a fraction of the cost.
-            ImageComparison.displacements(fw, fh, fb.uv(), reference.uv(), displacement);
+            ImageComparison.displacements(fw, fh, fb.uv(), reference.uv(),
+                    new TexelToScreen(scene.mesh(), textures, vp, viewport), displacement);
         }
         if (settings.view() == ViewKind.DIFFERENCE) {
             HeatMap.render(displacement, fb.uv(), reference.uv(), fw, fh, settings.heatmapMax(), fb.color());

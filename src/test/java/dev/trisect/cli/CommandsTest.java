@@ -1,6 +1,7 @@
 package dev.trisect.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.io.Pfm;
@@ -114,10 +115,16 @@ class CommandsTest {
                 dir.resolve("b.pfm").toString());
         CliRun compare = CliRun.of(cat(new String[] {"compare", "--mode", "affine"}, common));
         assertEquals(0, diff.status(), diff.err());
-        for (String key : new String[] {"max_displacement", "p99_texel_error", "texel_differ_share", "colour_rmse"}) {
+        for (String key : new String[] {"compared_pixels", "p99_texel_error", "texel_differ_share", "colour_rmse"}) {
             assertEquals(number(compare.out(), key), number(diff.out(), key), 1e-9, key);
         }
         assertTrue(number(diff.out(), "colour_differ_pixels") > 0);
+        // Files carry no geometry: diff's displacement is an estimate and says so; compare's is exact.
+        assertFalse(diff.out().contains("\"max_displacement\""), diff.out());
+        assertTrue(number(diff.out(), "max_displacement_estimate") > 1, diff.out());
+        assertFalse(compare.out().contains("_estimate"), compare.out());
+        assertTrue(number(compare.out(), "max_displacement") > 1, compare.out());
+        assertTrue(CliRun.of("diff", "--help").out().contains("max_displacement_estimate"));
     }
 
     @Test

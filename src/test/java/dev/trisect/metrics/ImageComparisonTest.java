@@ -320,7 +320,7 @@ class ImageComparisonTest {
             assertTrue(Double.isNaN(c.maxDisplacement()));
             assertTrue(Double.isNaN(c.p99Displacement()));
             assertTrue(Double.isNaN(c.meanDisplacement()));
-            assertTrue(c.toJson().contains("\"max_displacement\":null,"), c.toJson());
+            assertTrue(c.toJson().contains("\"max_displacement_estimate\":null,"), c.toJson());
         }
         for (float d : displacement) {
             assertTrue(Float.isNaN(d));
@@ -330,13 +330,25 @@ class ImageComparisonTest {
     @Test
     void jsonIsOneLineWithSnakeCaseKeysAndNullForNonFinite() {
         Comparison c = new Comparison(4, 3, 10, 2, 1.5, 1.25, 0.5, Double.NaN, Double.NaN, Double.NaN,
-                0, 0.25, 2.5E-4, Double.POSITIVE_INFINITY);
+                0, 3, true, 0.25, 2.5E-4, Double.POSITIVE_INFINITY);
 
         assertEquals("{\"width\":4,\"height\":3,\"compared_pixels\":10,\"other_pixels\":2,"
                 + "\"max_texel_error\":1.5,\"p99_texel_error\":1.25,\"mean_texel_error\":0.5,"
                 + "\"max_displacement\":null,\"p99_displacement\":null,\"mean_displacement\":null,"
-                + "\"displacement_pixels\":0,\"texel_differ_share\":0.25,\"colour_rmse\":2.5E-4,"
-                + "\"psnr_db\":null}", c.toJson());
+                + "\"displacement_pixels\":0,\"degenerate_uv_pixels\":3,\"texel_differ_share\":0.25,"
+                + "\"colour_rmse\":2.5E-4,\"psnr_db\":null}", c.toJson());
+    }
+
+    @Test
+    void anEstimatedDisplacementIsLabelledAsOneInJson() {
+        Comparison c = new Comparison(4, 3, 10, 2, 1.5, 1.25, 0.5, 2.5, 2, 1,
+                7, 0, false, 0.25, 2.5E-4, 40);
+
+        assertEquals("{\"width\":4,\"height\":3,\"compared_pixels\":10,\"other_pixels\":2,"
+                + "\"max_texel_error\":1.5,\"p99_texel_error\":1.25,\"mean_texel_error\":0.5,"
+                + "\"max_displacement_estimate\":2.5,\"p99_displacement_estimate\":2.0,"
+                + "\"mean_displacement_estimate\":1.0,\"displacement_estimate_pixels\":7,"
+                + "\"texel_differ_share\":0.25,\"colour_rmse\":2.5E-4,\"psnr_db\":40.0}", c.toJson());
     }
 
     @Test
