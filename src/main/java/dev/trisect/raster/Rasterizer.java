@@ -297,6 +297,10 @@ public final class Rasterizer {
         long k1 = st[8], s1 = st[9], m1 = st[10], q1 = st[11], r1 = st[12], dq1 = st[13], dr1 = st[14], carry1 = st[15];
         long k2 = st[16], s2 = st[17], m2 = st[18], q2 = st[19], r2 = st[20], dq2 = st[21], dr2 = st[22], carry2 = st[23];
         int[] out = spans;
+        // The remainder overflows on a data-dependent pattern of rows, which a branch would mispredict
+        // about half the time; a sign mask (all ones when r >= m) applies the carry without one. A
+        // horizontal edge has m = r = dr = carry = 0, so its mask is all ones and changes nothing.
+        long over;
         for (int j = 0; j < rows; j++) {
             long start = colStart;
             long end = colEnd;
@@ -325,22 +329,19 @@ public final class Rasterizer {
             out[2 * j + 1] = (int) Math.max(start, end);
             q0 += dq0;
             r0 += dr0;
-            if (r0 >= m0 && m0 != 0) {
-                q0 += carry0;
-                r0 -= m0;
-            }
+            over = (m0 - 1 - r0) >> 63;
+            q0 += carry0 & over;
+            r0 -= m0 & over;
             q1 += dq1;
             r1 += dr1;
-            if (r1 >= m1 && m1 != 0) {
-                q1 += carry1;
-                r1 -= m1;
-            }
+            over = (m1 - 1 - r1) >> 63;
+            q1 += carry1 & over;
+            r1 -= m1 & over;
             q2 += dq2;
             r2 += dr2;
-            if (r2 >= m2 && m2 != 0) {
-                q2 += carry2;
-                r2 -= m2;
-            }
+            over = (m2 - 1 - r2) >> 63;
+            q2 += carry2 & over;
+            r2 -= m2 & over;
             k0 += s0;
             k1 += s1;
             k2 += s2;
