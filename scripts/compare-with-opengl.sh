@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Renders built-in scenes with Trisect's perspective path and with OpenGL (Mesa llvmpipe, through
 # ../shared/tools/glref) and prints, per frame, how many pixels differ in colour and how far the
-# UV outputs are apart. Usage: scripts/compare-with-opengl.sh [glref-binary] [WxH]
+# UV outputs are apart. Usage: [FILTER=nearest|bilinear|trilinear] scripts/compare-with-opengl.sh [glref-binary] [WxH]
+# FILTER (default nearest) is passed to both: --filter for Trisect, GLREF_FILTER for glref.
 # Build glref first: gcc -O2 -o /tmp/glref ../shared/tools/glref/glref.c -lEGL -lGL -lGLU -lm
 set -euo pipefail
 cd "$(dirname "$0")/.."
 GLREF=${1:-/tmp/glref}
 SIZE=${2:-1280x720}
+FILTER=${FILTER:-nearest}
 W=${SIZE%x*}
 H=${SIZE#*x}
 JAR=target/trisect.jar
@@ -21,12 +23,12 @@ frame() { # name scene eye target cull [far]
   local tex
   tex=$(ls "$OUT/$scene/$scene"-*.ppm | head -n 1)
   # glref takes one texture, so Trisect gets the same one for every material.
-  java -jar "$JAR" render --obj "$OUT/$scene/$scene.obj" --texture "$tex" --size "$SIZE" --mode perspective \
+  java -jar "$JAR" render --obj "$OUT/$scene/$scene.obj" --texture "$tex" --size "$SIZE" --mode perspective --filter "$FILTER" \
     --eye "$eye" --target "$target" --near 0.1 --far "$far" --cull "$cull" \
     --out "$OUT/$name-ours.ppm" --uv-out "$OUT/$name-ours.pfm"
   IFS=, read -r ex ey ez <<<"$eye"
   IFS=, read -r tx ty tz <<<"$target"
-  GLREF_UV="$OUT/$name-gl.pfm" "$GLREF" "$OUT/$scene/$scene.obj" "$tex" "$OUT/$name-gl.ppm" "$W" "$H" \
+  GLREF_FILTER="$FILTER" GLREF_UV="$OUT/$name-gl.pfm" "$GLREF" "$OUT/$scene/$scene.obj" "$tex" "$OUT/$name-gl.ppm" "$W" "$H" \
     "$ex" "$ey" "$ez" "$tx" "$ty" "$tz" 60 0.1 "$far" "$cull" 2>/dev/null
   printf '%-14s ' "$name"
   java -jar "$JAR" diff --image "$OUT/$name-ours.ppm" --uv "$OUT/$name-ours.pfm" \

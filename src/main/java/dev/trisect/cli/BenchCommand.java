@@ -150,6 +150,7 @@ final class BenchCommand extends SceneCommand {
                     Integer.toString(frames + warmup)));
             ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true);
             pb.environment().put("LP_NUM_THREADS", Integer.toString(threads));
+            pb.environment().put("GLREF_FILTER", path.filter.id());
             Process p;
             try {
                 p = pb.start();
@@ -176,7 +177,8 @@ final class BenchCommand extends SceneCommand {
                         .toString();
             }
             return String.format(Locale.ROOT, "%-12s %10s %10.3f %10s %8.1f %10s  (Mesa llvmpipe, LP_NUM_THREADS=%d, "
-                    + "mean of %d frames incl. glFinish)", "glref", "-", ms, "-", 1000 / ms, "-", threads, frames + warmup);
+                    + "GLREF_FILTER=%s, mean of %d frames incl. glFinish)", "glref", "-", ms, "-", 1000 / ms, "-", threads,
+                    path.filter.id(), frames + warmup);
         } finally {
             try (var files = Files.list(dir)) {
                 for (Path f : files.toList()) {

@@ -5,6 +5,7 @@ import dev.trisect.math.Viewport;
 import dev.trisect.pipeline.CullMode;
 import dev.trisect.pipeline.RenderMode;
 import dev.trisect.tessellate.SplitPolicy;
+import dev.trisect.texture.TextureFilter;
 import java.util.Locale;
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.TypeConversionException;
@@ -138,6 +139,12 @@ final class Converters {
     static final class CullConverter extends NamedConverter<CullMode> {
         CullConverter() {
             super(CullMode.values(), "cull mode");
+        }
+    }
+
+    static final class FilterConverter extends NamedConverter<TextureFilter> {
+        FilterConverter() {
+            super(TextureFilter.values(), "texture filter");
         }
     }
 }

@@ -5,6 +5,7 @@ import dev.trisect.pipeline.RenderMode;
 import dev.trisect.pipeline.RenderSettings;
 import dev.trisect.tessellate.SplitPolicy;
 import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.texture.TextureFilter;
 import picocli.CommandLine.Option;
 
 /** Which texturing path and how it splits. Shared by the commands. */
@@ -37,6 +38,12 @@ final class PathOptions {
             description = "Most pieces one triangle may become, at least 1 (default: ${DEFAULT-VALUE}).")
     int maxPieces;
 
+    @Option(names = "--filter", paramLabel = "nearest|bilinear|trilinear",
+            converter = Converters.FilterConverter.class, defaultValue = "nearest",
+            description = "Texture filter in every path, as OpenGL's GL_NEAREST, GL_LINEAR or GL_LINEAR_MIPMAP_LINEAR "
+                    + "with GL_REPEAT (default: ${DEFAULT-VALUE}).")
+    TextureFilter filter;
+
     @Option(names = "--borders", description = "Draw the yellow outline of every piece filled (default: off).")
     boolean borders;
 
@@ -53,6 +60,6 @@ final class PathOptions {
 
     /** Render settings for this path with the frame's culling and background. */
     RenderSettings settings(FrameOptions frame) {
-        return new RenderSettings(mode, tessellation(), frame.cull, frame.background, borders);
+        return new RenderSettings(mode, tessellation(), frame.cull, frame.background, borders, filter);
     }
 }

@@ -112,6 +112,7 @@ public final class FrameRenderer implements AutoCloseable {
             int y0 = b * BAND_ROWS;
             int y1 = Math.min(height, y0 + BAND_ROWS);
             frame.clearRows(y0, y1, background);
+            w.rasterizer.filter(settings.filter());
             for (int c = 0; c < chunkCount; c++) {
                 Chunk chunk = chunks[c];
                 w.pixels += w.rasterizer.fill(frame, chunk.out, chunk.binItems, chunk.binStart[b],

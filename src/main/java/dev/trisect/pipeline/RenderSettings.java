@@ -1,6 +1,7 @@
 package dev.trisect.pipeline;
 
 import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.texture.TextureFilter;
 
 /**
  * How a frame is drawn.
@@ -10,43 +11,56 @@ import dev.trisect.tessellate.TessellationSettings;
  * @param cull         back-face culling
  * @param background   background colour, 0xRRGGBB
  * @param borders      draw the yellow outline of every piece filled
+ * @param filter       texture filter, in every path
  */
 public record RenderSettings(RenderMode mode, TessellationSettings tessellation, CullMode cull,
-                             int background, boolean borders) {
+                             int background, boolean borders, TextureFilter filter) {
 
     public RenderSettings {
-        if (mode == null || tessellation == null || cull == null) {
-            throw new IllegalArgumentException("render settings need a mode, tessellation settings and a cull mode");
+        if (mode == null || tessellation == null || cull == null || filter == null) {
+            throw new IllegalArgumentException(
+                    "render settings need a mode, tessellation settings, a cull mode and a texture filter");
         }
     }
 
-    /** Tessellated, default split settings, back-face culling, black, no borders. */
+    /** Settings with nearest sampling. */
+    public RenderSettings(RenderMode mode, TessellationSettings tessellation, CullMode cull, int background,
+                          boolean borders) {
+        this(mode, tessellation, cull, background, borders, TextureFilter.NEAREST);
+    }
+
+    /** Tessellated, default split settings, back-face culling, black, no borders, nearest sampling. */
     public static RenderSettings defaults() {
         return new RenderSettings(RenderMode.TESSELLATED, TessellationSettings.defaults(), CullMode.BACK, 0, false);
     }
 
     /** A copy with another mode. */
     public RenderSettings withMode(RenderMode m) {
-        return new RenderSettings(m, tessellation, cull, background, borders);
+        return new RenderSettings(m, tessellation, cull, background, borders, filter);
     }
 
     /** A copy with other tessellation settings. */
     public RenderSettings withTessellation(TessellationSettings t) {
-        return new RenderSettings(mode, t, cull, background, borders);
+        return new RenderSettings(mode, t, cull, background, borders, filter);
     }
 
     /** A copy with another cull mode. */
     public RenderSettings withCull(CullMode c) {
-        return new RenderSettings(mode, tessellation, c, background, borders);
+        return new RenderSettings(mode, tessellation, c, background, borders, filter);
     }
 
     /** A copy with another background. */
     public RenderSettings withBackground(int rgb) {
-        return new RenderSettings(mode, tessellation, cull, rgb, borders);
+        return new RenderSettings(mode, tessellation, cull, rgb, borders, filter);
     }
 
     /** A copy with the border overlay on or off. */
     public RenderSettings withBorders(boolean on) {
-        return new RenderSettings(mode, tessellation, cull, background, on);
+        return new RenderSettings(mode, tessellation, cull, background, on, filter);
+    }
+
+    /** A copy with another texture filter. */
+    public RenderSettings withFilter(TextureFilter f) {
+        return new RenderSettings(mode, tessellation, cull, background, borders, f);
     }
 }

@@ -1,6 +1,7 @@
 package dev.trisect.raster;
 
 import dev.trisect.texture.Texture;
+import dev.trisect.texture.TextureFilter;
 
 /**
  * Fills screen-space triangles into a {@link Framebuffer}, restricted to a rectangle of the frame.
@@ -24,23 +25,33 @@ public final class Rasterizer {
     private static final int HALF = FixedPoint.HALF;
 
     // Current triangle, corners reordered so that the snapped signed area is positive (y down).
-    private int rowStart;
-    private int rowEnd;
+    int rowStart;
+    int rowEnd;
     private int colStart;
     private int colEnd;
     /** The triangle's own first column, before clipping to the rectangle: the anchor of fixed-point stepping. */
-    private int firstColumn;
+    int firstColumn;
     /**
      * The covered pixels of each row of the current triangle: row {@code rowStart + j} covers
      * [spans[2j], spans[2j + 1]); an empty row has start &gt;= end.
      */
-    private int[] spans = new int[64];
+    int[] spans = new int[64];
     // Attribute planes over pixel centres: value = base + dx * x + dy * y for pixel (x, y).
-    private final Plane qPlane = new Plane();
-    private final Plane sPlane = new Plane();
-    private final Plane tPlane = new Plane();
+    final Plane qPlane = new Plane();
+    final Plane sPlane = new Plane();
+    final Plane tPlane = new Plane();
     /** Whether the texel coordinates are small enough for 32.32 fixed point (|s|, |t| &lt; 2^30). */
     private boolean fixedPointSafe;
+    /** How {@link #fill} samples textures; bilinear and trilinear loops are in {@link FilteredSpans}. */
+    private TextureFilter filter = TextureFilter.NEAREST;
+
+    /** Sets how the following {@link #fill} calls sample textures (nearest until set). */
+    public void filter(TextureFilter f) {
+        if (f == null) {
+            throw new IllegalArgumentException("texture filter must not be null");
+        }
+        filter = f;
+    }
 
     /**
      * Fills triangles {@code order[from..to)} of {@code triangles}, in that order, into the pixels
@@ -62,6 +73,11 @@ public final class Rasterizer {
                 continue;
             }
             Texture texture = textures[materials[tri]];
+            if (filter != TextureFilter.NEAREST) {
+                written += FilteredSpans.fill(this, frame, texture.mipChain(), ids[tri] + 1, perspective,
+                        fixedPointSafe, filter);
+                continue;
+            }
             written += perspective || !fixedPointSafe
                     ? spans(frame, texture, ids[tri] + 1, perspective)
                     : spansAffineFixed(frame, texture, ids[tri] + 1);

@@ -9,6 +9,9 @@ package dev.trisect.texture;
  * texel coordinates {@code (s, t) = (u * width, v * height)}, the column is
  * {@code floorMod(floor(s), width)}, the row from the bottom {@code floorMod(floor(t), height)}.
  * The rasterizer inlines the same arithmetic; {@link #texelIndex} is the reference for it.
+ *
+ * <p>Bilinear and trilinear sampling ({@link TextureFilter}) use {@link Sampler} on the levels of
+ * {@link #mipChain()}, which is built here, once, when the texture is created.
  */
 public final class Texture {
     /** Largest width or height accepted, in texels. */
@@ -18,6 +21,7 @@ public final class Texture {
     private final int width;
     private final int height;
     private final int[] argb;
+    private final MipChain mipChain;
 
     /**
      * @param name   where the texture came from (a file name or a procedural name), for messages
@@ -37,6 +41,7 @@ public final class Texture {
         this.width = width;
         this.height = height;
         this.argb = argb;
+        this.mipChain = new MipChain(width, height, argb);
     }
 
     /** A texture of one colour, for meshes without one. */
@@ -62,6 +67,11 @@ public final class Texture {
     /** The texels, ARGB, row 0 at the top. Handed out without a copy for the rasterizer: read-only. */
     public int[] argb() {
         return argb;
+    }
+
+    /** The mipmap levels, level 0 being {@link #argb()} itself; built with the texture. */
+    public MipChain mipChain() {
+        return mipChain;
     }
 
     /**

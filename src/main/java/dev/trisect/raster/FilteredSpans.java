@@ -1,0 +1,251 @@
+package dev.trisect.raster;
+
+import dev.trisect.texture.Lod;
+import dev.trisect.texture.MipChain;
+import dev.trisect.texture.Sampler;
+import dev.trisect.texture.TextureFilter;
+
+/**
+ * The span loops of the bilinear and trilinear filters, over the triangle a {@link Rasterizer} has
+ * just set up (its covered spans and attribute planes). One loop per filter and path, so each inner
+ * loop is monomorphic: the choice is made once per triangle, never per pixel. Depth test, depth
+ * write and the UV output are exactly those of the nearest loops in {@link Rasterizer}; only the
+ * colour differs (docs/conventions.md, "Texture filtering").
+ *
+ * <ul>
+ * <li>Perspective path: every pixel divides, and trilinear takes its level of detail per pixel from
+ * the exact derivatives of the perspective map ({@link Lod#lambdaPerspective}).</li>
+ * <li>Affine and tessellated paths: the texel coordinates are linear on screen, so their derivatives
+ * are constant over the piece and trilinear takes one level of detail per piece ({@link Lod#lambda}),
+ * computed once; the levels are stepped in 32.32 fixed point like the nearest affine loop.</li>
+ * </ul>
+ */
+final class FilteredSpans {
+    /** 2^32: texel coordinates in 32.32 fixed point. */
+    private static final double FIXED_SCALE = 4294967296.0;
+    /** Right shift from 32.32 fixed point to the sampler's 8 fraction bits. */
+    private static final int TO_SAMPLER = 32 - Sampler.FRACTION_BITS;
+
+    private FilteredSpans() {
+    }
+
+    /**
+     * Fills the rasterizer's current triangle with {@code filter} (bilinear or trilinear).
+     *
+     * @param perspective the perspective path (per-pixel division and level of detail)
+     * @param fixedSafe   affine texel coordinates fit 32.32 fixed point
+     * @return pixels written
+     */
+    static long fill(Rasterizer r, Framebuffer frame, MipChain mips, int uvId, boolean perspective,
+                     boolean fixedSafe, TextureFilter filter) {
+        if (filter == TextureFilter.BILINEAR) {
+            return perspective || !fixedSafe
+                    ? levelFloat(r, frame, mips, uvId, perspective)
+                    : levelFixed(r, frame, mips, 0, 0, uvId);
+        }
+        if (perspective || !fixedSafe) {
+            return trilinearFloat(r, frame, mips, uvId, perspective);
+        }
+        int selection = Lod.select(Lod.lambda(r.sPlane.dx, r.tPlane.dx, r.sPlane.dy, r.tPlane.dy), mips.maxLevel());
+        return levelFixed(r, frame, mips, Lod.level(selection), Lod.weight(selection), uvId);
+    }
+
+    /** Bilinear on level 0 with coordinates in doubles: the perspective path, or huge affine coordinates. */
+    private static long levelFloat(Rasterizer r, Framebuffer frame, MipChain mips, int uvId, boolean perspective) {
+        double qBase = r.qPlane.base;
+        double qDx = r.qPlane.dx;
+        double qDy = r.qPlane.dy;
+        double sBase = r.sPlane.base;
+        double sDx = r.sPlane.dx;
+        double sDy = r.sPlane.dy;
+        double tBase = r.tPlane.base;
+        double tDx = r.tPlane.dx;
+        double tDy = r.tPlane.dy;
+        int width = frame.width();
+        int[] color = frame.color();
+        float[] depth = frame.depth();
+        float[] uv = frame.uv();
+        int[] texels = mips.texels(0);
+        int tw = mips.width(0);
+        int th = mips.height(0);
+        long written = 0;
+        int[] sp = r.spans;
+        for (int y = r.rowStart, j = 0; y < r.rowEnd; y++, j += 2) {
+            int spanStart = sp[j];
+            int spanEnd = sp[j + 1];
+            double qRow = qBase + qDy * y;
+            double sRow = sBase + sDy * y;
+            double tRow = tBase + tDy * y;
+            int rowOffset = y * width;
+            for (int x = spanStart; x < spanEnd; x++) {
+                double q = qRow + qDx * x;
+                float qf = (float) q;
+                int i = rowOffset + x;
+                if (qf > depth[i]) {
+                    depth[i] = qf;
+                    double rq = perspective ? 1.0 / q : 1.0;
+                    double s = (sRow + sDx * x) * rq;
+                    double t = (tRow + tDx * x) * rq;
+                    color[i] = Sampler.bilinear(texels, tw, th, Sampler.position(s), Sampler.position(t));
+                    if (uv != null) {
+                        uv[3 * i] = (float) s;
+                        uv[3 * i + 1] = (float) t;
+                        uv[3 * i + 2] = uvId;
+                    }
+                    written++;
+                }
+            }
+        }
+        return written;
+    }
+
+    /**
+     * Trilinear with the level of detail per pixel, coordinates in doubles: the perspective path (exact
+     * derivatives of the perspective map at each pixel), or affine pieces whose coordinates are too
+     * large for fixed point (constant derivatives, so the same level everywhere).
+     */
+    private static long trilinearFloat(Rasterizer r, Framebuffer frame, MipChain mips, int uvId,
+                                       boolean perspective) {
+        double qBase = r.qPlane.base;
+        double qDx = r.qPlane.dx;
+        double qDy = r.qPlane.dy;
+        double sBase = r.sPlane.base;
+        double sDx = r.sPlane.dx;
+        double sDy = r.sPlane.dy;
+        double tBase = r.tPlane.base;
+        double tDx = r.tPlane.dx;
+        double tDy = r.tPlane.dy;
+        // Perspective: s = S / Q, so ds/dx = (S_x - s Q_x) / Q; affine: ds/dx = S_x, so take Q_x = 0
+        // in the same formula and a Q of 1.
+        double qDxLod = perspective ? qDx : 0;
+        double qDyLod = perspective ? qDy : 0;
+        int maxLevel = mips.maxLevel();
+        int width = frame.width();
+        int[] color = frame.color();
+        float[] depth = frame.depth();
+        float[] uv = frame.uv();
+        long written = 0;
+        int[] sp = r.spans;
+        for (int y = r.rowStart, j = 0; y < r.rowEnd; y++, j += 2) {
+            int spanStart = sp[j];
+            int spanEnd = sp[j + 1];
+            double qRow = qBase + qDy * y;
+            double sRow = sBase + sDy * y;
+            double tRow = tBase + tDy * y;
+            int rowOffset = y * width;
+            for (int x = spanStart; x < spanEnd; x++) {
+                double q = qRow + qDx * x;
+                float qf = (float) q;
+                int i = rowOffset + x;
+                if (qf > depth[i]) {
+                    depth[i] = qf;
+                    double rq = perspective ? 1.0 / q : 1.0;
+                    double s = (sRow + sDx * x) * rq;
+                    double t = (tRow + tDx * x) * rq;
+                    int selection = Lod.select(
+                            Lod.lambdaPerspective(s, t, rq, sDx, sDy, tDx, tDy, qDxLod, qDyLod), maxLevel);
+                    int d = Lod.level(selection);
+                    int c = Sampler.bilinear(mips.texels(d), mips.width(d), mips.height(d),
+                            Sampler.position(s * mips.scaleS(d)), Sampler.position(t * mips.scaleT(d)));
+                    int weight = Lod.weight(selection);
+                    if (weight != 0) {
+                        int e = d + 1;
+                        int c2 = Sampler.bilinear(mips.texels(e), mips.width(e), mips.height(e),
+                                Sampler.position(s * mips.scaleS(e)), Sampler.position(t * mips.scaleT(e)));
+                        c = Sampler.lerp(c, c2, weight);
+                    }
+                    color[i] = c;
+                    if (uv != null) {
+                        uv[3 * i] = (float) s;
+                        uv[3 * i + 1] = (float) t;
+                        uv[3 * i + 2] = uvId;
+                    }
+                    written++;
+                }
+            }
+        }
+        return written;
+    }
+
+    /**
+     * The affine fill, bilinear on {@code level}, blended with weight/256 of {@code level + 1} when
+     * weight &gt; 0 (trilinear with the piece's one level of detail). Texel coordinates are stepped in
+     * 32.32 fixed point, anchored per row at the triangle's first column as in the nearest affine
+     * loop, so a pixel's value never depends on the rectangle being filled: level 0's for the UV
+     * output, and each sampled level's, moved by the half texel of {@link Sampler#position}.
+     */
+    private static long levelFixed(Rasterizer r, Framebuffer frame, MipChain mips, int level, int weight, int uvId) {
+        double qBase = r.qPlane.base;
+        double qDx = r.qPlane.dx;
+        double qDy = r.qPlane.dy;
+        double sBase = r.sPlane.base;
+        double sDx = r.sPlane.dx;
+        double sDy = r.sPlane.dy;
+        double tBase = r.tPlane.base;
+        double tDx = r.tPlane.dx;
+        double tDy = r.tPlane.dy;
+        int width = frame.width();
+        int[] color = frame.color();
+        float[] depth = frame.depth();
+        float[] uv = frame.uv();
+        int level2 = weight == 0 ? level : level + 1;
+        int[] texels = mips.texels(level);
+        int tw = mips.width(level);
+        int th = mips.height(level);
+        int[] texels2 = mips.texels(level2);
+        int tw2 = mips.width(level2);
+        int th2 = mips.height(level2);
+        double ks = mips.scaleS(level) * FIXED_SCALE;
+        double kt = mips.scaleT(level) * FIXED_SCALE;
+        double ks2 = mips.scaleS(level2) * FIXED_SCALE;
+        double kt2 = mips.scaleT(level2) * FIXED_SCALE;
+        long ds0 = (long) Math.floor(sDx * FIXED_SCALE);
+        long dt0 = (long) Math.floor(tDx * FIXED_SCALE);
+        long ds = (long) Math.floor(sDx * ks);
+        long dt = (long) Math.floor(tDx * kt);
+        long ds2 = (long) Math.floor(sDx * ks2);
+        long dt2 = (long) Math.floor(tDx * kt2);
+        long half = 1L << 31;
+        int firstColumn = r.firstColumn;
+        long written = 0;
+        int[] sp = r.spans;
+        for (int y = r.rowStart, j = 0; y < r.rowEnd; y++, j += 2) {
+            int spanStart = sp[j];
+            int spanEnd = sp[j + 1];
+            if (spanStart >= spanEnd) {
+                continue;
+            }
+            double qRow = qBase + qDy * y;
+            long skip = spanStart - firstColumn;
+            double sAnchor = sBase + sDy * y + sDx * firstColumn;
+            double tAnchor = tBase + tDy * y + tDx * firstColumn;
+            long s0 = (long) Math.floor(sAnchor * FIXED_SCALE) + ds0 * skip;
+            long t0 = (long) Math.floor(tAnchor * FIXED_SCALE) + dt0 * skip;
+            long s = (long) Math.floor(sAnchor * ks) - half + ds * skip;
+            long t = (long) Math.floor(tAnchor * kt) - half + dt * skip;
+            long s2 = (long) Math.floor(sAnchor * ks2) - half + ds2 * skip;
+            long t2 = (long) Math.floor(tAnchor * kt2) - half + dt2 * skip;
+            int rowOffset = y * width;
+            for (int x = spanStart; x < spanEnd; x++, s0 += ds0, t0 += dt0, s += ds, t += dt, s2 += ds2, t2 += dt2) {
+                float qf = (float) (qRow + qDx * x);
+                int i = rowOffset + x;
+                if (qf > depth[i]) {
+                    depth[i] = qf;
+                    int c = Sampler.bilinear(texels, tw, th, s >> TO_SAMPLER, t >> TO_SAMPLER);
+                    if (weight != 0) {
+                        c = Sampler.lerp(c, Sampler.bilinear(texels2, tw2, th2, s2 >> TO_SAMPLER, t2 >> TO_SAMPLER),
+                                weight);
+                    }
+                    color[i] = c;
+                    if (uv != null) {
+                        uv[3 * i] = (float) (s0 / FIXED_SCALE);
+                        uv[3 * i + 1] = (float) (t0 / FIXED_SCALE);
+                        uv[3 * i + 2] = uvId;
+                    }
+                    written++;
+                }
+            }
+        }
+        return written;
+    }
+}

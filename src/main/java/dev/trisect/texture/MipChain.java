@@ -1,0 +1,186 @@
+package dev.trisect.texture;
+
+/**
+ * The mipmap levels of a texture, built once when the texture is created: level 0 is the texture
+ * itself (not copied), each further level is half the previous one in each direction (rounded down,
+ * at least 1), down to 1x1, so there are {@code floor(log2(max(W, H))) + 1} levels, as OpenGL's
+ * mipmap completeness requires (OpenGL 4.6 core spec, §8.14.3 "Mipmapping", eq. 8.11 ff.).
+ * The extra levels take at most a third of the texture's memory while both sides halve; once a side is
+ * 1 only the other halves, which adds at most the longer side in texels (a 1-texel strip's levels
+ * nearly double it, as in OpenGL).
+ *
+ * <p>Each texel of level d + 1 is the box filter of the texels of level d that its area covers,
+ * separably per axis:
+ * <ul>
+ * <li>an even side halves exactly, and a texel is the average of 2 (per axis; 2x2 together);</li>
+ * <li>an odd side {@code 2n + 1} becomes {@code n}, and texel {@code i} covers {@code 2 + 1/n} texels of
+ * the level above: texels {@code 2i, 2i + 1, 2i + 2} with weights {@code (n - i), n, (i + 1)} over
+ * {@code 2n + 1} — the exact box filter, the polyphase filter of NVIDIA's "Non-Power-of-Two
+ * Mipmapping" whitepaper (2001, §3), whose weights sum to 1 and cover each source texel equally in
+ * total;</li>
+ * <li>a side of 1 stays 1 (only the other side halves).</li>
+ * </ul>
+ * Every channel, alpha included, is filtered with the exact weights and rounded to the nearest
+ * integer once. OpenGL leaves the filter of {@code glGenerateMipmap} to the implementation (§8.14.4);
+ * Mesa uses the 2x2 box for even sides, the same as here (docs/opengl.md has the measured difference).
+ *
+ * <p>Texels of every level are ARGB, row 0 at the top, as {@link Texture#argb()}. Immutable after
+ * construction; the arrays are handed out without copies for the rasterizer: read-only.
+ */
+public final class MipChain {
+    private final int[][] texels;
+    private final int[] widths;
+    private final int[] heights;
+    private final double[] scaleS;
+    private final double[] scaleT;
+
+    /** Builds all levels of {@code width x height} texels {@code argb} (row 0 at the top). */
+    MipChain(int width, int height, int[] argb) {
+        int count = levelCount(width, height);
+        texels = new int[count][];
+        widths = new int[count];
+        heights = new int[count];
+        scaleS = new double[count];
+        scaleT = new double[count];
+        texels[0] = argb;
+        widths[0] = width;
+        heights[0] = height;
+        for (int d = 1; d < count; d++) {
+            widths[d] = Math.max(1, widths[d - 1] / 2);
+            heights[d] = Math.max(1, heights[d - 1] / 2);
+            texels[d] = reduce(texels[d - 1], widths[d - 1], heights[d - 1], widths[d], heights[d]);
+        }
+        for (int d = 0; d < count; d++) {
+            scaleS[d] = widths[d] / (double) width;
+            scaleT[d] = heights[d] / (double) height;
+        }
+    }
+
+    /** Number of levels of a {@code width x height} texture: {@code floor(log2(max(width, height))) + 1}. */
+    public static int levelCount(int width, int height) {
+        return 32 - Integer.numberOfLeadingZeros(Math.max(width, height));
+    }
+
+    /** Number of levels, level 0 included. */
+    public int levels() {
+        return texels.length;
+    }
+
+    /** The largest level index, {@code q} in OpenGL's terms. */
+    public int maxLevel() {
+        return texels.length - 1;
+    }
+
+    /** Texels of level {@code d}, ARGB, row 0 at the top; read-only. */
+    public int[] texels(int d) {
+        return texels[d];
+    }
+
+    /** Width of level {@code d}, texels. */
+    public int width(int d) {
+        return widths[d];
+    }
+
+    /** Height of level {@code d}, texels. */
+    public int height(int d) {
+        return heights[d];
+    }
+
+    /**
+     * Level {@code d}'s width over level 0's: multiplies a level-0 texel coordinate s into level d's
+     * texel units ({@code u * width(d)}). A power of two {@code 2^-d} for power-of-two sides.
+     */
+    public double scaleS(int d) {
+        return scaleS[d];
+    }
+
+    /** Level {@code d}'s height over level 0's (see {@link #scaleS}). */
+    public double scaleT(int d) {
+        return scaleT[d];
+    }
+
+    /** Total texels of the levels beyond level 0 (memory check: at most a third of level 0). */
+    public long extraTexels() {
+        long n = 0;
+        for (int d = 1; d < texels.length; d++) {
+            n += texels[d].length;
+        }
+        return n;
+    }
+
+    /**
+     * One box-filtered level from the one above it. Per axis, {@code taps} source indices and integer
+     * weights for each destination index (see the class comment); the 2D weight is their product.
+     */
+    static int[] reduce(int[] src, int sw, int sh, int dw, int dh) {
+        int[] xFirst = new int[dw];
+        int[] xWeights = new int[3 * dw];
+        int xDenominator = axis(sw, dw, xFirst, xWeights);
+        int[] yFirst = new int[dh];
+        int[] yWeights = new int[3 * dh];
+        int yDenominator = axis(sh, dh, yFirst, yWeights);
+        long denominator = (long) xDenominator * yDenominator;
+        long half = denominator / 2;
+        int[] dst = new int[dw * dh];
+        // Tap indices count from the texture's origin, u = 0 and v = 0 (OpenGL's orientation): columns
+        // from the left, rows from the bottom, which matters for the odd-side weights.
+        for (int j = 0; j < dh; j++) {
+            for (int i = 0; i < dw; i++) {
+                long a = 0;
+                long r = 0;
+                long g = 0;
+                long b = 0;
+                for (int ty = 0; ty < 3; ty++) {
+                    int wy = yWeights[3 * j + ty];
+                    if (wy == 0) {
+                        continue;
+                    }
+                    int rowFromBottom = yFirst[j] + ty;
+                    int row = sh - 1 - rowFromBottom;
+                    for (int tx = 0; tx < 3; tx++) {
+                        int wx = xWeights[3 * i + tx];
+                        if (wx == 0) {
+                            continue;
+                        }
+                        long w = (long) wx * wy;
+                        int c = src[row * sw + xFirst[i] + tx];
+                        a += w * (c >>> 24);
+                        r += w * ((c >>> 16) & 0xFF);
+                        g += w * ((c >>> 8) & 0xFF);
+                        b += w * (c & 0xFF);
+                    }
+                }
+                int dstRow = dh - 1 - j;
+                dst[dstRow * dw + i] = (int) ((a + half) / denominator) << 24
+                        | (int) ((r + half) / denominator) << 16
+                        | (int) ((g + half) / denominator) << 8
+                        | (int) ((b + half) / denominator);
+            }
+        }
+        return dst;
+    }
+
+    /**
+     * Filter taps along one axis from {@code n} source texels to {@code m} destination texels: for
+     * destination i, source texels {@code first[i] + 0..2} with weights {@code weights[3i + 0..2]};
+     * returns the common denominator.
+     */
+    private static int axis(int n, int m, int[] first, int[] weights) {
+        for (int i = 0; i < m; i++) {
+            if (n == 1) {
+                first[i] = 0;
+                weights[3 * i] = 1;
+            } else if (n % 2 == 0) {
+                first[i] = 2 * i;
+                weights[3 * i] = 1;
+                weights[3 * i + 1] = 1;
+            } else {
+                first[i] = 2 * i;
+                weights[3 * i] = m - i;
+                weights[3 * i + 1] = m;
+                weights[3 * i + 2] = i + 1;
+            }
+        }
+        return n == 1 ? 1 : n % 2 == 0 ? 2 : 2 * m + 1;
+    }
+}

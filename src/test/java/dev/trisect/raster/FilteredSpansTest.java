@@ -1,0 +1,144 @@
+package dev.trisect.raster;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trisect.texture.Texture;
+import dev.trisect.texture.TextureFilter;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+
+/** The bilinear and trilinear span loops: per-piece and per-pixel level of detail, tiling, blur. */
+class FilteredSpansTest {
+    private static final int W = 96;
+    private static final int H = 64;
+
+    private static int[] all(ScreenTriangles t) {
+        int[] order = new int[t.count()];
+        for (int i = 0; i < order.length; i++) {
+            order[i] = i;
+        }
+        return order;
+    }
+
+    private static Framebuffer fill(ScreenTriangles t, Texture[] textures, TextureFilter filter, boolean perspective) {
+        Framebuffer fb = new Framebuffer(W, H);
+        fb.recordUv(true);
+        fb.clearRows(0, H, 0);
+        Rasterizer r = new Rasterizer();
+        r.filter(filter);
+        r.fill(fb, t, all(t), 0, t.count(), textures, perspective, 0, 0, W, H);
+        return fb;
+    }
+
+    private static Texture noise(int w, int h, long seed) {
+        Random rnd = new Random(seed);
+        int[] px = new int[w * h];
+        for (int i = 0; i < px.length; i++) {
+            px[i] = 0xFF000000 | rnd.nextInt(0x1000000);
+        }
+        return new Texture("noise", w, h, px);
+    }
+
+    /** A one-texel black and white checker, w x h. */
+    private static Texture checker(int w, int h) {
+        int[] px = new int[w * h];
+        for (int i = 0; i < px.length; i++) {
+            px[i] = ((i % w + i / w) & 1) == 0 ? 0xFF000000 : 0xFFFFFFFF;
+        }
+        return new Texture("checker", w, h, px);
+    }
+
+    @Test
+    void anAffineMapGetsTheSameLevelPerPixelAsPerPiece() {
+        // All corners at the same depth: the perspective loop (per-pixel level of detail from the exact
+        // derivatives) and the affine loop (one level per piece) sample the same levels with the same
+        // weights; positions differ only by fixed-point stepping (< 2^-32 texel), so at most 1/255.
+        Random rnd = new Random(8);
+        Texture[] textures = {noise(64, 64, 1), noise(37, 23, 2)};
+        for (int k = 0; k < 40; k++) {
+            ScreenTriangles t = new ScreenTriangles();
+            double x = rnd.nextDouble() * W;
+            double y = rnd.nextDouble() * H;
+            double scale = Math.pow(2, rnd.nextDouble() * 8 - 3);
+            t.add(x, y, 1, 0, 0,
+                    x + rnd.nextGaussian() * 30, y + rnd.nextGaussian() * 30, 1, 20 * scale, 3 * scale,
+                    x + rnd.nextGaussian() * 30, y + rnd.nextGaussian() * 30, 1, -5 * scale, 25 * scale,
+                    k, k % 2);
+            Framebuffer perPixel = fill(t, textures, TextureFilter.TRILINEAR, true);
+            Framebuffer perPiece = fill(t, textures, TextureFilter.TRILINEAR, false);
+            assertArrayEquals(perPixel.depth(), perPiece.depth());
+            int[] a = perPixel.color();
+            int[] b = perPiece.color();
+            for (int i = 0; i < a.length; i++) {
+                for (int shift = 0; shift < 24; shift += 8) {
+                    int d = Math.abs((a[i] >>> shift & 0xFF) - (b[i] >>> shift & 0xFF));
+                    assertTrue(d <= 1, "triangle " + k + " pixel " + i + ": " + Integer.toHexString(a[i]) + " vs "
+                            + Integer.toHexString(b[i]));
+                }
+            }
+        }
+    }
+
+    @Test
+    void minifiedCheckerAveragesToGrey() {
+        // 7.3 texels per pixel: lambda = 2.87, and every level from 1 on of a one-texel checker is the grey
+        // (0 + 255 + 0 + 255) / 4 = 127.5, rounded to 128. Bilinear on level 0 alias instead.
+        ScreenTriangles t = new ScreenTriangles();
+        t.add(0, 0, 1, 0, 0, 90, 0, 1, 657, 0, 0, 60, 1, 0, -438, 0, 0);
+        Texture[] textures = {checker(64, 64)};
+        for (boolean perspective : new boolean[] {true, false}) {
+            int[] tri = fill(t, textures, TextureFilter.TRILINEAR, perspective).color();
+            int[] bi = fill(t, textures, TextureFilter.BILINEAR, perspective).color();
+            int greyTri = 0;
+            int greyBi = 0;
+            int covered = 0;
+            for (int i = 0; i < tri.length; i++) {
+                if (tri[i] != 0xFF000000 || bi[i] != 0xFF000000) {
+                    covered++;
+                    greyTri += tri[i] == 0xFF808080 ? 1 : 0;
+                    greyBi += bi[i] == 0xFF808080 ? 1 : 0;
+                }
+            }
+            assertTrue(covered > 2000);
+            assertEquals(covered, greyTri, "trilinear, perspective " + perspective);
+            assertTrue(greyBi < covered / 2, "bilinear stays on level 0, perspective " + perspective);
+        }
+    }
+
+    @Test
+    void fillingInTilesGivesTheSamePixels() {
+        Random rnd = new Random(5);
+        ScreenTriangles t = new ScreenTriangles();
+        for (int k = 0; k < 60; k++) {
+            double x = rnd.nextDouble() * W;
+            double y = rnd.nextDouble() * H;
+            t.add(x, y, 0.1 + rnd.nextDouble(), 3 * x, 5 * y,
+                    x + rnd.nextGaussian() * 30, y + rnd.nextGaussian() * 30, 0.1 + rnd.nextDouble(), 170, -4,
+                    x + rnd.nextGaussian() * 30, y + rnd.nextGaussian() * 30, 0.1 + rnd.nextDouble(), -9, 400,
+                    k, k % 2);
+        }
+        Texture[] textures = {noise(16, 16, 3), noise(5, 7, 4)};
+        for (TextureFilter filter : new TextureFilter[] {TextureFilter.BILINEAR, TextureFilter.TRILINEAR}) {
+            for (boolean perspective : new boolean[] {true, false}) {
+                Framebuffer whole = fill(t, textures, filter, perspective);
+                Framebuffer tiled = new Framebuffer(W, H);
+                tiled.recordUv(true);
+                tiled.clearRows(0, H, 0);
+                Rasterizer r = new Rasterizer();
+                r.filter(filter);
+                for (int ty = 0; ty < H; ty += 7) {
+                    for (int tx = 0; tx < W; tx += 11) {
+                        r.fill(tiled, t, all(t), 0, t.count(), textures, perspective, tx, ty,
+                                Math.min(W, tx + 11), Math.min(H, ty + 7));
+                    }
+                }
+                assertArrayEquals(whole.color(), tiled.color(), filter + " " + perspective);
+                assertArrayEquals(whole.uv(), tiled.uv());
+                // The UV output does not depend on the filter.
+                assertArrayEquals(fill(t, textures, TextureFilter.NEAREST, perspective).uv(), whole.uv());
+            }
+        }
+    }
+}
