@@ -4,6 +4,7 @@ import dev.trisect.math.Vec3;
 import dev.trisect.math.Viewport;
 import dev.trisect.pipeline.CullMode;
 import dev.trisect.pipeline.RenderMode;
+import dev.trisect.tessellate.SplitPoint;
 import dev.trisect.tessellate.SplitPolicy;
 import dev.trisect.texture.TextureFilter;
 import java.util.Locale;
@@ -133,6 +134,12 @@ final class Converters {
     static final class SplitConverter extends NamedConverter<SplitPolicy> {
         SplitConverter() {
             super(SplitPolicy.values(), "split policy");
+        }
+    }
+
+    static final class SplitPointConverter extends NamedConverter<SplitPoint> {
+        SplitPointConverter() {
+            super(SplitPoint.values(), "split point");
         }
     }
 

@@ -3,6 +3,7 @@ package dev.trisect.cli;
 import dev.trisect.base.InputException;
 import dev.trisect.pipeline.RenderMode;
 import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.tessellate.SplitPoint;
 import dev.trisect.tessellate.SplitPolicy;
 import dev.trisect.tessellate.TessellationSettings;
 import dev.trisect.texture.TextureFilter;
@@ -30,6 +31,13 @@ final class PathOptions {
             description = "Error policy: largest affine displacement allowed, pixels (default: ${DEFAULT-VALUE}).")
     double maxError;
 
+    @Option(names = "--split-point", paramLabel = "screen|geometric|midpoint", converter = Converters.SplitPointConverter.class,
+            defaultValue = "screen",
+            description = "Where an edge is cut: the point that projects to its screen midpoint (halves its screen "
+                    + "length, so the bound falls at every level), the point where its affine geometric mean depths, or its "
+                    + "3D midpoint (default: ${DEFAULT-VALUE}).")
+    SplitPoint splitPoint;
+
     @Option(names = "--max-depth", paramLabel = "N", defaultValue = "16",
             description = "Times an edge may be halved, 0..30 (default: ${DEFAULT-VALUE}).")
     int maxDepth;
@@ -55,7 +63,7 @@ final class PathOptions {
         if (maxPieces < 1) {
             throw InputException.usage("--max-pieces must be at least 1, got " + maxPieces);
         }
-        return new TessellationSettings(split, maxEdge, maxError, maxDepth, maxPieces);
+        return new TessellationSettings(split, maxEdge, maxError, maxDepth, maxPieces, splitPoint);
     }
 
     /** Render settings for this path with the frame's culling and background. */

@@ -12,8 +12,10 @@ package dev.trisect.tessellate;
  *                  piece keeps the cap crack-free: both triangles sharing an edge see the same level.
  * @param maxPieces the most pieces one input triangle may become, &gt;= 1; when reached, the pieces
  *                  left are filled as they are and the cap is counted
+ * @param splitPoint where an edge is cut
  */
-public record TessellationSettings(SplitPolicy policy, double maxEdge, double maxError, int maxDepth, int maxPieces) {
+public record TessellationSettings(SplitPolicy policy, double maxEdge, double maxError, int maxDepth, int maxPieces,
+                                   SplitPoint splitPoint) {
 
     /** Default longest edge, pixels. */
     public static final double DEFAULT_MAX_EDGE = 32;
@@ -24,9 +26,15 @@ public record TessellationSettings(SplitPolicy policy, double maxEdge, double ma
     /** Default piece cap per input triangle. */
     public static final int DEFAULT_MAX_PIECES = 1 << 16;
 
+    /** Default split point: the screen midpoint, which converges (see {@link SplitPoint#SCREEN}). */
+    public static final SplitPoint DEFAULT_SPLIT_POINT = SplitPoint.SCREEN;
+
     public TessellationSettings {
         if (policy == null) {
             throw new IllegalArgumentException("split policy is missing");
+        }
+        if (splitPoint == null) {
+            throw new IllegalArgumentException("split point is missing");
         }
         if (!(maxEdge > 0) || Double.isInfinite(maxEdge)) {
             throw new IllegalArgumentException("max edge must be a positive number of pixels, got " + maxEdge);
@@ -42,34 +50,39 @@ public record TessellationSettings(SplitPolicy policy, double maxEdge, double ma
         }
     }
 
-    /** The defaults: edge policy, 32 px, 0.5 px, depth 16, 65536 pieces. */
+    /** The defaults: edge policy, 32 px, 0.5 px, depth 16, 65536 pieces, cut at the screen midpoint. */
     public static TessellationSettings defaults() {
         return new TessellationSettings(SplitPolicy.EDGE, DEFAULT_MAX_EDGE, DEFAULT_MAX_ERROR,
-                DEFAULT_MAX_DEPTH, DEFAULT_MAX_PIECES);
+                DEFAULT_MAX_DEPTH, DEFAULT_MAX_PIECES, DEFAULT_SPLIT_POINT);
     }
 
     /** A copy with another policy. */
     public TessellationSettings withPolicy(SplitPolicy p) {
-        return new TessellationSettings(p, maxEdge, maxError, maxDepth, maxPieces);
+        return new TessellationSettings(p, maxEdge, maxError, maxDepth, maxPieces, splitPoint);
     }
 
     /** A copy with another max edge. */
     public TessellationSettings withMaxEdge(double px) {
-        return new TessellationSettings(policy, px, maxError, maxDepth, maxPieces);
+        return new TessellationSettings(policy, px, maxError, maxDepth, maxPieces, splitPoint);
     }
 
     /** A copy with another max error. */
     public TessellationSettings withMaxError(double px) {
-        return new TessellationSettings(policy, maxEdge, px, maxDepth, maxPieces);
+        return new TessellationSettings(policy, maxEdge, px, maxDepth, maxPieces, splitPoint);
     }
 
     /** A copy with another depth cap. */
     public TessellationSettings withMaxDepth(int depth) {
-        return new TessellationSettings(policy, maxEdge, maxError, depth, maxPieces);
+        return new TessellationSettings(policy, maxEdge, maxError, depth, maxPieces, splitPoint);
     }
 
     /** A copy with another piece cap. */
     public TessellationSettings withMaxPieces(int pieces) {
-        return new TessellationSettings(policy, maxEdge, maxError, maxDepth, pieces);
+        return new TessellationSettings(policy, maxEdge, maxError, maxDepth, pieces, splitPoint);
+    }
+
+    /** A copy with another split point. */
+    public TessellationSettings withSplitPoint(SplitPoint point) {
+        return new TessellationSettings(policy, maxEdge, maxError, maxDepth, maxPieces, point);
     }
 }

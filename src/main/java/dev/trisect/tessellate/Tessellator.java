@@ -4,13 +4,15 @@ import dev.trisect.math.Viewport;
 import java.util.Arrays;
 
 /**
- * Splits one triangle at edge midpoints until every edge passes the split policy, and hands the
- * pieces to a {@link PieceSink} to be filled affinely.
+ * Splits one triangle, one edge at a time at its {@link SplitPoint}, until every edge passes the split
+ * policy, and hands the pieces to a {@link PieceSink} to be filled affinely.
  *
  * <p>Why this leaves no cracks: whether an edge is split depends only on that edge — its two
- * endpoints and its level (how many times it has been halved) — and the midpoint is the symmetric
- * {@code (a + b) * 0.5} of clip-space position and texel coordinates. Two triangles that share an edge
- * therefore cut it at the same points, bit for bit, and the pieces meet without T-junctions. The
+ * endpoints and its level (how many times it has been halved) — and the cut point is
+ * {@code (a * ka + b * kb) / (ka + kb)} with {@code ka} a function of b's depth and {@code kb} the
+ * same function of a's, which is the same expression bit for bit when a and b trade places (IEEE
+ * addition and multiplication are commutative). Two triangles that share an edge therefore cut it at
+ * the same points, bit for bit, and the pieces meet without T-junctions. The
  * depth cap is a cap on edge levels for the same reason. Only the per-triangle piece cap, a guard
  * against enormous or degenerate input, can leave a split undone on one side of an edge; reaching it
  * is counted.
@@ -37,6 +39,7 @@ public final class Tessellator {
     private Viewport viewport = new Viewport(1, 1);
     private TessellationSettings settings = TessellationSettings.defaults();
     private boolean errorPolicy;
+    private SplitPoint splitPoint = SplitPoint.SCREEN;
     private double threshold;
 
     private double width = 1;
@@ -54,6 +57,7 @@ public final class Tessellator {
         this.height = viewport.height();
         this.settings = settings;
         this.errorPolicy = settings.policy() == SplitPolicy.ERROR;
+        this.splitPoint = settings.splitPoint();
         // The edge policy compares squared lengths, sparing a square root per edge.
         this.threshold = errorPolicy ? settings.maxError() : settings.maxEdge() * settings.maxEdge();
     }
@@ -195,7 +199,7 @@ public final class Tessellator {
             } else {
                 vp = v2; vq = v0; vr = v1; lpq = l2; lqr = l0; lrp = l1;
             }
-            int m = midpoint(vp, vq);
+            int m = cut(vp, vq);
             int half = lpq + 1;
             // The new inner edge m-r also gets level lpq + 1: every split then lowers the sum of
             // 2^(maxLevel - level) over a piece's edges, so splitting ends even without the piece cap.
@@ -240,11 +244,33 @@ public final class Tessellator {
         return o;
     }
 
-    private int midpoint(int a, int b) {
+    /**
+     * The cut point of edge a-b as a new vertex: {@code (a * ka + b * kb) / (ka + kb)} in clip space
+     * and texel coordinates, a point of the 3D edge, with weights from the view depths (see
+     * {@link SplitPoint}). Symmetric in a and b bit for bit.
+     */
+    private int cut(int a, int b) {
         int o = reserveVertex();
         double[] v = vertices;
+        double ka;
+        double kb;
+        switch (splitPoint) {
+            case SCREEN -> {
+                ka = v[b + 3];
+                kb = v[a + 3];
+            }
+            case GEOMETRIC -> {
+                ka = Math.sqrt(v[b + 3]);
+                kb = Math.sqrt(v[a + 3]);
+            }
+            default -> {
+                ka = 1;
+                kb = 1;
+            }
+        }
+        double sum = ka + kb;
         for (int k = 0; k < INPUT_STRIDE; k++) {
-            v[o + k] = (v[a + k] + v[b + k]) * 0.5;
+            v[o + k] = (v[a + k] * ka + v[b + k] * kb) / sum;
         }
         project(o);
         return o;

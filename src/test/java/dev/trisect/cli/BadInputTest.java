@@ -55,6 +55,7 @@ class BadInputTest {
         "--max-depth|-1|--max-depth must be between 0 and 30",
         "--max-depth|31|--max-depth must be between 0 and 30",
         "--max-pieces|0|--max-pieces must be at least 1",
+        "--split-point|middle|is not a split point: use midpoint, screen or geometric",
         "--eye|1,2|not a point",
         "--eye|1,NaN,2|not a point",
         "--target|a,b,c|not a point",

