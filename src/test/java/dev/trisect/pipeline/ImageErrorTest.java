@@ -1,13 +1,17 @@
 package dev.trisect.pipeline;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.math.Viewport;
 import dev.trisect.mesh.Mesh;
+import dev.trisect.metrics.ImageComparison;
+import dev.trisect.metrics.TexelToScreen;
 import dev.trisect.raster.Framebuffer;
 import dev.trisect.scene.Camera;
 import dev.trisect.tessellate.SplitPolicy;
 import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.texture.Texture;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.Test;
 
@@ -56,6 +60,36 @@ class ImageErrorTest {
 
     private static RenderSettings mode(RenderMode m) {
         return RenderSettings.defaults().withMode(m);
+    }
+
+    /**
+     * The exact displacement metric of {@code compare} and the demo ({@link TexelToScreen}) equals the
+     * ray-cast oracle's, pixel by pixel, on a floor cut by the near plane with large texel coordinates.
+     */
+    @Test
+    void exactDisplacementMetricEqualsTheRayOracle() {
+        Viewport viewport = new Viewport(W, H);
+        Texture[] textures = {TestScenes.distinctTexels()};
+        TexelToScreen maps = new TexelToScreen(FLOOR, textures, CAMERA.viewProjection(viewport), viewport);
+        for (RenderSettings s : new RenderSettings[] {mode(RenderMode.AFFINE), mode(RenderMode.PERSPECTIVE),
+                mode(RenderMode.TESSELLATED).withTessellation(
+                        TessellationSettings.defaults().withPolicy(SplitPolicy.ERROR).withMaxError(0.5))}) {
+            Framebuffer fb = TestScenes.render(RENDERER, FLOOR, CAMERA, s, W, H);
+            float[] uv = fb.uv();
+            float[] metric = new float[W * H];
+            ImageComparison.displacements(W, H, uv, uv, maps, metric);
+            int checked = 0;
+            for (int i = 0; i < W * H; i++) {
+                if (uv[3 * i + 2] == 0) {
+                    continue;
+                }
+                double[] at = ORACLE.screenOf(uv[3 * i], uv[3 * i + 1]);
+                double oracle = Math.hypot(at[0] - (i % W + 0.5), at[1] - (i / W + 0.5));
+                assertEquals(oracle, metric[i], 1e-4 + 1e-6 * oracle, s.mode() + " pixel " + i);
+                checked++;
+            }
+            assertTrue(checked > W * H / 3, "checked " + checked);
+        }
     }
 
     @Test
