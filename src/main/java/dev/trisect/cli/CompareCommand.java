@@ -60,18 +60,23 @@ final class CompareCommand extends SceneCommand {
         test.recordUv(true);
         reference.recordUv(true);
         var vp = camera.viewProjection(frame.size.viewport());
-        try (FrameRenderer renderer = common.renderer()) {
-            renderer.render(scene.mesh(), scene.textureArray(), vp, settings, test);
-            // The reference never carries the overlay: it is compared texel by texel.
-            renderer.render(scene.mesh(), scene.textureArray(), vp, settings.withMode(against).withBorders(false),
-                    reference);
-        }
         int w = test.width();
         int h = test.height();
         float[] displacement = heatmap == null ? null : new float[w * h];
         TexelToScreen exact = new TexelToScreen(scene.mesh(), scene.textureArray(), vp, frame.size.viewport());
-        Comparison c = ImageComparison.compare(w, h, test.color(), test.uv(), reference.color(), reference.uv(),
-                exact, displacement);
+        Comparison c;
+        try (FrameRenderer renderer = common.renderer()) {
+            renderer.render(scene.mesh(), scene.textureArray(), vp, settings.withMode(against).withBorders(false),
+                    reference);
+            // Measure the rendered image, never the overlay: borders are drawn only after comparing,
+            // and only into the --out image.
+            renderer.render(scene.mesh(), scene.textureArray(), vp, settings.withBorders(false), test);
+            c = ImageComparison.compare(w, h, test.color(), test.uv(), reference.color(), reference.uv(),
+                    exact, displacement);
+            if (settings.borders()) {
+                renderer.drawBorders(test);
+            }
+        }
         if (heatmap != null) {
             int[] argb = new int[w * h];
             HeatMap.render(displacement, test.uv(), reference.uv(), w, h, heatmapMax, argb);

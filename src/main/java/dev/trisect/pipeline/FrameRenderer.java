@@ -120,19 +120,37 @@ public final class FrameRenderer implements AutoCloseable {
             }
         });
         long rasterDone = System.nanoTime();
+        lastChunkCount = chunkCount;
         if (settings.borders()) {
-            parallel(bands, (w, b) -> {
-                int y0 = b * BAND_ROWS;
-                int y1 = Math.min(height, y0 + BAND_ROWS);
-                for (int c = 0; c < chunkCount; c++) {
-                    Chunk chunk = chunks[c];
-                    w.overlay.draw(frame, chunk.out, chunk.binItems, chunk.binStart[b], chunk.binStart[b + 1],
-                            0, y0, width, y1);
-                }
-            });
+            drawBorders(frame);
         }
         long end = System.nanoTime();
         return statistics(mesh.triangleCount(), chunkCount, start, transformed, geometryDone, rasterDone, end);
+    }
+
+    /**
+     * Outlines the pieces of the frame last drawn by {@link #render} into {@code frame}, exactly as
+     * rendering with borders on would have. Lets a caller measure the image before the overlay covers
+     * it (the comparison with another path must never count the overlay), then add the overlay.
+     * Valid until the next {@code render} or {@code coverage} call; {@code frame} must be the one rendered.
+     *
+     * @return nanoseconds it took
+     */
+    public long drawBorders(Framebuffer frame) {
+        long start = System.nanoTime();
+        int chunkCount = lastChunkCount;
+        int width = frame.width();
+        int height = frame.height();
+        parallel(bandCount(height), (w, b) -> {
+            int y0 = b * BAND_ROWS;
+            int y1 = Math.min(height, y0 + BAND_ROWS);
+            for (int c = 0; c < chunkCount; c++) {
+                Chunk chunk = chunks[c];
+                w.overlay.draw(frame, chunk.out, chunk.binItems, chunk.binStart[b], chunk.binStart[b + 1],
+                        0, y0, width, y1);
+            }
+        });
+        return System.nanoTime() - start;
     }
 
     /**
@@ -145,6 +163,7 @@ public final class FrameRenderer implements AutoCloseable {
     public int[] coverage(Mesh mesh, Texture[] textures, Mat4 viewProjection, RenderSettings settings,
                           int width, int height) {
         int chunkCount = geometry(mesh, textures, viewProjection, settings, width, height);
+        lastChunkCount = 0;
         int[] counts = new int[width * height];
         int bands = bandCount(height);
         parallel(bands, (w, b) -> {
@@ -164,6 +183,8 @@ public final class FrameRenderer implements AutoCloseable {
     }
 
     private long transformNanos;
+    /** Chunks holding the last rendered frame's screen triangles, for {@link #drawBorders}. */
+    private int lastChunkCount;
 
     /** Transforms, culls, clips and tessellates into the chunks, and bins them; returns the chunk count. */
     private int geometry(Mesh mesh, Texture[] textures, Mat4 viewProjection, RenderSettings settings,

@@ -17,6 +17,8 @@ final class FrameSlot {
     final BufferedImage image;
     /** Statistics of the frame this slot holds. */
     FrameStats stats;
+    /** Time the border overlay took on this frame, drawn after the engine's frame (0 when off). */
+    long overlayNanos;
     /** What the view showed when the frame was drawn. */
     ViewKind view = ViewKind.IMAGE;
     /** Split view divider, 0..1 of the width. */

@@ -149,23 +149,24 @@ final class RenderLoop implements Runnable {
         Viewport viewport = new Viewport(fw, fh);
         Mat4 vp = camera.viewProjection(viewport);
         var textures = scene.textureArray();
-        back.stats = renderer.render(scene.mesh(), textures, vp, settings.render(), fb);
+        if (needReference) {
+            if (reference == null || reference.width() != fw || reference.height() != fh) {
+                reference = new Framebuffer(fw, fh);
+                reference.recordUv(true);
+                displacement = new float[fw * fh];
+            }
+            renderer.render(scene.mesh(), textures, vp,
+                    settings.render().withMode(RenderMode.PERSPECTIVE).withBorders(false), reference);
+        }
+        // This path last, so that its pieces are the ones the overlay outlines; the overlay comes after
+        // the comparison, which measures the rendered image and never the borders.
+        back.stats = renderer.render(scene.mesh(), textures, vp, settings.render().withBorders(false), fb);
         frames++;
         back.serial = frames;
         back.camera = camera;
         back.view = settings.view();
         back.splitFraction = settings.splitFraction();
         back.heatmapMax = settings.heatmapMax();
-        if (!needReference) {
-            return;
-        }
-        if (reference == null || reference.width() != fw || reference.height() != fh) {
-            reference = new Framebuffer(fw, fh);
-            reference.recordUv(true);
-            displacement = new float[fw * fh];
-        }
-        renderer.render(scene.mesh(), textures, vp,
-                settings.render().withMode(RenderMode.PERSPECTIVE).withBorders(false), reference);
         if (compareDue) {
             long t0 = System.nanoTime();
             // The exact displacement: the loop knows the geometry (maps are built per visible triangle).
@@ -180,6 +181,8 @@ final class RenderLoop implements Runnable {
             ImageComparison.displacements(fw, fh, fb.uv(), reference.uv(),
                     new TexelToScreen(scene.mesh(), textures, vp, viewport), displacement);
         }
+        back.overlayNanos = settings.render().borders() && settings.view() != ViewKind.DIFFERENCE
+                ? renderer.drawBorders(fb) : 0;
         if (settings.view() == ViewKind.DIFFERENCE) {
             HeatMap.render(displacement, fb.uv(), reference.uv(), fw, fh, settings.heatmapMax(), fb.color());
         } else if (settings.view() == ViewKind.SPLIT) {

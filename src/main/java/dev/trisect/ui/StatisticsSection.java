@@ -48,8 +48,8 @@ final class StatisticsSection implements ToolSection {
         form.set("ms clip", ms(st.clipNanos()));
         form.set("ms tessellate", ms(st.tessellateNanos()));
         form.set("ms raster", ms(st.rasterNanos()));
-        form.set("ms overlay", ms(st.overlayNanos()));
-        form.set("ms total", ms(st.totalNanos()));
+        form.set("ms overlay", ms(st.overlayNanos() + front.overlayNanos));
+        form.set("ms total", ms(st.totalNanos() + front.overlayNanos));
         form.set("Triangles in", Long.toString(st.trianglesIn()));
         form.set("Culled", Long.toString(st.culled()));
         form.set("Pieces filled", Long.toString(st.pieces()));

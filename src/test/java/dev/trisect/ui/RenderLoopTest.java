@@ -36,9 +36,9 @@ class RenderLoopTest {
             // Bounded waiting (up to about 30 s), not timing: 1500 polls 20 ms apart.
             for (int poll = 0; poll < 1500; poll++) {
                 DemoState.Measurement m = state.measurement();
-                if (m != null && m.settings().equals(settings)) {
-                    // Frames keep flowing even though nobody paints them (the wait times out).
-                    assertTrue(state.progress().frames() >= 1);
+                // Frames keep flowing even though nobody paints them (the wait times out); the
+                // progress is published just after the frame that carries the measurement.
+                if (m != null && m.settings().equals(settings) && state.progress().frames() >= 1) {
                     return m;
                 }
                 Thread.sleep(20);
@@ -72,6 +72,22 @@ class RenderLoopTest {
         assertEquals(c.texelDifferShare(), number(json, "texel_differ_share"), 0.0);
         assertEquals(c.psnrDb(), number(json, "psnr_db"), 0.0);
         assertTrue(c.maxDisplacement() <= 0.7, "the error policy's bound holds in the demo too");
+    }
+
+    @Test
+    void theOverlayIsNeverMeasured() throws Exception {
+        ViewSettings plain = ViewSettings.defaults().withRender(ViewSettings.defaults().render()
+                .withTessellation(ViewSettings.defaults().render().tessellation().withPolicy(SplitPolicy.ERROR)
+                        .withMaxError(0.5)));
+        DemoState a = new DemoState(DemoScenes.demo());
+        a.viewSize(320, 180);
+        Comparison without = measure(a, plain).comparison();
+        DemoState b = new DemoState(DemoScenes.demo());
+        b.viewSize(320, 180);
+        Comparison with = measure(b, plain.withRender(plain.render().withBorders(true))).comparison();
+        assertEquals(without.psnrDb(), with.psnrDb(), 0.0, "PSNR of the image, not of the borders");
+        assertEquals(without.texelDifferShare(), with.texelDifferShare(), 0.0);
+        assertEquals(without.maxDisplacement(), with.maxDisplacement(), 0.0);
     }
 
     @Test
