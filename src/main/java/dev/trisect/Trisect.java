@@ -2,7 +2,9 @@ package dev.trisect;
 
 import dev.trisect.cli.Cli;
 import dev.trisect.ui.DemoApp;
+import java.io.PrintWriter;
 import java.util.Arrays;
+import java.util.List;
 
 /**
  * The program's entry point: without arguments (or with {@code demo ...}) the desktop demo,
@@ -20,7 +22,9 @@ public final class Trisect {
                 return; // the demo runs on; the JVM ends when its window closes
             }
         } else {
-            status = Cli.run(args);
+            // The demo joins the command list so that --help shows it; it is started above.
+            status = Cli.run(new PrintWriter(System.out, true), new PrintWriter(System.err, true),
+                    List.of(new DemoApp()), args);
         }
         System.exit(status);
     }

@@ -50,6 +50,15 @@ class LauncherTest {
     }
 
     @Test
+    void helpListsTheDemoAndTheDemosUsageNamesTheProgram() throws Exception {
+        Run help = launch("--help");
+        assertEquals(0, help.status(), help.err());
+        assertTrue(help.out().lines().anyMatch(l -> l.strip().startsWith("demo ")), help.out());
+        Run demo = launch("demo", "--help");
+        assertTrue(demo.out().startsWith("Usage: trisect demo "), demo.out());
+    }
+
+    @Test
     void argumentsRunTheCommandLine() throws Exception {
         Run r = launch("render", "--list-scenes");
         assertEquals(0, r.status(), r.err());

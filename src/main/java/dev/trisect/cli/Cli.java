@@ -2,6 +2,7 @@ package dev.trisect.cli;
 
 import dev.trisect.base.InputException;
 import java.io.PrintWriter;
+import java.util.List;
 import picocli.CommandLine;
 import picocli.CommandLine.ParseResult;
 
@@ -21,15 +22,24 @@ public final class Cli {
 
     /** Runs {@code args} writing to the given streams; returns the exit status. */
     public static int run(PrintWriter out, PrintWriter err, String... args) {
+        return run(out, err, List.of(), args);
+    }
+
+    /**
+     * Runs {@code args} with further picocli subcommands beside the built-in ones (the launcher adds
+     * the desktop demo, which lives above this package, so that {@code --help} lists it).
+     */
+    public static int run(PrintWriter out, PrintWriter err, List<Object> moreCommands, String... args) {
         System.setProperty("trisect.processors", Integer.toString(Runtime.getRuntime().availableProcessors()));
         CommandLine cl = new CommandLine(new TrisectCommand());
+        for (Object command : moreCommands) {
+            cl.addSubcommand(command);
+        }
         cl.setOut(out);
         cl.setErr(err);
         cl.setParameterExceptionHandler((ex, arguments) -> {
-            String where = ex.getCommandLine().getCommandName();
-            err.println("trisect " + (where.equals("trisect") ? "" : where + " ").trim() + ": "
-                    + firstLine(ex.getMessage()) + " (see " + ex.getCommandLine().getCommandSpec().qualifiedName()
-                    + " --help)");
+            String where = ex.getCommandLine().getCommandSpec().qualifiedName();
+            err.println(where + ": " + firstLine(ex.getMessage()) + " (see " + where + " --help)");
             err.flush();
             return 2;
         });

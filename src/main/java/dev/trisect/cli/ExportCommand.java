@@ -31,6 +31,7 @@ final class ExportCommand implements Callable<Integer> {
         }
         Scene scene = frame.loadScene(common::note);
         var camera = frame.camera(scene);
+        Outputs.createParent("--to", to);
         List<Path> maps = ObjWriter.write(to, scene.mesh(), scene.textures());
         common.out().printf("wrote %s (%d triangles, %d materials: %s)%n", to, scene.mesh().triangleCount(),
                 maps.size(), maps);

@@ -64,8 +64,14 @@ final class FrameOptions {
     CullMode cull;
 
     @Option(names = "--background", paramLabel = "RRGGBB", converter = Converters.ColourConverter.class,
-            defaultValue = "000000", description = "Background colour (default: ${DEFAULT-VALUE}).")
-    int background;
+            description = "Background colour (default: the scene's: 9DB8D3 sky for demo, as in the desktop demo; "
+                    + "000000 otherwise).")
+    Integer background;
+
+    /** The background colour, 0xRRGGBB: the one given, or the scene's own. */
+    int background() {
+        return background != null ? background : obj != null ? 0 : DemoScenes.background(scene);
+    }
 
     /** Prints the built-in scenes. */
     static void listScenes(java.io.PrintWriter out) {

@@ -1,6 +1,8 @@
 package dev.trisect.cli;
 
 import dev.trisect.base.InputException;
+import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
 
@@ -28,6 +30,24 @@ final class Outputs {
     static void checkPfm(String option, Path file) {
         if (!lower(file).endsWith(".pfm")) {
             throw InputException.usage(option + " " + file + ": the UV output is a PFM file (use .pfm)");
+        }
+    }
+
+    /**
+     * Creates the directory an output goes into, if missing: an export writes several files there
+     * (OBJ, MTL, textures), and asking the user to make it first gains nothing.
+     */
+    static void createParent(String option, Path file) {
+        Path parent = file.toAbsolutePath().getParent();
+        if (parent == null || Files.isDirectory(parent)) {
+            return;
+        }
+        try {
+            Files.createDirectories(parent);
+        } catch (IOException e) {
+            throw new InputException(option + " " + file + ": cannot create the directory " + parent + ": "
+                    + (e instanceof java.nio.file.FileAlreadyExistsException ? "a file of that name is in the way"
+                            : e.getMessage()), e);
         }
     }
 

@@ -68,6 +68,6 @@ final class PathOptions {
 
     /** Render settings for this path with the frame's culling and background. */
     RenderSettings settings(FrameOptions frame) {
-        return new RenderSettings(mode, tessellation(), frame.cull, frame.background, borders, filter);
+        return new RenderSettings(mode, tessellation(), frame.cull, frame.background(), borders, filter);
     }
 }

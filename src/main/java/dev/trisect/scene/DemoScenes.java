@@ -41,7 +41,18 @@ public final class DemoScenes {
                 + "angle and a globe", DemoScenes::demo));
     }
 
+    /** The demo scene's sky, 0xRRGGBB: its background in the desktop demo and on the command line. */
+    public static final int SKY = 0x9DB8D3;
+
     private DemoScenes() {
+    }
+
+    /**
+     * The background a built-in scene is drawn on by default, 0xRRGGBB: the sky for the demo scene,
+     * black for the others (and for names that are not built-in).
+     */
+    public static int background(String name) {
+        return "demo".equalsIgnoreCase(name) ? SKY : 0;
     }
 
     /** Names of the built-in scenes, in listing order. */

@@ -56,7 +56,8 @@ public final class DemoApp implements Callable<Integer> {
 
     /** Runs the demo's command line; returns a process exit status, or -1 when the demo is running. */
     public static int launch(String... args) {
-        CommandLine cl = new CommandLine(new DemoApp());
+        // Named as typed, so that its usage line reads "trisect demo".
+        CommandLine cl = new CommandLine(new DemoApp()).setCommandName("trisect demo");
         PrintWriter err = new PrintWriter(System.err, true);
         cl.setParameterExceptionHandler((ex, a) -> {
             err.println("trisect demo: " + ex.getMessage().lines().findFirst().orElse("invalid arguments")

@@ -1,6 +1,7 @@
 package dev.trisect.ui;
 
 import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.scene.DemoScenes;
 
 /**
  * Everything the user has chosen, as one immutable value: the event thread replaces it, the render
@@ -17,7 +18,7 @@ record ViewSettings(RenderSettings render, ViewKind view, double splitFraction, 
                     double renderScale, double heatmapMax) {
 
     static ViewSettings defaults() {
-        return new ViewSettings(RenderSettings.defaults().withBackground(0x9DB8D3), ViewKind.IMAGE, 0.5, true, 1.0, 2.0);
+        return new ViewSettings(RenderSettings.defaults().withBackground(DemoScenes.SKY), ViewKind.IMAGE, 0.5, true, 1.0, 2.0);
     }
 
     ViewSettings withRender(RenderSettings r) {
