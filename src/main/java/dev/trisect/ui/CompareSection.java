@@ -11,7 +11,8 @@ import javax.swing.JRadioButton;
 
 /** Developer tools: the live comparison with the per-pixel path, its numbers, and the view it shows. */
 final class CompareSection implements ToolSection {
-    static final String[] MEASURES = {"Max displacement", "p99 displacement", "Texels that differ", "PSNR", "Measured"};
+    static final String[] MEASURES = {"Max displacement", "p99 displacement", "Mean displacement", "Texels that differ",
+        "PSNR", "Measured"};
 
     private final DemoWindow owner;
     private final ToolsForm form = new ToolsForm("Compare with per-pixel");
@@ -36,9 +37,11 @@ final class CompareSection implements ToolSection {
                     + "draws the texel coordinates it shows, over pixels this path and the per-pixel path draw "
                     + "with the same triangle"},
             {MEASURES[1], "99th percentile of that exact distance, in pixels"},
-            {MEASURES[2], "Share of compared pixels whose sampled texel differs from the per-pixel path's"},
-            {MEASURES[3], "Peak signal-to-noise ratio of the colours against the per-pixel image, dB (higher is closer)"},
-            {MEASURES[4], "Age of these numbers and the time the comparison took"}});
+            {MEASURES[2], "Mean of that exact distance, in pixels; the count of pixels left out because their "
+                    + "triangle's texture coordinates span no area follows when there are any"},
+            {MEASURES[3], "Share of compared pixels whose sampled texel differs from the per-pixel path's"},
+            {MEASURES[4], "Peak signal-to-noise ratio of the colours against the per-pixel image, dB (higher is closer)"},
+            {MEASURES[5], "Age of these numbers and the time the comparison took"}});
         ButtonGroup views = new ButtonGroup();
         JPanel viewRow = new JPanel();
         viewRow.setLayout(new BoxLayout(viewRow, BoxLayout.X_AXIS));
@@ -96,12 +99,15 @@ final class CompareSection implements ToolSection {
         Comparison c = m.comparison();
         form.set(MEASURES[0], String.format(Locale.ROOT, "%.3f px", c.maxDisplacement()));
         form.set(MEASURES[1], String.format(Locale.ROOT, "%.3f px", c.p99Displacement()));
-        form.set(MEASURES[2], String.format(Locale.ROOT, "%.2f %%", 100 * c.texelDifferShare()));
-        form.set(MEASURES[3], Double.isInfinite(c.psnrDb()) ? "identical" : String.format(Locale.ROOT, "%.2f dB", c.psnrDb()));
-        form.set(MEASURES[4], String.format(Locale.ROOT, "%.1f s ago, %.0f ms", (System.nanoTime() - m.nanos()) / 1e9,
+        form.set(MEASURES[2], String.format(Locale.ROOT, "%.3f px", c.meanDisplacement())
+                + (c.degenerateUvPixels() > 0 ? String.format(Locale.ROOT, " (%d px no UV area)", c.degenerateUvPixels())
+                        : ""));
+        form.set(MEASURES[3], String.format(Locale.ROOT, "%.2f %%", 100 * c.texelDifferShare()));
+        form.set(MEASURES[4], Double.isInfinite(c.psnrDb()) ? "identical" : String.format(Locale.ROOT, "%.2f dB", c.psnrDb()));
+        form.set(MEASURES[5], String.format(Locale.ROOT, "%.1f s ago, %.0f ms", (System.nanoTime() - m.nanos()) / 1e9,
                 progress.compareMs()));
         if (now.render().mode() != m.settings().render().mode()) {
-            form.set(MEASURES[4], "updating\u2026");
+            form.set(MEASURES[5], "updating\u2026");
         }
     }
 

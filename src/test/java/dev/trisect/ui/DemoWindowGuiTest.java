@@ -224,6 +224,8 @@ class DemoWindowGuiTest {
                 .equals(window.devTools().readout("Max displacement"))));
         String p99 = onEdt(() -> window.devTools().readout("p99 displacement"));
         assertEquals(String.format(Locale.ROOT, "%.3f px", c.p99Displacement()), p99);
+        assertEquals(String.format(Locale.ROOT, "%.3f px", c.meanDisplacement()),
+                onEdt(() -> window.devTools().readout("Mean displacement")));
         assertNotNull(onEdt(() -> window.devTools().readout("PSNR")));
         List<String> args = CliArgs.compare(window.state().scene(), m);
         StringWriter out = new StringWriter();
@@ -233,6 +235,7 @@ class DemoWindowGuiTest {
         String json = out.toString();
         assertEquals(c.maxDisplacement(), number(json, "max_displacement"), 0.0, "same frame, same numbers");
         assertEquals(c.p99Displacement(), number(json, "p99_displacement"), 0.0);
+        assertEquals(c.meanDisplacement(), number(json, "mean_displacement"), 0.0);
         assertEquals(c.texelDifferShare(), number(json, "texel_differ_share"), 0.0);
         assertEquals(c.psnrDb(), number(json, "psnr_db"), 0.0);
     }
