@@ -20,7 +20,7 @@ import org.junit.jupiter.api.Test;
 class ArchitectureTest {
     /** Bottom to top. A package may use itself and the ones before it. */
     static final List<String> LAYERS = List.of(
-            "base", "math", "mesh", "texture", "tessellate", "raster", "pipeline", "metrics", "scene", "io",
+            "base", "math", "mesh", "texture", "tessellate", "raster", "pipeline", "metrics", "scene", "io", "perf",
             "ui", "cli");
 
     private static final Pattern REFERENCE = Pattern.compile("\\bdev\\.trisect\\.(\\w+)\\.");

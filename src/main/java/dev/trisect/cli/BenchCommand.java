@@ -6,10 +6,12 @@ import dev.trisect.io.ObjWriter;
 import dev.trisect.math.Mat4;
 import dev.trisect.math.Vec3;
 import dev.trisect.pipeline.FrameRenderer;
-import dev.trisect.pipeline.FrameStats;
 import dev.trisect.pipeline.RenderMode;
 import dev.trisect.pipeline.RenderSettings;
-import dev.trisect.raster.Framebuffer;
+import dev.trisect.perf.FrameBench;
+import dev.trisect.perf.FrameTimes;
+import dev.trisect.perf.Sweep;
+import dev.trisect.perf.SweepChart;
 import dev.trisect.scene.Camera;
 import dev.trisect.scene.Scene;
 import dev.trisect.texture.Texture;
@@ -56,10 +58,36 @@ final class BenchCommand extends SceneCommand {
     @Option(names = "--json", description = "One JSON line per path instead of a table.")
     boolean json;
 
+    @Option(names = "--sweep", description = "Measure the cost/quality curve instead: for each threshold of "
+            + "--edges and --errors, the tessellated path's median ms, pieces and exact displacement against the "
+            + "per-pixel frame (max and p99, pixels), with the per-pixel and affine paths as references.")
+    boolean sweep;
+
+    @Option(names = "--edges", split = ",", paramLabel = "PX[,PX...]", converter = Converters.PositiveConverter.class,
+            description = "Edge-policy thresholds for --sweep (default: 8,16,24,32,48,64,128,256).")
+    List<Double> edges;
+
+    @Option(names = "--errors", split = ",", paramLabel = "PX[,PX...]", converter = Converters.PositiveConverter.class,
+            description = "Error-policy thresholds for --sweep (default: 0.125,0.25,0.5,1,2,4,8).")
+    List<Double> errors;
+
+    @Option(names = "--plot", paramLabel = "FILE.png",
+            description = "With --sweep: also draw the curve (one panel per policy) to this PNG.")
+    Path plot;
+
     @Override
     void checkOutputs() {
         if (frames < 1 || warmup < 0) {
             throw InputException.usage("--frames must be at least 1 and --warmup at least 0");
+        }
+        if (!sweep && (plot != null || edges != null || errors != null)) {
+            throw InputException.usage("--plot, --edges and --errors go with --sweep");
+        }
+        if (sweep && glref != null) {
+            throw InputException.usage("--glref does not go with --sweep");
+        }
+        if (plot != null) {
+            Outputs.checkPng("--plot", plot);
         }
     }
 
@@ -69,31 +97,37 @@ final class BenchCommand extends SceneCommand {
         if (glref != null) {
             Arrays.fill(textures, textures[0]);
         }
-        Framebuffer fb = Frames.allocate(frame.size);
         Mat4 vp = camera.viewProjection(frame.size.viewport());
         List<String> lines = new ArrayList<>();
         int threads;
-        try (FrameRenderer renderer = common.renderer()) {
+        try (FrameRenderer renderer = common.renderer();
+             ProgressLine progress = ProgressLine.forTerminal(common.err())) {
             threads = renderer.threads();
+            if (sweep) {
+                Sweep.Result result = Sweep.run(renderer, scene, textures, vp, frame.size.width(),
+                        frame.size.height(), path.settings(frame), edges == null ? Sweep.DEFAULT_EDGES : edges,
+                        errors == null ? Sweep.DEFAULT_ERRORS : errors, warmup, frames, progress.task("sweep"));
+                progress.close();
+                SweepOutput output = new SweepOutput(scene.name(), frame.size.toString(), threads);
+                lines.addAll(json ? output.json(result) : output.table(result));
+                if (plot != null) {
+                    SweepChart.write(result, scene.name() + " " + frame.size + ", " + threads + " threads", plot);
+                }
+                lines.forEach(common.out()::println);
+                common.out().flush();
+                return 0;
+            }
             if (!json) {
                 lines.add(String.format(Locale.ROOT, "scene %s, %s, %d triangles, %d threads, %d frames after %d "
                         + "warm-up", scene.name(), frame.size, scene.mesh().triangleCount(), threads, frames, warmup));
-                lines.add(String.format(Locale.ROOT, "%-12s %10s %10s %10s %8s %10s", "path", "median ms", "mean ms",
-                        "p95 ms", "fps", "pieces"));
+                lines.add(String.format(Locale.ROOT, "%-12s %10s %10s %10s %10s %8s %10s", "path", "median ms",
+                        "min ms", "mean ms", "p95 ms", "fps", "pieces"));
             }
+            FrameBench bench = new FrameBench(renderer, scene, textures, vp, Frames.allocate(frame.size));
             for (RenderMode mode : modes) {
                 RenderSettings settings = path.settings(frame).withMode(mode);
-                FrameStats last = null;
-                for (int i = 0; i < warmup; i++) {
-                    last = renderer.render(scene.mesh(), textures, vp, settings, fb);
-                }
-                double[] ms = new double[frames];
-                for (int i = 0; i < frames; i++) {
-                    long t0 = System.nanoTime();
-                    last = renderer.render(scene.mesh(), textures, vp, settings, fb);
-                    ms[i] = (System.nanoTime() - t0) / 1e6;
-                }
-                lines.add(row(mode.id(), ms, last.pieces()));
+                FrameBench.Result r = bench.time(settings, warmup, frames, progress.task(mode.id()));
+                lines.add(row(mode.id(), r, threads));
             }
         }
         if (glref != null) {
@@ -104,26 +138,26 @@ final class BenchCommand extends SceneCommand {
         return 0;
     }
 
-    private String row(String name, double[] ms, long pieces) {
-        double[] sorted = ms.clone();
-        Arrays.sort(sorted);
-        double median = sorted[sorted.length / 2];
-        double mean = Arrays.stream(ms).average().orElse(Double.NaN);
-        double p95 = sorted[Math.min(sorted.length - 1, (int) Math.ceil(sorted.length * 0.95) - 1)];
+    private String row(String name, FrameBench.Result r, int threads) {
+        FrameTimes t = r.times();
         if (json) {
             return new JsonObject()
                     .put("path", name)
                     .put("size", frame.size.toString())
-                    .put("frames", ms.length)
-                    .put("median_ms", median, 3)
-                    .put("mean_ms", mean, 3)
-                    .put("p95_ms", p95, 3)
-                    .put("fps", 1000 / median, 1)
-                    .put("pieces", pieces)
+                    .put("frames", t.frames())
+                    .put("median_ms", t.medianMs(), 3)
+                    .put("mean_ms", t.meanMs(), 3)
+                    .put("p95_ms", t.p95Ms(), 3)
+                    .put("fps", 1000 / t.medianMs(), 1)
+                    .put("pieces", r.last().pieces())
+                    .put("threads", threads)
+                    .put("min_ms", t.minMs(), 3)
+                    .put("pixels", (long) frame.size.width() * frame.size.height())
+                    .put("pixels_written", r.last().pixelsWritten())
                     .toString();
         }
-        return String.format(Locale.ROOT, "%-12s %10.3f %10.3f %10.3f %8.1f %10d", name, median, mean, p95,
-                1000 / median, pieces);
+        return String.format(Locale.ROOT, "%-12s %10.3f %10.3f %10.3f %10.3f %8.1f %10d", name, t.medianMs(),
+                t.minMs(), t.meanMs(), t.p95Ms(), 1000 / t.medianMs(), r.last().pieces());
     }
 
     private static final Pattern GLREF_OUT = Pattern.compile("ms_per_frame\\s+([0-9.]+)");

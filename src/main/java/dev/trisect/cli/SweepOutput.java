@@ -1,0 +1,80 @@
+package dev.trisect.cli;
+
+import dev.trisect.base.JsonObject;
+import dev.trisect.perf.Sweep;
+import dev.trisect.tessellate.SplitPolicy;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+/** The lines {@code bench --sweep} prints: a table, or one JSON object per setting plus a summary. */
+final class SweepOutput {
+    private final String scene;
+    private final String size;
+    private final int threads;
+
+    SweepOutput(String scene, String size, int threads) {
+        this.scene = scene;
+        this.size = size;
+        this.threads = threads;
+    }
+
+    List<String> table(Sweep.Result r) {
+        List<String> lines = new ArrayList<>();
+        lines.add(String.format(Locale.ROOT, "scene %s, %s, %d threads, %d frames per setting", scene, size, threads,
+                r.perspective().times().frames()));
+        lines.add(String.format(Locale.ROOT, "%-12s %10s %10s %10s %12s %12s", "setting", "median ms", "vs pp",
+                "pieces", "max disp px", "p99 disp px"));
+        double reference = r.perspective().times().medianMs();
+        List<Sweep.Point> all = new ArrayList<>(List.of(r.perspective(), r.affine()));
+        all.addAll(r.points());
+        for (Sweep.Point p : all) {
+            lines.add(String.format(Locale.ROOT, "%-12s %10.3f %9.2fx %10d %12.3f %12.3f", p.label(),
+                    p.times().medianMs(), p.times().medianMs() / reference, p.pieces(), p.maxDisplacement(),
+                    p.p99Displacement()));
+        }
+        for (SplitPolicy policy : SplitPolicy.values()) {
+            double t = r.breakEven(policy);
+            lines.add(Double.isNaN(t)
+                    ? String.format(Locale.ROOT, "%s policy: no threshold measured is as fast as the per-pixel path",
+                    name(policy))
+                    : String.format(Locale.ROOT, "%s policy: the finest threshold as fast as the per-pixel path is %s px",
+                    name(policy), t));
+        }
+        return lines;
+    }
+
+    List<String> json(Sweep.Result r) {
+        List<String> lines = new ArrayList<>();
+        List<Sweep.Point> all = new ArrayList<>(List.of(r.perspective(), r.affine()));
+        all.addAll(r.points());
+        for (Sweep.Point p : all) {
+            lines.add(new JsonObject()
+                    .put("scene", scene)
+                    .put("size", size)
+                    .put("threads", threads)
+                    .put("path", p.mode().id())
+                    .put("policy", p.policy() == null ? null : name(p.policy()))
+                    .put("threshold", p.threshold())
+                    .put("frames", p.times().frames())
+                    .put("median_ms", p.times().medianMs(), 3)
+                    .put("min_ms", p.times().minMs(), 3)
+                    .put("pieces", p.pieces())
+                    .put("max_displacement", p.maxDisplacement(), 4)
+                    .put("p99_displacement", p.p99Displacement(), 4)
+                    .toString());
+        }
+        lines.add(new JsonObject()
+                .put("scene", scene)
+                .put("size", size)
+                .put("threads", threads)
+                .put("break_even_max_edge", r.breakEven(SplitPolicy.EDGE))
+                .put("break_even_max_error", r.breakEven(SplitPolicy.ERROR))
+                .toString());
+        return lines;
+    }
+
+    private static String name(SplitPolicy policy) {
+        return policy.name().toLowerCase(Locale.ROOT);
+    }
+}

@@ -1,0 +1,79 @@
+package dev.trisect.perf;
+
+import dev.trisect.math.Mat4;
+import dev.trisect.pipeline.FrameRenderer;
+import dev.trisect.pipeline.FrameStats;
+import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.raster.Framebuffer;
+import dev.trisect.scene.Scene;
+import dev.trisect.texture.Texture;
+
+/**
+ * Times frames of one scene from one camera: a warm-up (so the JIT has compiled the hot loops), then
+ * frames measured one by one with the wall clock. Not thread-safe; one run at a time.
+ */
+public final class FrameBench {
+    /** Told after every frame, warm-up included: which of how many frames (warm-up first) is done. */
+    @FunctionalInterface
+    public interface Progress {
+        void frameDone(int done, int total);
+
+        /** Reports nothing. */
+        Progress NONE = (done, total) -> { };
+    }
+
+    /** What one timed run gave: the times and the statistics of its last frame. */
+    public record Result(FrameTimes times, FrameStats last) {
+    }
+
+    private final FrameRenderer renderer;
+    private final Scene scene;
+    private final Texture[] textures;
+    private final Mat4 viewProjection;
+    private final Framebuffer frame;
+
+    /**
+     * @param textures       the texture of each material, by material index
+     * @param viewProjection world space to clip space
+     * @param frame          the frame to draw into, whose size is the benchmark's
+     */
+    public FrameBench(FrameRenderer renderer, Scene scene, Texture[] textures, Mat4 viewProjection,
+                      Framebuffer frame) {
+        this.renderer = renderer;
+        this.scene = scene;
+        this.textures = textures;
+        this.viewProjection = viewProjection;
+        this.frame = frame;
+    }
+
+    /** The frame drawn into (it holds the last frame rendered). */
+    public Framebuffer frame() {
+        return frame;
+    }
+
+    /** Renders one frame with these settings, untimed. */
+    public FrameStats render(RenderSettings settings) {
+        return renderer.render(scene.mesh(), textures, viewProjection, settings, frame);
+    }
+
+    /** Renders {@code warmup} frames, then times {@code frames} frames (at least 1). */
+    public Result time(RenderSettings settings, int warmup, int frames, Progress progress) {
+        if (frames < 1 || warmup < 0) {
+            throw new IllegalArgumentException("frames must be at least 1 and warmup at least 0");
+        }
+        int total = warmup + frames;
+        FrameStats last = null;
+        for (int i = 0; i < warmup; i++) {
+            last = render(settings);
+            progress.frameDone(i + 1, total);
+        }
+        double[] ms = new double[frames];
+        for (int i = 0; i < frames; i++) {
+            long t0 = System.nanoTime();
+            last = render(settings);
+            ms[i] = (System.nanoTime() - t0) / 1e6;
+            progress.frameDone(warmup + i + 1, total);
+        }
+        return new Result(FrameTimes.of(ms), last);
+    }
+}
