@@ -34,7 +34,8 @@ final class CliArgs {
                 "--background", String.format(Locale.ROOT, "%06X", r.background()),
                 "--mode", r.mode().id(), "--split", t.policy().name().toLowerCase(Locale.ROOT),
                 "--max-edge", Double.toString(t.maxEdge()), "--max-error", Double.toString(t.maxError()),
-                "--split-point", t.splitPoint().id(), "--max-depth", Integer.toString(t.maxDepth()), "--max-pieces", Integer.toString(t.maxPieces())));
+                "--split-point", t.splitPoint().id(), "--max-depth", Integer.toString(t.maxDepth()),
+                "--max-pieces", Integer.toString(t.maxPieces()), "--filter", r.filter().id()));
         if (r.borders()) {
             a.add("--borders");
         }

@@ -3,6 +3,7 @@ package dev.trisect.ui;
 import dev.trisect.base.InputException;
 import dev.trisect.io.ImageFiles;
 import dev.trisect.pipeline.RenderMode;
+import dev.trisect.texture.TextureFilter;
 import dev.trisect.pipeline.RenderSettings;
 import dev.trisect.scene.Scene;
 import dev.trisect.scene.SceneLoader;
@@ -25,6 +26,7 @@ import java.util.Locale;
 import java.util.concurrent.ExecutionException;
 import java.util.function.UnaryOperator;
 import javax.swing.AbstractAction;
+import javax.swing.Action;
 import javax.swing.ActionMap;
 import javax.swing.BorderFactory;
 import javax.swing.ButtonGroup;
@@ -67,6 +69,8 @@ final class DemoWindow {
     final Command bordersCommand;
     final Command orbitCommand;
     final Command resetCommand;
+    /** Steps the texture filter: nearest, bilinear, trilinear, nearest... Named after the current one. */
+    final Command filterCommand;
     final Command screenshotCommand;
     final Command openCommand;
     final Command exitCommand;
@@ -91,6 +95,12 @@ final class DemoWindow {
                     orbitCommand.show(false);
                     state.input.requestReset();
                 });
+        filterCommand = Command.action("Texture filter", "Next texture filter: nearest, bilinear, trilinear "
+                + "(OpenGL's GL_NEAREST, GL_LINEAR, GL_LINEAR_MIPMAP_LINEAR)", KeyStroke.getKeyStroke(KeyEvent.VK_F, 0),
+                () -> {
+                    TextureFilter[] all = TextureFilter.values();
+                    selectFilter(all[(state.settings().render().filter().ordinal() + 1) % all.length]);
+                });
         screenshotCommand = Command.action("Save screenshot", "Save the frame on screen as a PNG in the working directory",
                 KeyStroke.getKeyStroke(KeyEvent.VK_S, InputEvent.CTRL_DOWN_MASK), this::saveScreenshot);
         openCommand = Command.action("Open OBJ\u2026", "Load a Wavefront OBJ model (with its map_Kd textures)",
@@ -109,6 +119,7 @@ final class DemoWindow {
         }
         modeCommands.get(state.settings().render().mode().ordinal()).show(true);
         bordersCommand.show(state.settings().render().borders());
+        showFilter(state.settings().render().filter());
 
         frame.setJMenuBar(menus());
         JPanel bottom = new JPanel(new BorderLayout());
@@ -209,6 +220,16 @@ final class DemoWindow {
         update(s -> s.withRender(s.render().withMode(m)));
     }
 
+    /** Sets the texture filter, in every path. */
+    void selectFilter(TextureFilter f) {
+        showFilter(f);
+        update(s -> s.withRender(s.render().withFilter(f)));
+    }
+
+    private void showFilter(TextureFilter f) {
+        filterCommand.putValue(Action.NAME, "Texture filter: " + f.id());
+    }
+
     private JMenuBar menus() {
         JMenuBar bar = new JMenuBar();
         JMenu file = new JMenu("File");
@@ -223,6 +244,7 @@ final class DemoWindow {
         viewMenu.add(new JCheckBoxMenuItem(bordersCommand));
         viewMenu.add(new JCheckBoxMenuItem(orbitCommand));
         viewMenu.add(new JMenuItem(resetCommand));
+        viewMenu.add(new JMenuItem(filterCommand));
         JMenu render = new JMenu("Render");
         render.setMnemonic(KeyEvent.VK_R);
         ButtonGroup group = new ButtonGroup();
@@ -241,7 +263,7 @@ final class DemoWindow {
     private void bindKeys(JComponent root) {
         InputMap in = root.getInputMap(JComponent.WHEN_IN_FOCUSED_WINDOW);
         ActionMap act = root.getActionMap();
-        List<Command> commands = new ArrayList<>(List.of(devToolsCommand, bordersCommand, orbitCommand, resetCommand,
+        List<Command> commands = new ArrayList<>(List.of(devToolsCommand, bordersCommand, orbitCommand, resetCommand, filterCommand,
                 screenshotCommand, openCommand, exitCommand));
         commands.addAll(modeCommands);
         for (Command c : commands) {

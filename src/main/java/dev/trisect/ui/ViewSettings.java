@@ -2,6 +2,7 @@ package dev.trisect.ui;
 
 import dev.trisect.pipeline.RenderSettings;
 import dev.trisect.scene.DemoScenes;
+import dev.trisect.texture.TextureFilter;
 
 /**
  * Everything the user has chosen, as one immutable value: the event thread replaces it, the render
@@ -18,7 +19,8 @@ record ViewSettings(RenderSettings render, ViewKind view, double splitFraction, 
                     double renderScale, double heatmapMax) {
 
     static ViewSettings defaults() {
-        return new ViewSettings(RenderSettings.defaults().withBackground(DemoScenes.SKY), ViewKind.IMAGE, 0.5, true, 1.0, 2.0);
+        return new ViewSettings(RenderSettings.defaults().withBackground(DemoScenes.SKY).withFilter(TextureFilter.TRILINEAR),
+                ViewKind.IMAGE, 0.5, true, 1.0, 2.0);
     }
 
     ViewSettings withRender(RenderSettings r) {

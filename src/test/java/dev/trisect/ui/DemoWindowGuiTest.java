@@ -9,6 +9,7 @@ import dev.trisect.cli.Cli;
 import dev.trisect.metrics.Comparison;
 import dev.trisect.pipeline.RenderMode;
 import dev.trisect.scene.DemoScenes;
+import dev.trisect.texture.TextureFilter;
 import java.awt.GraphicsEnvironment;
 import java.awt.Robot;
 import java.awt.Window;
@@ -23,6 +24,7 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import javax.swing.Action;
 import javax.swing.JDialog;
 import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.AfterAll;
@@ -201,6 +203,24 @@ class DemoWindowGuiTest {
             affineDiffer += frames[0][i] != frames[1][i] ? 1 : 0;
         }
         assertTrue(differ < affineDiffer, "tessellated is closer to perspective than affine is");
+    }
+
+    @Test
+    @Order(4)
+    void fStepsTheTextureFilterFromTrilinear() throws Exception {
+        assertEquals(TextureFilter.TRILINEAR, window.state().settings().render().filter(), "the demo opens trilinear");
+        TextureFilter[] order = {TextureFilter.NEAREST, TextureFilter.BILINEAR, TextureFilter.TRILINEAR};
+        int[][] frames = new int[3][];
+        for (int i = 0; i < 3; i++) {
+            TextureFilter f = order[i];
+            press(KeyEvent.VK_F);
+            waitFor(f.id(), () -> window.state().settings().render().filter() == f);
+            frames[i] = freshFrame();
+            assertEquals("Texture filter: " + f.id(), onEdt(() -> window.filterCommand.getValue(Action.NAME)),
+                    "the View menu entry names the filter");
+        }
+        assertFalse(Arrays.equals(frames[0], frames[1]), "bilinear differs from nearest");
+        assertFalse(Arrays.equals(frames[1], frames[2]), "trilinear differs from bilinear");
     }
 
     private static double number(String json, String key) {
