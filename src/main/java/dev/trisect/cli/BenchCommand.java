@@ -42,6 +42,9 @@ final class BenchCommand extends SceneCommand {
             defaultValue = "perspective,affine,tessellated", description = "Paths to measure (default: all three).")
     List<RenderMode> modes;
 
+    /** Most frames measured, or rendered to warm up, per path. */
+    static final int MAX_FRAMES = 1_000_000;
+
     @Option(names = "--frames", paramLabel = "N", defaultValue = "200",
             description = "Frames measured per path (default: ${DEFAULT-VALUE}).")
     int frames;
@@ -77,8 +80,12 @@ final class BenchCommand extends SceneCommand {
 
     @Override
     void checkOutputs() {
-        if (frames < 1 || warmup < 0) {
-            throw InputException.usage("--frames must be at least 1 and --warmup at least 0");
+        // Bounded so that the per-frame times (and the run) stay of a sensible size.
+        if (frames < 1 || frames > MAX_FRAMES) {
+            throw InputException.usage("--frames must be between 1 and " + MAX_FRAMES + ", got " + frames);
+        }
+        if (warmup < 0 || warmup > MAX_FRAMES) {
+            throw InputException.usage("--warmup must be between 0 and " + MAX_FRAMES + ", got " + warmup);
         }
         if (!sweep && (plot != null || edges != null || errors != null)) {
             throw InputException.usage("--plot, --edges and --errors go with --sweep");

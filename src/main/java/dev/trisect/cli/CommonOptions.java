@@ -11,9 +11,22 @@ final class CommonOptions {
     @Spec(Spec.Target.MIXEE)
     CommandSpec spec;
 
+    /** Most threads a renderer may be given. */
+    static final int MAX_THREADS = 256;
+
+    /** Render threads, or null for one per processor. */
+    Integer threads;
+
+    /** Checked as it is parsed, so every command refuses a bad count the same way (exit status 2). */
     @Option(names = "--threads", paramLabel = "N",
             description = "Render threads (default: one per processor, here ${sys:trisect.processors}).")
-    Integer threads;
+    void threads(int n) {
+        if (n < 1 || n > MAX_THREADS) {
+            throw new picocli.CommandLine.ParameterException(spec.commandLine(),
+                    "--threads must be between 1 and " + MAX_THREADS + ", got " + n);
+        }
+        threads = n;
+    }
 
     @Option(names = "--verbose", description = "On an error, also print the stack trace.")
     boolean verbose;
@@ -33,10 +46,7 @@ final class CommonOptions {
     }
 
     FrameRenderer renderer() {
-        int n = threads == null ? Runtime.getRuntime().availableProcessors() : threads;
-        if (n < 1 || n > 256) {
-            throw dev.trisect.base.InputException.usage("--threads must be between 1 and 256, got " + n);
-        }
+        int n = threads == null ? Math.min(MAX_THREADS, Runtime.getRuntime().availableProcessors()) : threads;
         return new FrameRenderer(n);
     }
 }

@@ -2,6 +2,7 @@ package dev.trisect.cli;
 
 import dev.trisect.base.JsonObject;
 import dev.trisect.io.ImageFiles;
+import dev.trisect.io.OutputBatch;
 import dev.trisect.metrics.Comparison;
 import dev.trisect.metrics.HeatMap;
 import dev.trisect.metrics.ImageComparison;
@@ -49,6 +50,9 @@ final class CompareCommand extends SceneCommand {
         }
         if (out != null) {
             Outputs.checkImage("--out", out);
+            if (heatmap != null) {
+                Outputs.checkDistinct("--heatmap", heatmap, "--out", out);
+            }
         }
     }
 
@@ -77,13 +81,16 @@ final class CompareCommand extends SceneCommand {
                 renderer.drawBorders(test);
             }
         }
-        if (heatmap != null) {
-            int[] argb = new int[w * h];
-            HeatMap.render(displacement, test.uv(), reference.uv(), w, h, heatmapMax, argb);
-            ImageFiles.write(heatmap, w, h, argb);
-        }
-        if (out != null) {
-            ImageFiles.write(out, w, h, test.color());
+        try (OutputBatch batch = new OutputBatch()) {
+            if (heatmap != null) {
+                int[] argb = new int[w * h];
+                HeatMap.render(displacement, test.uv(), reference.uv(), w, h, heatmapMax, argb);
+                ImageFiles.write(batch, heatmap, w, h, argb);
+            }
+            if (out != null) {
+                ImageFiles.write(batch, out, w, h, test.color());
+            }
+            batch.commit();
         }
         common.out().println(new JsonObject()
                 .put("mode", path.mode.id())

@@ -29,6 +29,7 @@ final class ExportCommand implements Callable<Integer> {
             FrameOptions.listScenes(common.out());
             return 0;
         }
+        Outputs.checkObj("--to", to);
         Scene scene = frame.loadScene(common::note);
         var camera = frame.camera(scene);
         Outputs.createParent("--to", to);

@@ -51,6 +51,25 @@ final class Outputs {
         }
     }
 
+    /**
+     * Two outputs of one command must be different files, or one would silently replace the other.
+     * Paths are compared absolute and normalized ({@code a/../x.png} is {@code x.png}).
+     */
+    static void checkDistinct(String option, Path file, String otherOption, Path other) {
+        if (file.toAbsolutePath().normalize().equals(other.toAbsolutePath().normalize())) {
+            throw InputException.usage(option + " " + file + " and " + otherOption + " " + other
+                    + " are the same file; one output would replace the other");
+        }
+    }
+
+    /** An OBJ export target: .obj, since the MTL and textures beside it take its name with other extensions. */
+    static void checkObj(String option, Path file) {
+        if (!lower(file).endsWith(".obj")) {
+            throw InputException.usage(option + " " + file + ": must be a .obj file (the .mtl and .ppm files are "
+                    + "written beside it, named after it)");
+        }
+    }
+
     private static String lower(Path file) {
         Path name = file.getFileName();
         return name == null ? "" : name.toString().toLowerCase(Locale.ROOT);

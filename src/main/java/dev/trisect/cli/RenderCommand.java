@@ -1,6 +1,7 @@
 package dev.trisect.cli;
 
 import dev.trisect.io.ImageFiles;
+import dev.trisect.io.OutputBatch;
 import dev.trisect.io.Pfm;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.FrameStats;
@@ -36,6 +37,7 @@ final class RenderCommand extends SceneCommand {
         Outputs.checkImage("--out", out);
         if (uvOut != null) {
             Outputs.checkPfm("--uv-out", uvOut);
+            Outputs.checkDistinct("--out", out, "--uv-out", uvOut);
         }
     }
 
@@ -49,9 +51,13 @@ final class RenderCommand extends SceneCommand {
             s = renderer.render(scene.mesh(), scene.textureArray(), camera.viewProjection(frame.size.viewport()),
                     settings, fb);
         }
-        ImageFiles.write(out, fb.width(), fb.height(), fb.color());
-        if (uvOut != null) {
-            Pfm.write(uvOut, fb.width(), fb.height(), fb.uv());
+        // The image and its UV output belong together: both are written, or neither is changed.
+        try (OutputBatch batch = new OutputBatch()) {
+            ImageFiles.write(batch, out, fb.width(), fb.height(), fb.color());
+            if (uvOut != null) {
+                Pfm.write(batch, uvOut, fb.width(), fb.height(), fb.uv());
+            }
+            batch.commit();
         }
         if (stats) {
             common.out().println(s.toJson());

@@ -45,15 +45,26 @@ public final class ImageFiles {
      * @throws IllegalArgumentException when the size is not positive or does not match the array
      */
     public static void write(Path out, int width, int height, int[] argb) {
+        try (OutputBatch batch = new OutputBatch()) {
+            write(batch, out, width, height, argb);
+            batch.commit();
+        }
+    }
+
+    /**
+     * As {@link #write(Path, int, int, int[])}, but as part of {@code batch}: the file appears only when
+     * the batch is committed.
+     */
+    public static void write(OutputBatch batch, Path out, int width, int height, int[] argb) {
         if (width < 1 || height < 1 || (long) width * height != argb.length) {
             throw new IllegalArgumentException(
                     "image size " + width + "x" + height + " does not match " + argb.length + " pixels");
         }
         String name = String.valueOf(out.getFileName()).toLowerCase(Locale.ROOT);
         if (name.endsWith(".png")) {
-            OutputFiles.writeAtomically(out, stream -> writePng(stream, width, height, argb));
+            batch.write(out, stream -> writePng(stream, width, height, argb));
         } else if (name.endsWith(".ppm")) {
-            OutputFiles.writeAtomically(out, stream -> writePpm(stream, width, height, argb));
+            batch.write(out, stream -> writePpm(stream, width, height, argb));
         } else {
             throw InputException.usage(out + ": unsupported output format (use .png or .ppm)");
         }

@@ -24,8 +24,18 @@ public final class ObjWriter {
      * @param mesh     positions and UVs, written as floats exactly (shortest round-trip decimal)
      * @param textures one per material
      * @return the texture files written, by material
+     * @throws dev.trisect.base.InputException when a file cannot be written; then none of them is
+     *                                         (they are written as one {@link OutputBatch})
      */
     public static List<Path> write(Path obj, Mesh mesh, List<Texture> textures) {
+        try (OutputBatch batch = new OutputBatch()) {
+            List<Path> maps = write(batch, obj, mesh, textures);
+            batch.commit();
+            return maps;
+        }
+    }
+
+    private static List<Path> write(OutputBatch batch, Path obj, Mesh mesh, List<Texture> textures) {
         Path dir = obj.toAbsolutePath().getParent();
         String base = obj.getFileName().toString().replaceFirst("\\.[^.]*$", "");
         Path mtl = dir.resolve(base + ".mtl");
@@ -33,14 +43,14 @@ public final class ObjWriter {
         for (int m = 0; m < maps.length; m++) {
             maps[m] = dir.resolve(base + "-" + safe(mesh.materialNames().get(m)) + ".ppm");
             Texture t = textures.get(m);
-            ImageFiles.write(maps[m], t.width(), t.height(), t.argb());
+            ImageFiles.write(batch, maps[m], t.width(), t.height(), t.argb());
         }
-        writeText(mtl, w -> {
+        writeText(batch, mtl, w -> {
             for (int m = 0; m < maps.length; m++) {
                 w.write("newmtl " + mesh.materialNames().get(m) + "\nmap_Kd " + maps[m].getFileName() + "\n");
             }
         });
-        writeText(obj, w -> {
+        writeText(batch, obj, w -> {
             w.write("# written by Trisect\nmtllib " + mtl.getFileName() + "\n");
             float[] p = mesh.positions();
             for (int i = 0; i < p.length; i += 3) {
@@ -82,9 +92,9 @@ public final class ObjWriter {
         void write(Writer w) throws IOException;
     }
 
-    /** Writes a UTF-8 text file all or nothing. */
-    private static void writeText(Path file, Body body) {
-        OutputFiles.writeAtomically(file, out -> {
+    /** Writes a UTF-8 text file as part of {@code batch}. */
+    private static void writeText(OutputBatch batch, Path file, Body body) {
+        batch.write(file, out -> {
             Writer w = new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8));
             body.write(w);
             w.flush();

@@ -1,6 +1,7 @@
 package dev.trisect.io;
 
 import dev.trisect.base.InputException;
+import dev.trisect.math.Viewport;
 import java.io.BufferedInputStream;
 import java.io.IOException;
 import java.io.InputStream;
@@ -57,11 +58,22 @@ public final class Pfm {
      * @throws IllegalArgumentException when the size is not positive or does not match the array
      */
     public static void write(Path out, int width, int height, float[] uv3) {
+        try (OutputBatch batch = new OutputBatch()) {
+            write(batch, out, width, height, uv3);
+            batch.commit();
+        }
+    }
+
+    /**
+     * As {@link #write(Path, int, int, float[])}, but as part of {@code batch}: the file appears only
+     * when the batch is committed.
+     */
+    public static void write(OutputBatch batch, Path out, int width, int height, float[] uv3) {
         if (width < 1 || height < 1 || 3L * width * height != uv3.length) {
             throw new IllegalArgumentException(
                     "image size " + width + "x" + height + " does not match " + uv3.length + " floats (3 a pixel)");
         }
-        OutputFiles.writeAtomically(out, stream -> writeData(stream, width, height, uv3));
+        batch.write(out, stream -> writeData(stream, width, height, uv3));
     }
 
     private static void writeData(OutputStream stream, int width, int height, float[] uv3) throws IOException {
@@ -89,16 +101,22 @@ public final class Pfm {
         if (Files.isDirectory(in)) {
             throw new InputException(in + ": cannot read: it is a directory");
         }
+        // A pipe or device could block forever or never end; only regular files are read.
+        if (Files.exists(in) && !Files.isRegularFile(in)) {
+            throw new InputException(in + ": cannot read: not a regular file");
+        }
         try (InputStream stream = new BufferedInputStream(Files.newInputStream(in), 1 << 16)) {
             Header header = new Header(in, stream);
             int channels = header.magic();
             int width = header.size("width");
             int height = header.size("height");
             ByteOrder order = header.byteOrder();
-            long expected = 4L * channels * width * height;
-            if (expected / 4 > Integer.MAX_VALUE - 8) {
-                throw malformed(in, "image " + width + "x" + height + " is too large");
+            // Checked before multiplying: a UV output is a frame, at most Viewport.MAX_SIDE on a side.
+            if (width > Viewport.MAX_SIDE || height > Viewport.MAX_SIDE) {
+                throw malformed(in, "the image is " + width + "x" + height + " pixels; at most "
+                        + Viewport.MAX_SIDE + " on a side is allowed");
             }
+            long expected = 4L * channels * width * height;
             long available = Files.size(in) - header.consumed;
             if (available != expected) {
                 throw malformed(in, "PFM data is " + (available < expected ? "short" : "too long") + ": "

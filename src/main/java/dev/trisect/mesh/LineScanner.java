@@ -15,10 +15,12 @@ import java.util.Arrays;
 /**
  * Streams the logical lines of a text file in the OBJ/MTL style and splits each into tokens.
  *
- * <p>Bytes are read as ISO-8859-1, so no content can cause a charset error. Every byte up to
- * {@code 0x20} separates tokens (which also swallows {@code \r} of {@code \r\n} endings). A line
- * whose last non-blank byte is a backslash continues on the next one. A token starting with
- * {@code #} starts a comment that runs to the end of the logical line.
+ * <p>Bytes are read as ISO-8859-1, so no content can cause a charset error; a UTF-8 byte-order mark
+ * at the start of the file is skipped. Lines end at {@code \n}, {@code \r\n} or a lone {@code \r}
+ * (classic Mac OS). Every byte up to {@code 0x20} separates tokens. A line whose last non-blank byte is
+ * a backslash continues on the next one. A token starting with {@code #} starts a comment that runs to
+ * the end of its physical line: the OBJ specification (Appendix B1, "Comments") says comments are not
+ * processed, so a backslash ending a comment is part of the comment and continues nothing.
  */
 final class LineScanner implements Closeable {
     /** Longest logical line accepted, in bytes: a guard against runaway memory on garbage input. */
@@ -30,6 +32,9 @@ final class LineScanner implements Closeable {
     private int chunkPos;
     private int chunkLen;
     private boolean atEof;
+    private boolean started;
+    /** The previous physical line ended in {@code \r}: a {@code \n} right after it belongs to that end. */
+    private boolean skipLineFeed;
 
     private byte[] line = new byte[256];
     private int lineLen;
@@ -93,7 +98,7 @@ final class LineScanner implements Closeable {
             while (end > before && (line[end - 1] & 0xff) <= ' ') {
                 end--;
             }
-            boolean continues = end > before && line[end - 1] == '\\';
+            boolean continues = end > before && line[end - 1] == '\\' && !hasComment(before, end);
             if (continues) {
                 line[end - 1] = ' ';
             }
@@ -105,20 +110,41 @@ final class LineScanner implements Closeable {
         return true;
     }
 
-    /** Appends bytes up to the next newline (dropped); false when the file ended first. */
+    /** Whether bytes [from, to) of the line, which start a token, contain the start of a comment. */
+    private boolean hasComment(int from, int to) {
+        boolean tokenStart = true;
+        for (int k = from; k < to; k++) {
+            boolean blank = (line[k] & 0xff) <= ' ';
+            if (tokenStart && line[k] == '#') {
+                return true;
+            }
+            tokenStart = blank;
+        }
+        return false;
+    }
+
+    /** Appends bytes up to the next line end (dropped); false when the file ended first. */
     private boolean appendPhysicalLine() {
         while (true) {
             if (chunkPos == chunkLen && !fill()) {
                 return false;
             }
+            if (skipLineFeed) {
+                skipLineFeed = false;
+                if (chunk[chunkPos] == '\n') {
+                    chunkPos++;
+                    continue;
+                }
+            }
             int from = chunkPos;
             int i = from;
-            while (i < chunkLen && chunk[i] != '\n') {
+            while (i < chunkLen && chunk[i] != '\n' && chunk[i] != '\r') {
                 i++;
             }
             append(from, i);
             chunkPos = i;
             if (i < chunkLen) {
+                skipLineFeed = chunk[i] == '\r';
                 chunkPos++;
                 return true;
             }
@@ -130,14 +156,21 @@ final class LineScanner implements Closeable {
             return false;
         }
         try {
-            int n = in.read(chunk);
-            if (n < 0) {
+            // The first read fills the chunk, so a byte-order mark is seen whole.
+            int n = started ? in.read(chunk) : in.readNBytes(chunk, 0, chunk.length);
+            chunkPos = 0;
+            if (!started) {
+                started = true;
+                if (n >= 3 && chunk[0] == (byte) 0xEF && chunk[1] == (byte) 0xBB && chunk[2] == (byte) 0xBF) {
+                    chunkPos = 3;
+                }
+            }
+            chunkLen = Math.max(n, 0);
+            if (n <= 0) {
                 atEof = true;
                 return false;
             }
-            chunkPos = 0;
-            chunkLen = n;
-            return true;
+            return chunkPos < chunkLen || fill();
         } catch (IOException e) {
             throw new InputException(label + ": cannot read: " + reason(e), e);
         }

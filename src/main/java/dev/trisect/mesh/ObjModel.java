@@ -15,17 +15,25 @@ import java.util.Objects;
  *                         absolute, normalized path of its {@code map_Kd} file, or null where the
  *                         material has none (or was not read). The file's existence is not checked.
  *                         Unmodifiable; may contain nulls.
+ * @param textureSources   one entry per material, same order: where its {@code map_Kd} was given, as
+ *                         {@code mtl-file:line} for messages, or null where there is none. Unmodifiable.
  */
-public record ObjModel(Mesh mesh, List<Path> materialTextures) {
+public record ObjModel(Mesh mesh, List<Path> materialTextures, List<String> textureSources) {
 
-    /** Checks that there is one texture entry per material and keeps an unmodifiable copy. */
+    /** Checks that there is one entry per material in each list and keeps unmodifiable copies. */
     public ObjModel {
         Objects.requireNonNull(mesh, "mesh");
         // List.copyOf rejects nulls, which mean "no texture" here.
         materialTextures = Collections.unmodifiableList(new ArrayList<>(materialTextures));
-        if (materialTextures.size() != mesh.materialCount()) {
-            throw new IllegalArgumentException(materialTextures.size() + " material textures for "
-                    + mesh.materialCount() + " materials");
+        textureSources = Collections.unmodifiableList(new ArrayList<>(textureSources));
+        if (materialTextures.size() != mesh.materialCount() || textureSources.size() != mesh.materialCount()) {
+            throw new IllegalArgumentException(materialTextures.size() + " material textures and "
+                    + textureSources.size() + " sources for " + mesh.materialCount() + " materials");
         }
+    }
+
+    /** A model whose textures have no recorded source. */
+    public ObjModel(Mesh mesh, List<Path> materialTextures) {
+        this(mesh, materialTextures, Collections.nCopies(materialTextures.size(), null));
     }
 }

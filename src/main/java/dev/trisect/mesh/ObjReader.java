@@ -56,6 +56,10 @@ public final class ObjReader {
     private final Map<String, Integer> materialIndex = new HashMap<>();
     private int currentMaterial = -1;
     private final Map<String, Path> textures = new HashMap<>();
+    /** Where each material's map_Kd was given, as {@code file:line}. */
+    private final Map<String, String> textureSources = new HashMap<>();
+    /** Each material's map_Kd {@code -s} and {@code -o}: {su, sv, ou, ov}; absent for none. */
+    private final Map<String, float[]> uvTransforms = new HashMap<>();
     private final Set<Path> librariesRead = new HashSet<>();
 
     private final ForwardIndices[] forward = {new ForwardIndices(), new ForwardIndices(), new ForwardIndices()};
@@ -125,14 +129,17 @@ public final class ObjReader {
             throw new InputException(lines.label() + ": no faces");
         }
         checkForwardIndices();
+        applyUvTransforms();
         Mesh mesh = new Mesh(Arrays.copyOf(positions, 3 * counts[V]), Arrays.copyOf(uvs, 2 * counts[VT]),
                 Arrays.copyOf(cornerPositions, 3 * triangleCount), Arrays.copyOf(cornerUvs, 3 * triangleCount),
                 Arrays.copyOf(triangleMaterials, triangleCount), materialNames);
         List<Path> materialTextures = new ArrayList<>();
+        List<String> sources = new ArrayList<>();
         for (String name : materialNames) {
             materialTextures.add(textures.get(name));
+            sources.add(textureSources.get(name));
         }
-        return new ObjModel(mesh, materialTextures);
+        return new ObjModel(mesh, materialTextures, sources);
     }
 
     private void vertex() {
@@ -362,16 +369,16 @@ public final class ObjReader {
                     + LineScanner.quote(name) + ": " + LineScanner.reason(e), e);
         }
         try (mtlLines) {
-            readLibrary(mtlLines, mtl, textures);
+            readLibrary(mtlLines, mtl);
         }
     }
 
     /**
-     * Reads {@code newmtl} and {@code map_Kd} from an MTL file into {@code textures} (material name to
-     * absolute texture path, relative names resolved against the MTL's directory). A material
-     * defined again replaces the earlier definition.
+     * Reads {@code newmtl} and {@code map_Kd} from an MTL file into {@link #textures} (material name to
+     * absolute texture path, relative names resolved against the MTL's directory), with where each was
+     * given and its texel-coordinate transform. A material defined again replaces the earlier definition.
      */
-    private static void readLibrary(LineScanner mtlLines, Path mtl, Map<String, Path> textures) {
+    private void readLibrary(LineScanner mtlLines, Path mtl) {
         String material = null;
         while (mtlLines.next()) {
             if (mtlLines.count() == 0) {
@@ -383,20 +390,109 @@ public final class ObjReader {
                     throw mtlLines.error("newmtl without a material name");
                 }
                 textures.remove(material);
+                textureSources.remove(material);
+                uvTransforms.remove(material);
             } else if (mtlLines.is(0, "map_Kd")) {
                 if (material == null) {
                     throw mtlLines.error("map_Kd before any newmtl");
                 }
-                if (mtlLines.count() < 2) {
-                    throw mtlLines.error("map_Kd without a file name");
-                }
-                // Options such as "-s 2 2 1" come first; the file name is the last token.
-                String file = mtlLines.text(mtlLines.count() - 1);
+                mapKd(mtlLines, mtl, material);
+            }
+        }
+    }
+
+    /**
+     * {@code map_Kd [-s u [v [w]]] [-o u [v [w]]] file name}: the options come first (MTL specification,
+     * "Texture map statements"); the file name is the rest of the line, inner blanks kept. Texel
+     * coordinates of the material become {@code (u * su + ou, v * sv + ov)}; w, for 3D textures, is
+     * checked but not used. Any other option is refused rather than silently ignored.
+     */
+    private void mapKd(LineScanner mtlLines, Path mtl, String material) {
+        float[] transform = {1, 1, 0, 0};
+        boolean transformed = false;
+        int i = 1;
+        while (i < mtlLines.count() && mtlLines.byteAt(mtlLines.start(i)) == '-') {
+            String option = mtlLines.text(i);
+            int at;
+            if (option.equals("-s")) {
+                at = 0;
+            } else if (option.equals("-o")) {
+                at = 2;
+            } else {
+                throw mtlLines.error("map_Kd option " + LineScanner.quote(option) + " is not supported (only -s and "
+                        + "-o are)");
+            }
+            i++;
+            int numbers = 0;
+            while (numbers < 3 && i < mtlLines.count()) {
+                float value;
                 try {
-                    textures.put(material, mtl.resolveSibling(file).toAbsolutePath().normalize());
-                } catch (InvalidPathException e) {
-                    throw mtlLines.error("invalid file name " + LineScanner.quote(file));
+                    value = Float.parseFloat(mtlLines.text(i));
+                } catch (NumberFormatException e) {
+                    break;
                 }
+                if (!Float.isFinite(value)) {
+                    throw mtlLines.error("map_Kd " + option + " needs finite numbers");
+                }
+                if (numbers < 2) {
+                    transform[at + numbers] = value;
+                }
+                numbers++;
+                i++;
+            }
+            if (numbers == 0) {
+                throw mtlLines.error("map_Kd " + option + " needs 1 to 3 numbers");
+            }
+            transformed = true;
+        }
+        String file = mtlLines.rest(i);
+        if (file.isEmpty()) {
+            throw mtlLines.error("map_Kd without a file name");
+        }
+        try {
+            textures.put(material, mtl.resolveSibling(file).toAbsolutePath().normalize());
+        } catch (InvalidPathException e) {
+            throw mtlLines.error("invalid file name " + LineScanner.quote(file));
+        }
+        textureSources.put(material, mtlLines.label() + ":" + mtlLines.lineNumber());
+        if (transformed) {
+            uvTransforms.put(material, transform);
+        } else {
+            uvTransforms.remove(material);
+        }
+    }
+
+    /**
+     * Gives the triangles of materials with a map_Kd {@code -s}/{@code -o} their own transformed copies
+     * of the texel coordinates they use (a coordinate may be shared with other materials).
+     */
+    private void applyUvTransforms() {
+        if (uvTransforms.isEmpty()) {
+            return;
+        }
+        float[][] byMaterial = new float[materialNames.size()][];
+        for (int m = 0; m < byMaterial.length; m++) {
+            byMaterial[m] = uvTransforms.get(materialNames.get(m));
+        }
+        Map<Long, Integer> copies = new HashMap<>();
+        for (int t = 0; t < triangleCount; t++) {
+            int m = triangleMaterials[t];
+            float[] x = byMaterial[m];
+            if (x == null) {
+                continue;
+            }
+            for (int c = 3 * t; c < 3 * t + 3; c++) {
+                int source = cornerUvs[c];
+                if (source < 0) {
+                    continue;
+                }
+                cornerUvs[c] = copies.computeIfAbsent((long) source * byMaterial.length + m, key -> {
+                    uvs = room(uvs, 2L * counts[VT] + 2);
+                    int at = 2 * counts[VT];
+                    uvs[at] = uvs[2 * source] * x[0] + x[2];
+                    uvs[at + 1] = uvs[2 * source + 1] * x[1] + x[3];
+                    return counts[VT]++;
+                });
             }
         }
     }

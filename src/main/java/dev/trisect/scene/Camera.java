@@ -9,7 +9,7 @@ import dev.trisect.math.Viewport;
  * {@code gluPerspective(fovY, aspect, near, far)}.
  *
  * @param eye    camera position, world space
- * @param target point looked at, world space; differs from {@code eye}
+ * @param target point looked at, world space; {@link #MIN_DISTANCE} to {@link #MAX_DISTANCE} from {@code eye}
  * @param up     approximate up direction, world space; not parallel to the view direction
  * @param fovY   vertical field of view, degrees, in (0, 180)
  * @param near   distance to the near plane, world units, &gt; 0
@@ -23,6 +23,11 @@ public record Camera(Vec3 eye, Vec3 target, Vec3 up, double fovY, double near, d
     public static final double DEFAULT_NEAR = 0.1;
     /** Default far distance, world units. */
     public static final double DEFAULT_FAR = 1000;
+
+    /** Largest distance from eye to target, world units: its square stays a finite double. */
+    public static final double MAX_DISTANCE = 1e150;
+    /** Smallest distance from eye to target, world units: its square stays a normal double. */
+    public static final double MIN_DISTANCE = 1e-150;
 
     /** Checks every rule above; the message names the offending value. */
     public Camera {
@@ -40,6 +45,17 @@ public record Camera(Vec3 eye, Vec3 target, Vec3 up, double fovY, double near, d
         }
         if (!(far > near) || Double.isInfinite(far)) {
             throw new IllegalArgumentException("near (" + near + ") must be less than far (" + far + ")");
+        }
+        // The view direction is target - eye normalized; its length must neither overflow nor vanish
+        // (squared, as the length is computed) in double precision.
+        double distance = target.sub(eye).length();
+        if (!(distance <= MAX_DISTANCE)) {
+            throw new IllegalArgumentException("eye " + eye + " and target " + target + " are too far apart (more "
+                    + "than " + MAX_DISTANCE + " units): the view direction cannot be computed");
+        }
+        if (!(distance >= MIN_DISTANCE)) {
+            throw new IllegalArgumentException("eye " + eye + " and target " + target + " are too close together "
+                    + "(less than " + MIN_DISTANCE + " units apart): the view direction cannot be computed");
         }
         Vec3 forward = target.sub(eye).normalize();
         if (forward.cross(up).length() < 1e-9 * Math.max(1, up.length())) {

@@ -1,5 +1,6 @@
 package dev.trisect.scene;
 
+import dev.trisect.base.InputException;
 import dev.trisect.math.Vec3;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.mesh.ObjModel;
@@ -50,7 +51,8 @@ public final class SceneLoader {
                     textures.add(fallback);
                     untextured.add(mesh.materialNames().get(i));
                 } else {
-                    textures.add(loaded.computeIfAbsent(map, TextureReader::read));
+                    String source = model.textureSources().get(i);
+                    textures.add(loaded.computeIfAbsent(map, file -> readMapKd(file, source)));
                 }
             }
             if (!untextured.isEmpty()) {
@@ -60,6 +62,15 @@ public final class SceneLoader {
         }
         return new Scene(String.valueOf(obj.getFileName()), "OBJ file " + obj, mesh, textures, frame(mesh),
                 obj.toAbsolutePath());
+    }
+
+    /** Reads a material's texture; a failure names the MTL file and line that gave it. */
+    private static Texture readMapKd(Path file, String source) {
+        try {
+            return TextureReader.read(file);
+        } catch (InputException e) {
+            throw source == null ? e : new InputException(source + ": map_Kd: " + e.getMessage(), e);
+        }
     }
 
     /**

@@ -66,15 +66,32 @@ public final class TextureReader {
         } catch (InputException e) {
             throw e;
         } catch (IOException | RuntimeException | AssertionError e) {
+            if (causedByMemory(e)) {
+                // javax.imageio's PNG reader wraps an OutOfMemoryError in an IIOException.
+                throw outOfMemory(name, format);
+            }
             // Decoders signal damaged data with all sorts of exceptions, unchecked ones included, and
             // TwelveMonkeys with an AssertionError where it meets what it did not expect.
             throw new InputException(name + ": cannot decode the " + format.label + " data: corrupt, truncated "
                     + "or an unsupported variant (" + describe(e) + ")", e);
         } catch (OutOfMemoryError e) {
             // The size check passed, so this is a large but valid image: say so rather than crash.
-            throw error(name, "not enough memory to decode this " + format.label + " image (allow Java more "
-                    + "with -Xmx)");
+            throw outOfMemory(name, format);
         }
+    }
+
+    private static InputException outOfMemory(String name, ImageFormat format) {
+        return error(name, "not enough memory to decode this " + format.label + " image (give Java more with "
+                + "-Xmx, e.g. java -Xmx4g -jar trisect.jar, or use a smaller texture)");
+    }
+
+    private static boolean causedByMemory(Throwable e) {
+        for (Throwable t = e; t != null; t = t.getCause()) {
+            if (t instanceof OutOfMemoryError) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** An unreadable-input error whose message is {@code name: what}. */

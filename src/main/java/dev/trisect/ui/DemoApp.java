@@ -6,7 +6,9 @@ import dev.trisect.pipeline.RenderMode;
 import dev.trisect.scene.DemoScenes;
 import dev.trisect.scene.Scene;
 import dev.trisect.scene.SceneLoader;
+import java.awt.AWTError;
 import java.awt.GraphicsEnvironment;
+import java.awt.HeadlessException;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
@@ -54,6 +56,24 @@ public final class DemoApp implements Callable<Integer> {
     @Option(names = "--report", paramLabel = "FILE", description = "With --soak: also write the report here (JSON).")
     Path report;
 
+    private static final String HEADLESS_HINT = "render headless instead: java -jar trisect.jar render --scene demo "
+            + "--out demo.png (see render --help)";
+
+    /**
+     * Connects to the display now, where a failure can still be one line: AWT reports an unreachable X
+     * server with an {@link AWTError} from deep inside the first window. Returns the display's name when
+     * it cannot be reached, null when it can.
+     */
+    private static String noDisplay() {
+        try {
+            GraphicsEnvironment.getLocalGraphicsEnvironment().getScreenDevices();
+            return null;
+        } catch (AWTError | HeadlessException e) {
+            String name = System.getenv("DISPLAY");
+            return name != null ? "'" + name + "' (is an X server running there?)" : "(" + e.getMessage() + ")";
+        }
+    }
+
     /** Runs the demo's command line; returns a process exit status, or -1 when the demo is running. */
     public static int launch(String... args) {
         // Named as typed, so that its usage line reads "trisect demo".
@@ -93,8 +113,12 @@ public final class DemoApp implements Callable<Integer> {
             throw InputException.usage("--soak must be at least 1 second, got " + soak);
         }
         if (GraphicsEnvironment.isHeadless()) {
-            System.err.println("trisect: no display for the desktop demo; render headless instead: "
-                    + "java -jar trisect.jar render --scene demo --out demo.png (see render --help)");
+            System.err.println("trisect: no display for the desktop demo; " + HEADLESS_HINT);
+            return 1;
+        }
+        String display = noDisplay();
+        if (display != null) {
+            System.err.println("trisect: cannot connect to the display " + display + "; " + HEADLESS_HINT);
             return 1;
         }
 

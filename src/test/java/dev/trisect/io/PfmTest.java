@@ -127,7 +127,7 @@ class PfmTest {
             + "the file has 10",
         "Pf\\n2 2\\n-1.0\\n | 20 | PFM data is too long: 2x2 with 1 channel needs 16 bytes after the header, "
             + "the file has 20",
-        "PF\\n60000 60000\\n-1\\n | 0 | image 60000x60000 is too large",
+        "PF\\n60000 60000\\n-1\\n | 0 | the image is 60000x60000 pixels; at most 16384 on a side is allowed",
     })
     void malformedFilesGiveOneLineMessages(String header, int dataBytes, String message) throws IOException {
         Path file = dir.resolve("bad.pfm");

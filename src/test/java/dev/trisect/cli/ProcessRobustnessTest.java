@@ -1,0 +1,139 @@
+package dev.trisect.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.DataOutputStream;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
+import java.util.zip.CRC32;
+import java.util.zip.Deflater;
+import java.util.zip.DeflaterOutputStream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+
+/** Defects that only show in a separate process: signals, a missing display, a small heap. */
+class ProcessRobustnessTest {
+    @TempDir
+    Path dir;
+
+    /** Starts the program (or another main class of the test class path) in a new JVM. */
+    static Process java(Path workDir, List<String> jvm, String main, String... args) throws IOException {
+        List<String> cmd = new ArrayList<>();
+        cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        cmd.addAll(jvm);
+        cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), main));
+        cmd.addAll(List.of(args));
+        return new ProcessBuilder(cmd).directory(workDir.toFile()).redirectErrorStream(false).start();
+    }
+
+    private static String drain(Process p) throws Exception {
+        p.getOutputStream().close();
+        String err = new String(p.getErrorStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertTrue(p.waitFor(120, TimeUnit.SECONDS), "the process ends");
+        return err;
+    }
+
+    private List<String> listing() throws IOException {
+        try (Stream<Path> files = Files.list(dir)) {
+            return files.map(p -> p.getFileName().toString()).sorted().toList();
+        }
+    }
+
+    @Test
+    @Timeout(value = 120, unit = TimeUnit.SECONDS)
+    void sigtermWhileWritingRemovesTheTemporaryFilesAndChangesNoOutput() throws Exception {
+        Path out = dir.resolve("big.ppm");
+        Files.writeString(out, "OLD\n");
+        Process p = java(dir, List.of(), "dev.trisect.io.HoldOutputs", out.toString(), dir.resolve("ready").toString());
+        for (int i = 0; i < 1200 && !Files.exists(dir.resolve("ready")) && p.isAlive(); i++) {
+            Thread.sleep(50);
+        }
+        assertTrue(Files.exists(dir.resolve("ready")), "the helper got to writing");
+        assertTrue(listing().stream().anyMatch(n -> n.endsWith(".tmp")), "temporary files exist: " + listing());
+        p.destroy(); // SIGTERM
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS));
+        assertEquals(List.of("big.ppm", "ready"), listing(), "no temporary file and no new output remain");
+        assertEquals("OLD\n", Files.readString(out));
+    }
+
+    @Test
+    @Timeout(value = 120, unit = TimeUnit.SECONDS)
+    void demoWithoutAnXServerIsOneLine() throws Exception {
+        String display = ":97";
+        assumeTrue(!Files.exists(Path.of("/tmp/.X11-unix/X97")), "display :97 is free");
+        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-Djava.awt.headless=false", "-cp", System.getProperty("java.class.path"), "dev.trisect.Trisect", "demo"));
+        ProcessBuilder pb = new ProcessBuilder(cmd).directory(dir.toFile());
+        pb.environment().put("DISPLAY", display);
+        Process p = pb.start();
+        String err = drain(p);
+        assertEquals(1, p.exitValue(), err);
+        assertEquals(1, err.strip().lines().count(), "one line:\n" + err);
+        assertTrue(err.contains(display) && err.contains("render"), err);
+        assertFalse(err.contains("\tat ") || err.contains("Exception"), err);
+    }
+
+    @Test
+    @Timeout(value = 300, unit = TimeUnit.SECONDS)
+    void aLargeValidPngUnderASmallHeapIsReportedAsMemory() throws Exception {
+        Path png = dir.resolve("big.png");
+        // 8192 x 8192 RGBA texels take 256 MiB decoded: far more than the 64 MiB heap.
+        writeBlankRgbaPng(png, 8192, 8192);
+        Path obj = dir.resolve("m.obj");
+        Files.writeString(obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1\n");
+        Process p = java(dir, List.of("-Xmx64m"), "dev.trisect.Trisect", "render", "--size", "8x8", "--obj",
+                obj.toString(), "--texture", png.toString(), "--out", dir.resolve("o.png").toString());
+        String err = drain(p);
+        assertEquals(1, p.exitValue(), err);
+        assertEquals(1, err.strip().lines().count(), "one line:\n" + err);
+        assertTrue(err.contains("big.png") && err.contains("memory") && err.contains("-Xmx"), err);
+        assertFalse(err.contains("corrupt"), err);
+    }
+
+    /** A valid, all-transparent 8-bit RGBA PNG, streamed so the test needs no large image in memory. */
+    static void writeBlankRgbaPng(Path file, int width, int height) throws IOException {
+        try (OutputStream out = Files.newOutputStream(file)) {
+            out.write(new byte[] {(byte) 0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'});
+            ByteArrayOutputStream ihdr = new ByteArrayOutputStream();
+            DataOutputStream h = new DataOutputStream(ihdr);
+            h.writeInt(width);
+            h.writeInt(height);
+            h.write(new byte[] {8, 6, 0, 0, 0});
+            chunk(out, "IHDR", ihdr.toByteArray());
+            ByteArrayOutputStream idat = new ByteArrayOutputStream();
+            try (DeflaterOutputStream z = new DeflaterOutputStream(idat, new Deflater(Deflater.BEST_SPEED))) {
+                byte[] row = new byte[1 + 4 * width];
+                for (int y = 0; y < height; y++) {
+                    z.write(row);
+                }
+            }
+            chunk(out, "IDAT", idat.toByteArray());
+            chunk(out, "IEND", new byte[0]);
+        }
+    }
+
+    private static void chunk(OutputStream out, String type, byte[] data) throws IOException {
+        DataOutputStream d = new DataOutputStream(out);
+        d.writeInt(data.length);
+        byte[] t = type.getBytes(StandardCharsets.US_ASCII);
+        d.write(t);
+        d.write(data);
+        CRC32 crc = new CRC32();
+        crc.update(t);
+        crc.update(data);
+        d.writeInt((int) crc.getValue());
+        d.flush();
+    }
+}
