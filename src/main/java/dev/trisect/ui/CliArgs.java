@@ -41,4 +41,24 @@ final class CliArgs {
         }
         return a;
     }
+
+    /** How the copied command starts: the jar {@code mvn package} builds, run from the repository root. */
+    static final String LAUNCHER = "java -jar target/trisect.jar";
+
+    /** The whole {@code compare} command line for a shell, each argument quoted where it needs it. */
+    static String compareCommand(Scene scene, DemoState.Measurement m) {
+        StringBuilder b = new StringBuilder(LAUNCHER);
+        for (String arg : compare(scene, m)) {
+            b.append(' ').append(shellQuote(arg));
+        }
+        return b.toString();
+    }
+
+    /** {@code arg} as one POSIX shell word: bare when it is safe, else in single quotes. */
+    static String shellQuote(String arg) {
+        if (!arg.isEmpty() && arg.matches("[A-Za-z0-9_.,:/=+@%-]+")) {
+            return arg;
+        }
+        return "'" + arg.replace("'", "'\\''") + "'";
+    }
 }

@@ -69,7 +69,7 @@ final class CompareSection implements ToolSection {
 
     private void setView(ViewKind kind) {
         if (!syncing) {
-            owner.update(s -> s.withView(kind).withCompare(kind == ViewKind.IMAGE ? s.compare() : true));
+            owner.update(s -> s.withView(kind));
         }
     }
 
@@ -90,6 +90,9 @@ final class CompareSection implements ToolSection {
     public void refresh(DemoState.Progress progress, FrameSlot front, DemoState.Measurement m) {
         ViewSettings now = owner.state().settings();
         boolean measuring = now.compare() || now.view() != ViewKind.IMAGE;
+        for (String k : MEASURES) {
+            form.setEnabled(k, measuring);
+        }
         if (m == null || !measuring) {
             for (String k : MEASURES) {
                 form.set(k, "\u2014");
@@ -114,5 +117,15 @@ final class CompareSection implements ToolSection {
     @Override
     public String readout(String name) {
         return form.get(name);
+    }
+
+    /** The "Measure against the per-pixel path" check box, for tests. */
+    JCheckBox measureBox() {
+        return compare;
+    }
+
+    /** Whether a readout shows live numbers (not greyed out), for tests. */
+    boolean live(String name) {
+        return form.enabled(name);
     }
 }

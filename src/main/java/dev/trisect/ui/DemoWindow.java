@@ -19,7 +19,6 @@ import java.awt.event.WindowEvent;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
-import java.time.format.DateTimeFormatter;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -59,6 +58,7 @@ final class DemoWindow {
     private final JFrame frame;
     private final ViewPanel view;
     private final JLabel status = new JLabel(" ");
+    private final StatusLine statusLine = new StatusLine(status);
     private final JLabel pace = new JLabel(" ");
     private final RenderLoop loop;
     private final Thread renderThread;
@@ -75,6 +75,8 @@ final class DemoWindow {
     final Command openCommand;
     final Command exitCommand;
     final List<Command> modeCommands = new ArrayList<>();
+    /** Image, Difference, Split: what the view shows, by {@link ViewKind} ordinal. */
+    final List<Command> viewCommands = new ArrayList<>();
 
     DemoWindow(DemoState state, int threads) {
         this.state = state;
@@ -101,7 +103,8 @@ final class DemoWindow {
                     TextureFilter[] all = TextureFilter.values();
                     selectFilter(all[(state.settings().render().filter().ordinal() + 1) % all.length]);
                 });
-        screenshotCommand = Command.action("Save screenshot", "Save the frame on screen as a PNG in the working directory",
+        screenshotCommand = Command.action("Save screenshot", "Save the frame on screen as a PNG in "
+                + Screenshots.folder(),
                 KeyStroke.getKeyStroke(KeyEvent.VK_S, InputEvent.CTRL_DOWN_MASK), this::saveScreenshot);
         openCommand = Command.action("Open OBJ\u2026", "Load a Wavefront OBJ model (with its map_Kd textures)",
                 KeyStroke.getKeyStroke(KeyEvent.VK_O, InputEvent.CTRL_DOWN_MASK), this::openObj);
@@ -118,11 +121,21 @@ final class DemoWindow {
             modeCommands.add(c);
         }
         modeCommands.get(state.settings().render().mode().ordinal()).show(true);
+        String[][] views = {
+            {"Image", "Show this path's image"},
+            {"Difference", "Show the displacement against the per-pixel path as a heat map (opens the developer tools)"},
+            {"Split", "This path left of a divider, the per-pixel path right of it (opens the developer tools)"}};
+        for (ViewKind k : ViewKind.values()) {
+            viewCommands.add(Command.toggle(views[k.ordinal()][0], views[k.ordinal()][1],
+                    KeyStroke.getKeyStroke(KeyEvent.VK_F5 + k.ordinal(), 0), c -> selectView(k)));
+        }
+        viewCommands.get(state.settings().view().ordinal()).show(true);
         bordersCommand.show(state.settings().render().borders());
         showFilter(state.settings().render().filter());
 
         frame.setJMenuBar(menus());
-        JPanel bottom = new JPanel(new BorderLayout());
+        // A gap between message and pace, so that a long message is cut short rather than run into it.
+        JPanel bottom = new JPanel(new BorderLayout(16, 0));
         bottom.setBorder(BorderFactory.createEmptyBorder(3, 8, 3, 8));
         bottom.add(status, BorderLayout.CENTER);
         bottom.add(pace, BorderLayout.EAST);
@@ -174,7 +187,8 @@ final class DemoWindow {
         view.requestFocusInWindow();
         renderThread.start();
         refresh.start();
-        status("Fly with W A S D or the arrows, drag to look, wheel for height, Shift for speed. F12: developer tools.");
+        statusLine.rest("Fly with W A S D or the arrows, drag to look, wheel for height, Shift for speed. "
+                + "F12: developer tools.");
     }
 
     JFrame frame() {
@@ -198,16 +212,21 @@ final class DemoWindow {
     }
 
     String statusText() {
-        return status.getText();
+        return statusLine.text();
     }
 
+    /** Shows a message in the status bar that clears itself after a few seconds. */
     void status(String message) {
-        status.setText(message);
+        statusLine.pass(message, System.nanoTime());
     }
 
     /** Replaces the view settings; the render thread uses them from its next frame. */
     void update(UnaryOperator<ViewSettings> change) {
         state.settings(change.apply(state.settings()));
+        ViewKind view = state.settings().view();
+        for (Command c : viewCommands) {
+            c.show(c == viewCommands.get(view.ordinal()));
+        }
         if (devTools != null) {
             devTools.syncFromSettings();
         }
@@ -230,6 +249,15 @@ final class DemoWindow {
         filterCommand.putValue(Action.NAME, "Texture filter: " + f.id());
     }
 
+    /** Shows a view; the comparison views belong to the developer tools and open them. */
+    void selectView(ViewKind k) {
+        update(s -> s.withView(k));
+        if (k != ViewKind.IMAGE && !devToolsCommand.selected()) {
+            devToolsCommand.show(true);
+            showDevTools(true);
+        }
+    }
+
     private JMenuBar menus() {
         JMenuBar bar = new JMenuBar();
         JMenu file = new JMenu("File");
@@ -245,6 +273,13 @@ final class DemoWindow {
         viewMenu.add(new JCheckBoxMenuItem(orbitCommand));
         viewMenu.add(new JMenuItem(resetCommand));
         viewMenu.add(new JMenuItem(filterCommand));
+        viewMenu.addSeparator();
+        ButtonGroup viewGroup = new ButtonGroup();
+        for (Command c : viewCommands) {
+            JRadioButtonMenuItem item = new JRadioButtonMenuItem(c);
+            viewGroup.add(item);
+            viewMenu.add(item);
+        }
         JMenu render = new JMenu("Render");
         render.setMnemonic(KeyEvent.VK_R);
         ButtonGroup group = new ButtonGroup();
@@ -266,6 +301,7 @@ final class DemoWindow {
         List<Command> commands = new ArrayList<>(List.of(devToolsCommand, bordersCommand, orbitCommand, resetCommand, filterCommand,
                 screenshotCommand, openCommand, exitCommand));
         commands.addAll(modeCommands);
+        commands.addAll(viewCommands);
         for (Command c : commands) {
             in.put(c.key(), c);
             act.put(c, c);
@@ -316,15 +352,27 @@ final class DemoWindow {
         }
         devToolsCommand.show(on);
         state.toolsOpen(on);
+        if (!on) {
+            toolsClosed();
+        }
     }
 
     /** Called when the developer tools window is closed by its own close button. */
     void devToolsClosed() {
         devToolsCommand.show(false);
         state.toolsOpen(false);
+        toolsClosed();
+    }
+
+    /** The comparison views live in the tools: closing them goes back to the image. */
+    private void toolsClosed() {
+        if (state.settings().view() != ViewKind.IMAGE) {
+            update(s -> s.withView(ViewKind.IMAGE));
+        }
     }
 
     private void refreshReadouts() {
+        statusLine.tick(System.nanoTime());
         String problem = state.takeProblem();
         if (problem != null) {
             status(problem);
@@ -348,12 +396,8 @@ final class DemoWindow {
         int w = f.width();
         int h = f.height();
         int[] pixels = f.frame.color().clone();
-        String stamp = LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss"));
-        Path dir = Path.of("").toAbsolutePath();
-        Path out = dir.resolve("trisect-" + stamp + ".png");
-        for (int n = 2; Files.exists(out); n++) {
-            out = dir.resolve("trisect-" + stamp + "-" + n + ".png");
-        }
+        Path dir = Screenshots.folder();
+        Path out = Screenshots.newFile(dir, LocalDateTime.now());
         Path target = out;
         status("Saving " + target + " \u2026");
         new SwingWorker<Path, Void>() {

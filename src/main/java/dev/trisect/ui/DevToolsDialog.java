@@ -1,7 +1,10 @@
 package dev.trisect.ui;
 
 import java.awt.Dialog;
-import java.awt.Toolkit;
+import java.awt.Dimension;
+import java.awt.GraphicsEnvironment;
+import java.awt.Insets;
+import java.awt.Rectangle;
 import java.awt.Window;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
@@ -12,6 +15,7 @@ import javax.swing.BoxLayout;
 import javax.swing.JDialog;
 import javax.swing.JPanel;
 import javax.swing.JScrollPane;
+import javax.swing.ScrollPaneConstants;
 
 /**
  * The "Developer tools" window. It only stacks its {@link ToolSection}s — overlay, texturing path,
@@ -49,21 +53,45 @@ final class DevToolsDialog extends JDialog {
             content.add(s.component());
         }
         content.add(Box.createVerticalGlue());
-        JScrollPane scroll = new JScrollPane(content);
+        scroll = new JScrollPane(content, ScrollPaneConstants.VERTICAL_SCROLLBAR_AS_NEEDED,
+                ScrollPaneConstants.HORIZONTAL_SCROLLBAR_NEVER);
         scroll.setBorder(null);
+        // One wheel notch moves about three rows, not the default few pixels.
+        scroll.getVerticalScrollBar().setUnitIncrement(WHEEL_PIXELS);
         setContentPane(scroll);
         pack();
-        setSize(380, Math.min(getHeight(), 900));
     }
 
-    /** Places the window to the right of the main window (or inside the screen) and shows it. */
+    /** Pixels one mouse-wheel notch (or arrow click) scrolls the tools. */
+    static final int WHEEL_PIXELS = 24;
+
+    private final JScrollPane scroll;
+
+    /**
+     * The window's size: tall enough for every section where the screen allows, else the screen's
+     * usable height below {@code top} (and then a scroll bar, for which the width makes room).
+     */
+    static Dimension fit(Dimension content, int scrollBarWidth, Rectangle usable, int top) {
+        int room = Math.max(200, usable.y + usable.height - Math.max(usable.y, top));
+        int height = Math.min(content.height, room);
+        int width = content.width + (height < content.height ? scrollBarWidth : 0);
+        return new Dimension(width, height);
+    }
+
+    /** Places the window to the right of the main window (or inside the screen), sized to fit, and shows it. */
     void showBeside(Window main) {
+        Rectangle usable = GraphicsEnvironment.getLocalGraphicsEnvironment().getMaximumWindowBounds();
+        Dimension content = getContentPane().getPreferredSize();
+        Insets frame = getInsets();
+        Dimension size = fit(new Dimension(content.width + frame.left + frame.right,
+                content.height + frame.top + frame.bottom), scroll.getVerticalScrollBar().getPreferredSize().width,
+                usable, main.getY());
+        setSize(size);
         int x = main.getX() + main.getWidth();
-        int screen = Toolkit.getDefaultToolkit().getScreenSize().width;
-        if (x + getWidth() > screen) {
-            x = Math.max(0, screen - getWidth());
+        if (x + getWidth() > usable.x + usable.width) {
+            x = Math.max(usable.x, usable.x + usable.width - getWidth());
         }
-        setLocation(x, main.getY());
+        setLocation(x, Math.max(usable.y, Math.min(main.getY(), usable.y + usable.height - getHeight())));
         setVisible(true);
     }
 
@@ -73,6 +101,20 @@ final class DevToolsDialog extends JDialog {
         for (ToolSection section : sections) {
             section.sync(s);
         }
+    }
+
+    /** The section of this type, for tests and tooling. */
+    <T extends ToolSection> T section(Class<T> type) {
+        for (ToolSection s : sections) {
+            if (type.isInstance(s)) {
+                return type.cast(s);
+            }
+        }
+        throw new IllegalArgumentException("no section " + type.getSimpleName());
+    }
+
+    JScrollPane scrollPane() {
+        return scroll;
     }
 
     /** The text of one readout, for tests and tooling. */

@@ -140,6 +140,10 @@ final class RenderLoop implements Runnable {
         if (back == null || !back.is(fw, fh)) {
             back = new FrameSlot(fw, fh);
         }
+        if (!state.toolsOpen() && settings.view() != ViewKind.IMAGE) {
+            // The comparison views belong to the developer tools: never shown (nor paid for) without them.
+            settings = settings.withView(ViewKind.IMAGE);
+        }
         long now = System.nanoTime();
         // Measure only while someone can read the numbers: the developer tools are open.
         boolean compareDue = settings.compare() && state.toolsOpen() && now - lastCompare >= COMPARE_INTERVAL_NANOS;

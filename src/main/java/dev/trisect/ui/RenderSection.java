@@ -24,11 +24,14 @@ final class RenderSection implements ToolSection {
         copy.setToolTipText("Copy the command line that measures the last compared frame with trisect compare");
         copy.addActionListener(e -> {
             DemoState.Measurement m = owner.state().measurement();
-            if (m != null) {
-                String cmd = "java -jar trisect.jar " + String.join(" ", CliArgs.compare(owner.state().scene(), m));
-                Toolkit.getDefaultToolkit().getSystemClipboard().setContents(new StringSelection(cmd), null);
-                owner.status("Copied: " + cmd);
+            if (m == null) {
+                owner.status("Nothing measured yet: tick \"Measure against the per-pixel path\" first.");
+                return;
             }
+            String cmd = CliArgs.compareCommand(owner.state().scene(), m);
+            Toolkit.getDefaultToolkit().getSystemClipboard().setContents(new StringSelection(cmd), null);
+            owner.status("Copied the compare command of the measured frame; run it from the repository root "
+                    + "after mvn -q package -DskipTests.");
         });
         form.row(copy);
     }

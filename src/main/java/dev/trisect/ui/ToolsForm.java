@@ -96,6 +96,11 @@ final class ToolsForm {
         return l == null ? null : l.getText();
     }
 
+    boolean enabled(String name) {
+        JLabel l = readouts.get(name);
+        return l != null && l.isEnabled();
+    }
+
     void setEnabled(String name, boolean on) {
         JLabel l = readouts.get(name);
         if (l != null) {

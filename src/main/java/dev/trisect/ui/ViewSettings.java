@@ -27,16 +27,18 @@ record ViewSettings(RenderSettings render, ViewKind view, double splitFraction, 
         return new ViewSettings(r, view, splitFraction, compare, renderScale, heatmapMax);
     }
 
+    /** Another view; the difference and split views compare with the per-pixel path, so they turn comparing on. */
     ViewSettings withView(ViewKind v) {
-        return new ViewSettings(render, v, splitFraction, compare, renderScale, heatmapMax);
+        return new ViewSettings(render, v, splitFraction, compare || v != ViewKind.IMAGE, renderScale, heatmapMax);
     }
 
     ViewSettings withSplitFraction(double f) {
         return new ViewSettings(render, view, Math.max(0, Math.min(1, f)), compare, renderScale, heatmapMax);
     }
 
+    /** Comparing on or off; off also stops the views that show the comparison (back to the image). */
     ViewSettings withCompare(boolean c) {
-        return new ViewSettings(render, view, splitFraction, c, renderScale, heatmapMax);
+        return new ViewSettings(render, c ? view : ViewKind.IMAGE, splitFraction, c, renderScale, heatmapMax);
     }
 
     ViewSettings withRenderScale(double s) {

@@ -17,6 +17,8 @@ import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
@@ -288,5 +290,78 @@ class DemoWindowGuiTest {
             Thread.setDefaultUncaughtExceptionHandler(previous);
         }
         assertEquals(null, failure.get());
+    }
+
+    @Test
+    @Order(7)
+    void f6ShowsTheDifferenceWithTheToolsAndClosingThemGoesBackToTheImage() throws Exception {
+        press(KeyEvent.VK_F6);
+        waitFor("the difference view", () -> window.state().settings().view() == ViewKind.DIFFERENCE);
+        waitFor("the developer tools", () -> onEdt(() -> devToolsWindow() != null && devToolsWindow().isShowing()));
+        freshFrame();
+        assertEquals(ViewKind.DIFFERENCE, onEdt(() -> window.view().front().view));
+        press(KeyEvent.VK_F12);
+        waitFor("the tools to close", () -> onEdt(() -> !devToolsWindow().isShowing()));
+        assertEquals(ViewKind.IMAGE, window.state().settings().view(), "no heat map left behind");
+        freshFrame();
+        assertEquals(ViewKind.IMAGE, onEdt(() -> window.view().front().view));
+        assertTrue(onEdt(() -> window.viewCommands.get(ViewKind.IMAGE.ordinal()).selected()), "the View menu follows");
+        press(KeyEvent.VK_F7);
+        waitFor("the split view", () -> window.state().settings().view() == ViewKind.SPLIT);
+        press(KeyEvent.VK_F5);
+        waitFor("the image", () -> window.state().settings().view() == ViewKind.IMAGE);
+    }
+
+    @Test
+    @Order(8)
+    void untickingTheMeasurementGreysTheNumbersAndStopsTheHeatMap() throws Exception {
+        press(KeyEvent.VK_F6);
+        waitFor("the difference view with the tools", () -> window.state().settings().view() == ViewKind.DIFFERENCE
+                && onEdt(() -> devToolsWindow() != null && devToolsWindow().isShowing()));
+        CompareSection compare = onEdt(() -> window.devTools().section(CompareSection.class));
+        waitFor("live numbers", () -> onEdt(() -> compare.live("PSNR")));
+        SwingUtilities.invokeAndWait(() -> compare.measureBox().doClick());
+        assertFalse(window.state().settings().compare());
+        assertEquals(ViewKind.IMAGE, window.state().settings().view(), "the heat map stops with the measurement");
+        waitFor("greyed numbers", () -> onEdt(() -> !compare.live("PSNR") && !compare.live("Max displacement")));
+        assertEquals("\u2014", onEdt(() -> window.devTools().readout("PSNR")));
+        SwingUtilities.invokeAndWait(() -> compare.measureBox().doClick());
+        waitFor("live numbers again", () -> onEdt(() -> compare.live("PSNR")));
+    }
+
+    @Test
+    @Order(9)
+    void theToolsWindowShowsEverySectionOrScrollsByRows() throws Exception {
+        JDialog d = onEdt(DemoWindowGuiTest::devToolsWindow);
+        int content = onEdt(() -> window.devTools().scrollPane().getViewport().getView().getPreferredSize().height);
+        int viewport = onEdt(() -> window.devTools().scrollPane().getViewport().getExtentSize().height);
+        java.awt.Rectangle usable = java.awt.GraphicsEnvironment.getLocalGraphicsEnvironment().getMaximumWindowBounds();
+        int room = usable.y + usable.height - onEdt(d::getY);
+        assertTrue(viewport >= content || onEdt(d::getHeight) >= room - 1,
+                "all " + content + " px of sections fit, or the window reaches the screen's edge: viewport "
+                        + viewport + ", room " + room);
+        assertTrue(onEdt(() -> window.devTools().scrollPane().getVerticalScrollBar().getUnitIncrement()) >= 16);
+    }
+
+    @Test
+    @Order(10)
+    void ctrlSSavesIntoPicturesAndSaysWhere() throws Exception {
+        Path home = Files.createTempDirectory("trisect-home");
+        Files.createDirectory(home.resolve("Pictures"));
+        String before = System.getProperty("user.home");
+        System.setProperty("user.home", home.toString());
+        try {
+            robot.keyPress(KeyEvent.VK_CONTROL);
+            press(KeyEvent.VK_S);
+            robot.keyRelease(KeyEvent.VK_CONTROL);
+            waitFor("the screenshot", () -> onEdt(() -> window.statusText().startsWith("Saved screenshot to")));
+            String status = onEdt(() -> window.statusText());
+            assertTrue(status.contains(home.resolve("Pictures").toString()), status);
+            try (var files = Files.list(home.resolve("Pictures"))) {
+                assertEquals(1, files.filter(f -> f.getFileName().toString().endsWith(".png")).count());
+            }
+        } finally {
+            System.setProperty("user.home", before);
+        }
     }
 }

@@ -91,6 +91,34 @@ class RenderLoopTest {
     }
 
     @Test
+    void withTheToolsClosedTheComparisonViewsAreNeitherShownNorPaidFor() throws Exception {
+        DemoState state = new DemoState(DemoScenes.floor());
+        state.viewSize(96, 64);
+        state.settings(ViewSettings.defaults().withView(ViewKind.DIFFERENCE));
+        state.toolsOpen(false);
+        TripleBuffer buffers = new TripleBuffer();
+        RenderLoop loop = new RenderLoop(state, buffers, () -> { }, 1);
+        Thread t = new Thread(loop, "test-render");
+        t.start();
+        try {
+            for (int poll = 0; poll < 1000 && state.progress().frames() < 3; poll++) {
+                Thread.sleep(10);
+            }
+            FrameSlot shown = buffers.acquire(null);
+            assertEquals(ViewKind.IMAGE, shown.view, "the image, not a heat map nobody can switch off");
+            assertEquals(null, state.measurement(), "and no comparison");
+            state.toolsOpen(true);
+            for (int poll = 0; poll < 1000 && (shown = buffers.acquire(shown)).view != ViewKind.DIFFERENCE; poll++) {
+                Thread.sleep(10);
+            }
+            assertEquals(ViewKind.DIFFERENCE, shown.view, "with the tools open it shows again");
+        } finally {
+            loop.stop();
+            t.join(5000);
+        }
+    }
+
+    @Test
     void minimizedViewDrawsNothingAndResumes() throws Exception {
         DemoState state = new DemoState(DemoScenes.floor());
         state.viewSize(0, 0);
