@@ -8,6 +8,8 @@ import dev.trisect.math.Vec3;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.RenderMode;
 import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.perf.BudgetChart;
+import dev.trisect.perf.BudgetRun;
 import dev.trisect.perf.FrameBench;
 import dev.trisect.perf.FrameTimes;
 import dev.trisect.perf.Sweep;
@@ -78,6 +80,15 @@ final class BenchCommand extends SceneCommand {
             description = "With --sweep: also draw the curve (one panel per policy) to this PNG.")
     Path plot;
 
+    @Option(names = "--target-ms", paramLabel = "MS", converter = Converters.PositiveConverter.class,
+            description = "Run the tessellated path with the budget controller holding this frame time: it adjusts "
+                    + "the --split policy's threshold every frame, never looser than --max-edge or --max-error, "
+                    + "and prints the thresholds and times it went through.")
+    Double targetMs;
+
+    @Option(names = "--orbit", description = "With --target-ms: the camera circles its target once over the frames.")
+    boolean orbit;
+
     @Override
     void checkOutputs() {
         // Bounded so that the per-frame times (and the run) stay of a sensible size.
@@ -87,8 +98,20 @@ final class BenchCommand extends SceneCommand {
         if (warmup < 0 || warmup > MAX_FRAMES) {
             throw InputException.usage("--warmup must be between 0 and " + MAX_FRAMES + ", got " + warmup);
         }
-        if (!sweep && (plot != null || edges != null || errors != null)) {
-            throw InputException.usage("--plot, --edges and --errors go with --sweep");
+        if (sweep && targetMs != null) {
+            throw InputException.usage("--sweep and --target-ms do not go together");
+        }
+        if (!sweep && (edges != null || errors != null)) {
+            throw InputException.usage("--edges and --errors go with --sweep");
+        }
+        if (!sweep && targetMs == null && plot != null) {
+            throw InputException.usage("--plot goes with --sweep or --target-ms");
+        }
+        if (targetMs == null && orbit) {
+            throw InputException.usage("--orbit goes with --target-ms");
+        }
+        if (targetMs != null && glref != null) {
+            throw InputException.usage("--glref does not go with --target-ms");
         }
         if (sweep && glref != null) {
             throw InputException.usage("--glref does not go with --sweep");
@@ -119,6 +142,20 @@ final class BenchCommand extends SceneCommand {
                 lines.addAll(json ? output.json(result) : output.table(result));
                 if (plot != null) {
                     SweepChart.write(result, scene.name() + " " + frame.size + ", " + threads + " threads", plot);
+                }
+                lines.forEach(common.out()::println);
+                common.out().flush();
+                return 0;
+            }
+            if (targetMs != null) {
+                BudgetRun.Trace trace = BudgetRun.run(renderer, scene, textures, camera, frame.size.width(),
+                        frame.size.height(), path.settings(frame), targetMs, orbit, warmup, frames,
+                        progress.task("budget"));
+                progress.close();
+                lines.addAll(new BudgetOutput(scene.name(), frame.size.toString(), threads).lines(trace, json));
+                if (plot != null) {
+                    BudgetChart.write(trace, String.format(Locale.ROOT, "%s %s, %d threads: budget %.1f ms%s",
+                            scene.name(), frame.size, threads, targetMs, orbit ? ", orbiting" : ""), plot);
                 }
                 lines.forEach(common.out()::println);
                 common.out().flush();

@@ -110,6 +110,27 @@ class BenchCommandTest {
     }
 
     @Test
+    void targetRunReportsEveryFrameWithinTheCeiling() throws IOException {
+        Path plot = dir.resolve("budget.png");
+        CliRun r = CliRun.of("bench", "--scene", "demo", "--size", "96x64", "--frames", "12", "--warmup", "0",
+                "--max-edge", "40", "--target-ms", "0.001", "--orbit", "--json", "--plot", plot.toString());
+        assertEquals(0, r.status(), r.err());
+        List<Map<String, Object>> rows = jsonLines(r.out());
+        assertEquals(12 + 1, rows.size(), r.out());
+        for (int i = 0; i < 12; i++) {
+            assertEquals(i, num(rows.get(i), "frame"));
+            assertTrue(num(rows.get(i), "threshold") <= 40, "never looser than the ceiling: " + rows.get(i));
+            assertTrue(num(rows.get(i), "pieces") > 0 && num(rows.get(i), "ms") > 0, rows.get(i).toString());
+        }
+        Map<String, Object> summary = rows.get(12);
+        assertEquals("edge", summary.get("policy"));
+        assertEquals(40, num(summary, "ceiling"));
+        // A target no frame can meet keeps the threshold at the ceiling.
+        assertEquals(40, num(summary, "final_threshold"));
+        assertEquals(960, TextureReader.read(plot).width());
+    }
+
+    @Test
     void sweepOptionsNeedSweep() throws IOException {
         CliRun r = CliRun.of("bench", "--scene", "floor", "--plot", dir.resolve("p.png").toString());
         assertEquals(2, r.status());

@@ -1,0 +1,62 @@
+package dev.trisect.cli;
+
+import dev.trisect.base.JsonObject;
+import dev.trisect.perf.BudgetRun;
+import dev.trisect.perf.FrameTimes;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * The lines {@code bench --target-ms} prints: every frame's threshold, time and pieces (a table, or one
+ * JSON object per frame), then a summary of the second half of the run, where the controller has had
+ * time to settle.
+ */
+final class BudgetOutput {
+    private final String scene;
+    private final String size;
+    private final int threads;
+
+    BudgetOutput(String scene, String size, int threads) {
+        this.scene = scene;
+        this.size = size;
+        this.threads = threads;
+    }
+
+    List<String> lines(BudgetRun.Trace t, boolean json) {
+        List<String> lines = new ArrayList<>();
+        String policy = t.policy().name().toLowerCase(Locale.ROOT);
+        int n = t.ms().length;
+        if (!json) {
+            lines.add(String.format(Locale.ROOT, "scene %s, %s, %d threads, target %.3f ms, %s policy, ceiling %s px",
+                    scene, size, threads, t.targetMs(), policy, t.ceiling()));
+            lines.add(String.format(Locale.ROOT, "%6s %12s %10s %10s", "frame", "threshold", "ms", "pieces"));
+        }
+        for (int i = 0; i < n; i++) {
+            lines.add(json
+                    ? new JsonObject().put("frame", i).put("threshold", t.thresholds()[i], 4)
+                    .put("ms", t.ms()[i], 3).put("pieces", t.pieces()[i]).toString()
+                    : String.format(Locale.ROOT, "%6d %12.4f %10.3f %10d", i, t.thresholds()[i], t.ms()[i],
+                    t.pieces()[i]));
+        }
+        int half = n / 2;
+        FrameTimes late = FrameTimes.of(Arrays.copyOfRange(t.ms(), half, n));
+        double[] thresholds = Arrays.copyOfRange(t.thresholds(), half, n);
+        Arrays.sort(thresholds);
+        double medianThreshold = thresholds[thresholds.length / 2];
+        if (json) {
+            lines.add(new JsonObject()
+                    .put("scene", scene).put("size", size).put("threads", threads).put("policy", policy)
+                    .put("target_ms", t.targetMs(), 3).put("ceiling", t.ceiling())
+                    .put("second_half_median_ms", late.medianMs(), 3)
+                    .put("second_half_median_threshold", medianThreshold, 4)
+                    .put("final_threshold", t.thresholds()[n - 1], 4)
+                    .toString());
+        } else {
+            lines.add(String.format(Locale.ROOT, "second half: median %.3f ms (target %.3f), median threshold %.4f px,"
+                    + " final %.4f px", late.medianMs(), t.targetMs(), medianThreshold, t.thresholds()[n - 1]));
+        }
+        return lines;
+    }
+}

@@ -1,0 +1,81 @@
+package dev.trisect.perf;
+
+import dev.trisect.math.Vec3;
+import dev.trisect.math.Viewport;
+import dev.trisect.pipeline.FrameRenderer;
+import dev.trisect.pipeline.FrameStats;
+import dev.trisect.pipeline.RenderMode;
+import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.raster.Framebuffer;
+import dev.trisect.scene.Camera;
+import dev.trisect.scene.Scene;
+import dev.trisect.tessellate.SplitPolicy;
+import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.texture.Texture;
+
+/**
+ * Renders frames of the tessellated path with a {@link BudgetController} choosing the threshold of
+ * the settings' split policy each frame, the settings' own threshold being the ceiling; optionally
+ * while the camera orbits its target once, so the load changes under the controller.
+ */
+public final class BudgetRun {
+    /**
+     * What each measured frame did.
+     *
+     * @param thresholds the threshold each frame was rendered with, pixels
+     * @param ms         each frame's wall-clock time, milliseconds
+     * @param pieces     each frame's pieces
+     */
+    public record Trace(SplitPolicy policy, double targetMs, double ceiling, double[] thresholds, double[] ms,
+                        long[] pieces) {
+    }
+
+    private BudgetRun() {
+    }
+
+    /**
+     * @param settings tessellated settings; their policy's threshold is the ceiling and the start
+     * @param orbit    whether the camera circles its target (about the up axis) once over the frames
+     */
+    public static Trace run(FrameRenderer renderer, Scene scene, Texture[] textures, Camera camera, int width,
+                            int height, RenderSettings settings, double targetMs, boolean orbit, int warmup,
+                            int frames, FrameBench.Progress progress) {
+        RenderSettings base = settings.withMode(RenderMode.TESSELLATED);
+        TessellationSettings t = base.tessellation();
+        boolean edge = t.policy() == SplitPolicy.EDGE;
+        double ceiling = edge ? t.maxEdge() : t.maxError();
+        BudgetController controller = new BudgetController(targetMs, ceiling, BudgetController.defaultFloor(ceiling),
+                ceiling);
+        Framebuffer frame = new Framebuffer(width, height);
+        Viewport viewport = new Viewport(width, height);
+        for (int i = 0; i < warmup; i++) {
+            renderer.render(scene.mesh(), textures, camera.viewProjection(viewport), base, frame);
+            progress.frameDone(i + 1, warmup + frames);
+        }
+        double[] thresholds = new double[frames];
+        double[] ms = new double[frames];
+        long[] pieces = new long[frames];
+        for (int i = 0; i < frames; i++) {
+            double threshold = controller.threshold();
+            RenderSettings s = base.withTessellation(edge ? t.withMaxEdge(threshold) : t.withMaxError(threshold));
+            Camera c = orbit ? orbit(camera, 2 * Math.PI * i / frames) : camera;
+            long t0 = System.nanoTime();
+            FrameStats stats = renderer.render(scene.mesh(), textures, c.viewProjection(viewport), s, frame);
+            ms[i] = (System.nanoTime() - t0) / 1e6;
+            thresholds[i] = threshold;
+            pieces[i] = stats.pieces();
+            controller.update(ms[i]);
+            progress.frameDone(warmup + i + 1, warmup + frames);
+        }
+        return new Trace(t.policy(), targetMs, ceiling, thresholds, ms, pieces);
+    }
+
+    /** The camera with its eye turned by {@code angle} radians about the vertical through its target. */
+    static Camera orbit(Camera camera, double angle) {
+        Vec3 d = camera.eye().sub(camera.target());
+        double cos = Math.cos(angle);
+        double sin = Math.sin(angle);
+        Vec3 eye = camera.target().add(new Vec3(d.x() * cos + d.z() * sin, d.y(), -d.x() * sin + d.z() * cos));
+        return new Camera(eye, camera.target(), camera.up(), camera.fovY(), camera.near(), camera.far());
+    }
+}
