@@ -228,6 +228,7 @@ public final class FrameRenderer implements AutoCloseable {
         long splits = 0;
         int deepest = 0;
         long caps = 0;
+        long fallback = 0;
         long clipCpu = 0;
         long tessCpu = 0;
         for (int c = 0; c < chunkCount; c++) {
@@ -242,6 +243,7 @@ public final class FrameRenderer implements AutoCloseable {
             splits += k.splits;
             deepest = Math.max(deepest, k.deepest);
             caps += k.caps;
+            fallback += k.fallback;
             clipCpu += k.clipNanos;
             tessCpu += k.tessellateNanos;
         }
@@ -256,7 +258,7 @@ public final class FrameRenderer implements AutoCloseable {
         long clipWall = cpu == 0 ? 0 : Math.round(geometryWall * (double) clipCpu / cpu);
         return new FrameStats(triangles, back, frustum, degenerate, invalid, clipped, pieces, offScreen, splits,
                 deepest,
-                caps, pixels, threads, transformed - start, clipWall, geometryWall - clipWall,
+                caps, fallback, pixels, threads, transformed - start, clipWall, geometryWall - clipWall,
                 rasterDone - geometryDone, end - rasterDone, end - start);
     }
 
@@ -391,6 +393,7 @@ public final class FrameRenderer implements AutoCloseable {
         long splits;
         int deepest;
         long caps;
+        long fallback;
         long clipNanos;
         long tessellateNanos;
         private int currentId;
@@ -446,6 +449,7 @@ public final class FrameRenderer implements AutoCloseable {
             splits = tess.splits();
             deepest = tess.deepestLevel();
             caps = tess.capsReached();
+            fallback = tess.fallbackPieces();
         }
 
         /**
@@ -558,12 +562,12 @@ public final class FrameRenderer implements AutoCloseable {
         }
 
         @Override
-        public void piece(double[] v, int a, int b, int c) {
+        public void piece(double[] v, int a, int b, int c, boolean fallback) {
             // Tessellator vertex layout: clip x, y, z, w, s, t, screen x, screen y.
             out.add(v[a + 6], v[a + 7], 1 / v[a + 3], v[a + 4], v[a + 5],
                     v[b + 6], v[b + 7], 1 / v[b + 3], v[b + 4], v[b + 5],
                     v[c + 6], v[c + 7], 1 / v[c + 3], v[c + 4], v[c + 5],
-                    currentId, currentMaterial);
+                    currentId, currentMaterial, fallback);
         }
 
         /** Sorts this chunk's screen triangles into bands of rows, keeping their order within a band. */

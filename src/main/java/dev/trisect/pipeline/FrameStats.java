@@ -13,9 +13,11 @@ import dev.trisect.base.JsonObject;
  * @param clipped          cut by the near, far or guard-band planes
  * @param pieces           triangles filled (tessellated pieces, or clipped triangles in the other paths)
  * @param piecesOffScreen  tessellated pieces dropped unsplit for lying wholly outside the viewport
- * @param splits           midpoint splits made
+ * @param splits           edge cuts made
  * @param deepestSplit     highest edge level reached (times an input edge was halved)
  * @param capsReached      input triangles whose splitting a depth or piece cap stopped short
+ * @param piecesFallback   pieces a cap stopped short of their split policy, filled per pixel instead
+ *                         of affinely (included in {@code pieces})
  * @param pixelsWritten    pixels that passed the depth test
  * @param threads          threads that filled the frame
  * @param transformNanos   vertex transform
@@ -27,7 +29,7 @@ import dev.trisect.base.JsonObject;
  */
 public record FrameStats(long trianglesIn, long culledBackFace, long culledFrustum, long culledDegenerate,
                          long skippedInvalid, long clipped, long pieces, long piecesOffScreen, long splits,
-                         int deepestSplit, long capsReached, long pixelsWritten, int threads,
+                         int deepestSplit, long capsReached, long piecesFallback, long pixelsWritten, int threads,
                          long transformNanos, long clipNanos, long tessellateNanos, long rasterNanos,
                          long overlayNanos, long totalNanos) {
 
@@ -51,6 +53,7 @@ public record FrameStats(long trianglesIn, long culledBackFace, long culledFrust
                 .put("splits", splits)
                 .put("deepest_split", deepestSplit)
                 .put("caps_reached", capsReached)
+                .put("pieces_fallback", piecesFallback)
                 .put("pixels_written", pixelsWritten)
                 .put("threads", threads)
                 .put("ms", new JsonObject()

@@ -1,8 +1,9 @@
 package dev.trisect.raster;
 
 /**
- * Draws the outline of every filled triangle (every tessellated piece) in yellow over the frame,
- * restricted to a rectangle so that it can run per band like the fill.
+ * Draws the outline of every filled triangle (every tessellated piece) over the frame, in yellow,
+ * or in magenta for a piece filled per pixel by the fallback ({@link OverlayColours}), restricted to a
+ * rectangle so that it can run per band like the fill.
  *
  * <p>An edge lights the pixel nearest to it in every column (mostly horizontal edges) or row
  * (mostly vertical ones) whose centre lies within the edge's extent. The pixel is a function of the
@@ -12,13 +13,15 @@ package dev.trisect.raster;
  * tolerance), so outlines of hidden pieces stay hidden while the visible ones show on silhouettes.
  */
 public final class BorderOverlay {
-    /** The overlay colour, #FFFF00. */
-    public static final int YELLOW = 0xFFFFFF00;
+    /** The colour of an ordinary piece's outline, #FFFF00. */
+    public static final int YELLOW = OverlayColours.PIECE;
 
     /** Relative 1/w tolerance: a line pixel may lie this much behind the stored surface and still show. */
     private static final double DEPTH_TOLERANCE = 1.0 / 512;
 
     private final Plane depth = new Plane();
+    /** Outline colour of the triangle being drawn. */
+    private int colour = YELLOW;
 
     /**
      * Outlines triangles {@code order[from..to)} within pixels {@code [x0, x1) x [y0, y1)}.
@@ -34,6 +37,7 @@ public final class BorderOverlay {
             if (!depthPlane(triangles, tri)) {
                 continue;
             }
+            colour = OverlayColours.of(triangles, tri);
             int o = tri * ScreenTriangles.FIXED_STRIDE;
             for (int e = 0; e < 3; e++) {
                 int a = o + 2 * e;
@@ -116,7 +120,7 @@ public final class BorderOverlay {
         if (q < frame.depth()[i] * (1 - DEPTH_TOLERANCE)) {
             return 0;
         }
-        frame.color()[i] = YELLOW;
+        frame.color()[i] = colour;
         return 1;
     }
 }

@@ -58,7 +58,8 @@ public final class Rasterizer {
      * {@code [x0, x1) x [y0, y1)} of the frame.
      *
      * @param perspective true: u/w, v/w and 1/w interpolate linearly on screen and every pixel
-     *                    divides; false: u and v interpolate linearly on screen (affine)
+     *                    divides; false: u and v interpolate linearly on screen (affine), except for
+     *                    triangles flagged {@link ScreenTriangles#perPixel()}, which divide
      * @param textures    texture of each material index
      * @return the number of pixels written (depth test passed)
      */
@@ -67,19 +68,21 @@ public final class Rasterizer {
         long written = 0;
         int[] materials = triangles.materials();
         int[] ids = triangles.ids();
+        boolean[] perPixel = triangles.perPixel();
         for (int n = from; n < to; n++) {
             int tri = order[n];
-            if (!setup(triangles, tri, perspective, x0, y0, x1, y1)) {
+            boolean divide = perspective || perPixel[tri];
+            if (!setup(triangles, tri, divide, x0, y0, x1, y1)) {
                 continue;
             }
             Texture texture = textures[materials[tri]];
             if (filter != TextureFilter.NEAREST) {
-                written += FilteredSpans.fill(this, frame, texture.mipChain(), ids[tri] + 1, perspective,
+                written += FilteredSpans.fill(this, frame, texture.mipChain(), ids[tri] + 1, divide,
                         fixedPointSafe, filter);
                 continue;
             }
-            written += perspective || !fixedPointSafe
-                    ? spans(frame, texture, ids[tri] + 1, perspective)
+            written += divide || !fixedPointSafe
+                    ? spans(frame, texture, ids[tri] + 1, divide)
                     : spansAffineFixed(frame, texture, ids[tri] + 1);
         }
         return written;

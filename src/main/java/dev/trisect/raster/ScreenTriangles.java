@@ -8,7 +8,8 @@ import java.util.Arrays;
  * <p>Per triangle: corners snapped to the {@link FixedPoint} grid (for coverage), the same corners
  * unsnapped in pixels (for attribute planes, so snapping never bends the texture mapping), and per
  * corner {@code 1/w} (view-space units^-1) and texel coordinates s, t. Plus the input triangle's index
- * (for the UV output) and its material (the texture to sample). The arrays grow as needed and are
+ * (for the UV output), its material (the texture to sample), and whether it must be filled per pixel
+ * (a tessellated piece a cap stopped short of its policy, see {@link #perPixel()}). The arrays grow as needed and are
  * reused from frame to frame; {@link #shrinkTo} gives storage back after a spike.
  */
 public final class ScreenTriangles {
@@ -25,6 +26,7 @@ public final class ScreenTriangles {
     private double[] attributes = new double[ATTRIBUTE_STRIDE * 1024];
     private int[] ids = new int[1024];
     private int[] materials = new int[1024];
+    private boolean[] perPixel = new boolean[1024];
 
     /** Number of triangles. */
     public int count() {
@@ -55,6 +57,7 @@ public final class ScreenTriangles {
         attributes = Arrays.copyOf(attributes, n * ATTRIBUTE_STRIDE);
         ids = Arrays.copyOf(ids, n);
         materials = Arrays.copyOf(materials, n);
+        perPixel = Arrays.copyOf(perPixel, n);
     }
 
     /** Snapped corners, sub-pixel units. Read-only outside this package. */
@@ -83,17 +86,34 @@ public final class ScreenTriangles {
     }
 
     /**
+     * Whether each triangle is filled perspective-correct whatever the path: the fallback for pieces
+     * that a cap stopped before they met their split policy.
+     */
+    public boolean[] perPixel() {
+        return perPixel;
+    }
+
+    /** Appends a triangle that follows the frame's path (not a per-pixel fallback); see the full form. */
+    public void add(double x0, double y0, double q0, double s0, double t0,
+                    double x1, double y1, double q1, double s1, double t1,
+                    double x2, double y2, double q2, double s2, double t2,
+                    int id, int material) {
+        add(x0, y0, q0, s0, t0, x1, y1, q1, s1, t1, x2, y2, q2, s2, t2, id, material, false);
+    }
+
+    /**
      * Appends a triangle.
      *
      * @param x0 screen x of corner 0, pixels (snapped here)
      * @param q0 1/w of corner 0, w the view depth &gt; 0
      * @param s0 texel s of corner 0
      * @param t0 texel t of corner 0
+     * @param fallback fill this triangle per pixel (perspective-correct) whatever the frame's path
      */
     public void add(double x0, double y0, double q0, double s0, double t0,
                     double x1, double y1, double q1, double s1, double t1,
                     double x2, double y2, double q2, double s2, double t2,
-                    int id, int material) {
+                    int id, int material, boolean fallback) {
         if (count == ids.length) {
             grow();
         }
@@ -123,6 +143,7 @@ public final class ScreenTriangles {
         attributes[a + 8] = t2;
         ids[count] = id;
         materials[count] = material;
+        perPixel[count] = fallback;
         count++;
     }
 
@@ -133,6 +154,7 @@ public final class ScreenTriangles {
         attributes = Arrays.copyOf(attributes, n * ATTRIBUTE_STRIDE);
         ids = Arrays.copyOf(ids, n);
         materials = Arrays.copyOf(materials, n);
+        perPixel = Arrays.copyOf(perPixel, n);
     }
 
     /** Smallest pixel row whose centre the triangle can cover (may be below 0). */

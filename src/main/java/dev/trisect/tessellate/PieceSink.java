@@ -10,6 +10,12 @@ package dev.trisect.tessellate;
  */
 @FunctionalInterface
 public interface PieceSink {
-    /** One piece, corners in the input triangle's winding order. */
-    void piece(double[] vertices, int a, int b, int c);
+    /**
+     * One piece, corners in the input triangle's winding order.
+     *
+     * @param fallback true when a cap stopped the splitting while the piece still fails its policy:
+     *                 it must be filled per pixel (perspective-correct), not affinely, so that the
+     *                 bound holds on it too
+     */
+    void piece(double[] vertices, int a, int b, int c, boolean fallback);
 }

@@ -17,6 +17,10 @@ import java.util.Arrays;
  * against enormous or degenerate input, can leave a split undone on one side of an edge; reaching it
  * is counted.
  *
+ * <p>A piece that still fails the policy when a cap stops its splitting is handed on flagged as a
+ * fallback, to be filled per pixel: same corners, same coverage, so no new crack, and no pixel of it
+ * is displaced more than the per-pixel path's rounding.
+ *
  * <p>The recursion runs on an explicit stack in primitive arrays, so no input can overflow the Java
  * stack, and nothing is allocated per triangle once the scratch arrays have grown to their working
  * size. One instance per thread.
@@ -49,6 +53,7 @@ public final class Tessellator {
     private long culledOffScreen;
     private int deepestLevel;
     private int capsReached;
+    private long fallbackPieces;
 
     /** Sets the frame's viewport and split settings for the triangles that follow. */
     public void configure(Viewport viewport, TessellationSettings settings) {
@@ -69,6 +74,7 @@ public final class Tessellator {
         culledOffScreen = 0;
         deepestLevel = 0;
         capsReached = 0;
+        fallbackPieces = 0;
     }
 
     /** Splits made since the last reset. */
@@ -89,6 +95,11 @@ public final class Tessellator {
     /** The highest edge level among emitted pieces since the last reset: the deepest split. */
     public int deepestLevel() {
         return deepestLevel;
+    }
+
+    /** Pieces emitted since the last reset that still failed the policy and are flagged to be filled per pixel. */
+    public long fallbackPieces() {
+        return fallbackPieces;
     }
 
     /** Input triangles since the last reset whose splitting a cap stopped short. */
@@ -114,7 +125,7 @@ public final class Tessellator {
         int c = load(input, i2);
         if (!split) {
             pieces++;
-            sink.piece(vertices, a, b, c);
+            sink.piece(vertices, a, b, c, false);
             return;
         }
         int top = push(0, a, b, c, 0, 0, 0);
@@ -143,12 +154,13 @@ public final class Tessellator {
             // Pick the failing edge with the largest measure among those still allowed to split.
             int edge = -1;
             double worst = threshold;
+            boolean atCap = false;
             if (m0 > worst) {
                 if (l0 < maxLevel) {
                     edge = 0;
                     worst = m0;
                 } else {
-                    capped = true;
+                    atCap = true;
                 }
             }
             if (m1 > threshold) {
@@ -158,7 +170,7 @@ public final class Tessellator {
                         worst = m1;
                     }
                 } else {
-                    capped = true;
+                    atCap = true;
                 }
             }
             if (m2 > threshold) {
@@ -167,11 +179,11 @@ public final class Tessellator {
                         edge = 2;
                     }
                 } else {
-                    capped = true;
+                    atCap = true;
                 }
             }
             if (edge >= 0 && splitsHere >= maxSplits) {
-                capped = true;
+                atCap = true;
                 edge = -1;
             }
             if (edge < 0) {
@@ -180,7 +192,13 @@ public final class Tessellator {
                 if (level > deepestLevel) {
                     deepestLevel = level;
                 }
-                sink.piece(vertices, v0, v1, v2);
+                // Here every edge passes or a cap forbids splitting it: a failing edge means a cap
+                // stopped this piece short, and the per-pixel filler takes it.
+                if (atCap) {
+                    capped = true;
+                    fallbackPieces++;
+                }
+                sink.piece(vertices, v0, v1, v2, atCap);
                 continue;
             }
             splitsHere++;

@@ -24,9 +24,11 @@ final class StatisticsSection implements ToolSection {
             {"Triangles in", "Triangles in the scene"},
             {"Culled", "Triangles dropped as facing away, off screen, or without area"},
             {"Pieces filled", "Triangles filled: tessellated pieces, or clipped triangles in the other paths"},
-            {"Splits", "Midpoint splits made this frame"},
+            {"Splits", "Edge cuts made this frame"},
             {"Deepest split", "The most times an edge was halved this frame"},
             {"Caps reached", "Triangles whose splitting a depth or piece cap stopped short"},
+            {"Fallback pieces", "Pieces a cap stopped short of the split policy, filled per pixel instead "
+                    + "(magenta outlines)"},
             {"Pixels written", "Pixels that passed the depth test"}});
     }
 
@@ -56,6 +58,7 @@ final class StatisticsSection implements ToolSection {
         form.set("Splits", Long.toString(st.splits()));
         form.set("Deepest split", Integer.toString(st.deepestSplit()));
         form.set("Caps reached", Long.toString(st.capsReached()));
+        form.set("Fallback pieces", Long.toString(st.piecesFallback()));
         form.set("Pixels written", Long.toString(st.pixelsWritten()));
     }
 

@@ -97,4 +97,25 @@ class BorderOverlayTest {
         }
         assertTrue(yellow > 40);
     }
+
+    @Test
+    void fallbackPiecesAreOutlinedInTheirOwnColour() {
+        ScreenTriangles t = new ScreenTriangles();
+        // Two triangles side by side, the right one a per-pixel fallback piece.
+        t.add(2, 2, 1, 0, 0, 38, 2, 1, 0, 0, 2, 50, 1, 0, 0, 0, 0, false);
+        t.add(42, 2, 1, 0, 0, 78, 2, 1, 0, 0, 42, 50, 1, 0, 0, 1, 0, true);
+        Framebuffer fb = draw(t, H);
+        int yellowLeft = 0;
+        int magentaRight = 0;
+        for (int y = 0; y < H; y++) {
+            for (int x = 0; x < W; x++) {
+                int c = fb.color()[y * W + x];
+                assertTrue(c != OverlayColours.FALLBACK || x >= 40, "magenta only on the fallback piece");
+                assertTrue(c != OverlayColours.PIECE || x < 40, "yellow only on the ordinary piece");
+                yellowLeft += c == OverlayColours.PIECE ? 1 : 0;
+                magentaRight += c == OverlayColours.FALLBACK ? 1 : 0;
+            }
+        }
+        assertTrue(yellowLeft > 60 && magentaRight > 60, yellowLeft + " yellow, " + magentaRight + " magenta");
+    }
 }

@@ -271,4 +271,22 @@ class FillRuleTest {
         }
         return new Texture("checker", w, h, px);
     }
+
+    @Test
+    void perPixelFlagFillsAPieceExactlyAsThePerspectivePath() {
+        Texture[] tex = {Texture.solid("grey", 0xFF808080)};
+        float[][] uv = new float[2][];
+        for (int pass = 0; pass < 2; pass++) {
+            ScreenTriangles t = new ScreenTriangles();
+            // Depths 1 to 8 across the triangle: affine and perspective differ at almost every pixel.
+            t.add(3.3, 2.1, 1, 0, 0, 60.7, 9.4, 0.125, 40, 3, 8.2, 45.5, 0.5, 5, 30, 0, 0, pass == 1);
+            Framebuffer fb = new Framebuffer(W, H);
+            fb.recordUv(true);
+            fb.clearRows(0, H, 0);
+            // Pass 0: the perspective path; pass 1: the affine path with the piece flagged per pixel.
+            new Rasterizer().fill(fb, t, all(t), 0, 1, tex, pass == 0, 0, 0, W, H);
+            uv[pass] = fb.uv().clone();
+        }
+        assertArrayEquals(uv[0], uv[1]);
+    }
 }

@@ -8,9 +8,12 @@ import java.util.List;
 final class Pieces implements PieceSink {
     /** Each piece: 3 vertices of {@link Tessellator#STRIDE} doubles, copied. */
     final List<double[]> pieces = new ArrayList<>();
+    /** Whether each piece was flagged for the per-pixel fallback. */
+    final List<Boolean> fallback = new ArrayList<>();
 
     @Override
-    public void piece(double[] v, int a, int b, int c) {
+    public void piece(double[] v, int a, int b, int c, boolean perPixel) {
+        fallback.add(perPixel);
         double[] p = new double[3 * Tessellator.STRIDE];
         System.arraycopy(v, a, p, 0, Tessellator.STRIDE);
         System.arraycopy(v, b, p, Tessellator.STRIDE, Tessellator.STRIDE);

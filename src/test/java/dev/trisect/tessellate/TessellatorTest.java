@@ -115,6 +115,8 @@ class TessellatorTest {
                         .withSplitPoint(point);
                 Pieces out = run(t, tri, settings);
                 assertEquals(0, t.capsReached(), "no cap is reached by these triangles");
+                assertEquals(0, t.fallbackPieces(), "so nothing falls back");
+                assertTrue(!out.fallback.contains(true));
                 assertTrue(out.pieces.size() >= previous, "pieces never fall as the threshold falls");
                 previous = out.pieces.size();
                 assertEquals(out.pieces.size(), t.pieces());
@@ -208,11 +210,30 @@ class TessellatorTest {
                 Pieces.vertex(VP, 7, 250, 1, 0, 1));
         Tessellator t = new Tessellator();
         for (int depth = 0; depth <= 6; depth++) {
-            run(t, tri, edge(1).withMaxDepth(depth));
+            Pieces out = run(t, tri, edge(1).withMaxDepth(depth));
             assertTrue(t.deepestLevel() <= depth, "no edge halved more than maxDepth times");
             assertEquals(1, t.capsReached());
+            assertFallbackFlagsExactlyTheFailingPieces(t, out, 1);
         }
         assertEquals(1, run(t, tri, edge(1).withMaxDepth(0)).pieces.size(), "depth 0 never splits");
+    }
+
+    /** Under the edge policy: a piece is flagged for the per-pixel fallback exactly when an edge is too long. */
+    private static void assertFallbackFlagsExactlyTheFailingPieces(Tessellator t, Pieces out, double maxEdge) {
+        long flagged = 0;
+        for (int i = 0; i < out.pieces.size(); i++) {
+            double[] p = out.pieces.get(i);
+            boolean fails = false;
+            for (int e = 0; e < 3; e++) {
+                int a = e * S;
+                int b = ((e + 1) % 3) * S;
+                fails |= Math.hypot(p[a + 6] - p[b + 6], p[a + 7] - p[b + 7]) > maxEdge;
+            }
+            assertEquals(fails, out.fallback.get(i), "piece " + i + " is flagged exactly when it fails");
+            flagged += fails ? 1 : 0;
+        }
+        assertTrue(flagged > 0, "the cap left failing pieces");
+        assertEquals(flagged, t.fallbackPieces());
     }
 
     @Test
@@ -226,6 +247,7 @@ class TessellatorTest {
             Pieces out = run(t, tri, edge(0.01).withMaxPieces(cap).withMaxDepth(30));
             assertEquals(cap, out.pieces.size(), "exactly the cap when the policy wants more");
             assertEquals(1, t.capsReached());
+            assertFallbackFlagsExactlyTheFailingPieces(t, out, 0.01);
         }
     }
 
