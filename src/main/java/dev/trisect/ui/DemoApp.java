@@ -48,6 +48,12 @@ public final class DemoApp implements Callable<Integer> {
     @Option(names = "--dev-tools", description = "Open the developer tools at start.")
     boolean devTools;
 
+    @Option(names = "--target-ms", paramLabel = "MS",
+            description = "Start with the frame budget on: the tessellated path's threshold adapts every frame to "
+                    + "hold this engine time per frame, never looser than the threshold set (developer tools, "
+                    + "Frame budget).")
+    Double targetMs;
+
     @Option(names = "--soak", paramLabel = "SECONDS",
             description = "Run the endurance check: measure frame rates per path, then change settings, sizes and "
                     + "windows for this long while watching the heap and the event thread; print a report and exit.")
@@ -109,6 +115,9 @@ public final class DemoApp implements Callable<Integer> {
         if (n < 1 || n > 256) {
             throw InputException.usage("--threads must be between 1 and 256, got " + n);
         }
+        if (targetMs != null && !(targetMs > 0 && targetMs <= 1000)) {
+            throw InputException.usage("--target-ms must be between 0 and 1000 milliseconds, got " + targetMs);
+        }
         if (soak != null && soak < 1) {
             throw InputException.usage("--soak must be at least 1 second, got " + soak);
         }
@@ -129,6 +138,9 @@ public final class DemoApp implements Callable<Integer> {
         RenderMode initial = start;
         state.settings(state.settings().withRenderScale(renderScale)
                 .withRender(state.settings().render().withMode(initial)));
+        if (targetMs != null) {
+            state.budget(new DemoState.Budget(true, targetMs));
+        }
         AtomicReference<DemoWindow> window = new AtomicReference<>();
         AtomicReference<Throwable> failure = new AtomicReference<>();
         SwingUtilities.invokeAndWait(() -> {

@@ -24,6 +24,19 @@ final class DemoState {
     /** Whether the developer tools are showing, so that their numbers are worth measuring. */
     private volatile boolean toolsOpen;
 
+    private volatile Budget budget = new Budget(false, Budget.DEFAULT_TARGET_MS);
+    /** The split threshold the budget controller chose for the last frame, pixels; NaN when off. */
+    private volatile double chosenThreshold = Double.NaN;
+
+    /**
+     * The frame-time budget: when on, the tessellated path's threshold follows a
+     * {@link dev.trisect.perf.BudgetController} holding {@code targetMs}, the user's threshold being
+     * its ceiling.
+     */
+    record Budget(boolean on, double targetMs) {
+        static final double DEFAULT_TARGET_MS = 16.7;
+    }
+
     /** A comparison of one frame against the per-pixel path, and what it was made from. */
     record Measurement(Comparison comparison, long frame, Camera camera, ViewSettings settings, int width,
                        int height, long nanos) {
@@ -99,6 +112,22 @@ final class DemoState {
 
     void problem(String message) {
         problem = message;
+    }
+
+    Budget budget() {
+        return budget;
+    }
+
+    void budget(Budget b) {
+        budget = b;
+    }
+
+    double chosenThreshold() {
+        return chosenThreshold;
+    }
+
+    void chosenThreshold(double t) {
+        chosenThreshold = t;
     }
 
     Progress progress() {

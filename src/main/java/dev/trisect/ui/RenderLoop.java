@@ -8,6 +8,7 @@ import dev.trisect.metrics.ImageComparison;
 import dev.trisect.metrics.TexelToScreen;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.RenderMode;
+import dev.trisect.pipeline.RenderSettings;
 import dev.trisect.raster.Framebuffer;
 import dev.trisect.scene.Camera;
 import dev.trisect.scene.Scene;
@@ -41,6 +42,7 @@ final class RenderLoop implements Runnable {
     private Framebuffer reference;
     private float[] displacement;
     private CameraRig rig;
+    private final BudgetHook budget = new BudgetHook();
     private long sceneSerial = -1;
     private long frames;
     private long lastCompare;
@@ -164,7 +166,9 @@ final class RenderLoop implements Runnable {
         }
         // This path last, so that its pieces are the ones the overlay outlines; the overlay comes after
         // the comparison, which measures the rendered image and never the borders.
-        back.stats = renderer.render(scene.mesh(), textures, vp, settings.render().withBorders(false), fb);
+        RenderSettings render = budget.apply(settings.render(), state.budget());
+        back.stats = renderer.render(scene.mesh(), textures, vp, render.withBorders(false), fb);
+        state.chosenThreshold(budget.frameDone(back.stats.totalNanos() / 1e6));
         frames++;
         back.serial = frames;
         back.camera = camera;
