@@ -20,9 +20,13 @@ package dev.trisect.texture;
  * total;</li>
  * <li>a side of 1 stays 1 (only the other side halves).</li>
  * </ul>
- * Every channel, alpha included, is filtered with the exact weights and rounded to the nearest
- * integer once. OpenGL leaves the filter of {@code glGenerateMipmap} to the implementation (§8.14.4);
- * Mesa uses the 2x2 box for even sides, the same as here (docs/opengl.md has the measured difference).
+ * Every channel, alpha included, is filtered along x and rounded to the nearest integer (half up),
+ * then along y and rounded again. OpenGL leaves the filter of {@code glGenerateMipmap} to the
+ * implementation (OpenGL 4.6 core spec, §8.14.4); for even sides this is bit for bit what Mesa's
+ * llvmpipe generates (a 2x2 average rounded in the same two steps, measured with a probe of
+ * {@code glGetTexImage}), and rounding once instead would put about half the texels 1/255 off
+ * theirs. For odd sides Mesa samples bilinearly at each new texel's centre, which skips source texels;
+ * the box filter here does not (docs/opengl.md).
  *
  * <p>Texels of every level are ARGB, row 0 at the top, as {@link Texture#argb()}. Immutable after
  * construction; the arrays are handed out without copies for the rasterizer: read-only.
@@ -109,8 +113,10 @@ public final class MipChain {
     }
 
     /**
-     * One box-filtered level from the one above it. Per axis, {@code taps} source indices and integer
-     * weights for each destination index (see the class comment); the 2D weight is their product.
+     * One box-filtered level from the one above it, separably: each source row is filtered along x
+     * and rounded, then those columns along y and rounded (half up, as integers). Per axis,
+     * {@code taps} source indices and integer weights for each destination index (see the class
+     * comment).
      */
     static int[] reduce(int[] src, int sw, int sh, int dw, int dh) {
         int[] xFirst = new int[dw];
@@ -119,42 +125,40 @@ public final class MipChain {
         int[] yFirst = new int[dh];
         int[] yWeights = new int[3 * dh];
         int yDenominator = axis(sh, dh, yFirst, yWeights);
-        long denominator = (long) xDenominator * yDenominator;
-        long half = denominator / 2;
+        // Pass 1: rows filtered along x, four channels, rows counted from the bottom.
+        int[] rows = new int[4 * dw * sh];
+        for (int y = 0; y < sh; y++) {
+            int srcRow = (sh - 1 - y) * sw;
+            for (int i = 0; i < dw; i++) {
+                for (int channel = 0; channel < 4; channel++) {
+                    int shift = 8 * channel;
+                    long sum = 0;
+                    for (int k = 0; k < 3; k++) {
+                        int w = xWeights[3 * i + k];
+                        if (w != 0) {
+                            sum += (long) w * (src[srcRow + xFirst[i] + k] >>> shift & 0xFF);
+                        }
+                    }
+                    rows[4 * (y * dw + i) + channel] = (int) ((sum + xDenominator / 2) / xDenominator);
+                }
+            }
+        }
+        // Pass 2: along y.
         int[] dst = new int[dw * dh];
-        // Tap indices count from the texture's origin, u = 0 and v = 0 (OpenGL's orientation): columns
-        // from the left, rows from the bottom, which matters for the odd-side weights.
         for (int j = 0; j < dh; j++) {
             for (int i = 0; i < dw; i++) {
-                long a = 0;
-                long r = 0;
-                long g = 0;
-                long b = 0;
-                for (int ty = 0; ty < 3; ty++) {
-                    int wy = yWeights[3 * j + ty];
-                    if (wy == 0) {
-                        continue;
-                    }
-                    int rowFromBottom = yFirst[j] + ty;
-                    int row = sh - 1 - rowFromBottom;
-                    for (int tx = 0; tx < 3; tx++) {
-                        int wx = xWeights[3 * i + tx];
-                        if (wx == 0) {
-                            continue;
+                int argb = 0;
+                for (int channel = 0; channel < 4; channel++) {
+                    long sum = 0;
+                    for (int k = 0; k < 3; k++) {
+                        int w = yWeights[3 * j + k];
+                        if (w != 0) {
+                            sum += (long) w * rows[4 * ((yFirst[j] + k) * dw + i) + channel];
                         }
-                        long w = (long) wx * wy;
-                        int c = src[row * sw + xFirst[i] + tx];
-                        a += w * (c >>> 24);
-                        r += w * ((c >>> 16) & 0xFF);
-                        g += w * ((c >>> 8) & 0xFF);
-                        b += w * (c & 0xFF);
                     }
+                    argb |= (int) ((sum + yDenominator / 2) / yDenominator) << (8 * channel);
                 }
-                int dstRow = dh - 1 - j;
-                dst[dstRow * dw + i] = (int) ((a + half) / denominator) << 24
-                        | (int) ((r + half) / denominator) << 16
-                        | (int) ((g + half) / denominator) << 8
-                        | (int) ((b + half) / denominator);
+                dst[(dh - 1 - j) * dw + i] = argb;
             }
         }
         return dst;

@@ -47,24 +47,26 @@ class MipChainTest {
     }
 
     @Test
-    void evenSidesAverageTwoByTwoRoundedToNearest() {
+    void evenSidesAverageTwoByTwoRoundingRowsThenColumns() {
         // 4x2, image rows top then bottom.
         Texture t = new Texture("t", 4, 2, greys(
                 10, 20, 100, 101,
                 30, 41, 200, 200));
         MipChain m = t.mipChain();
-        // (10 + 20 + 30 + 41) / 4 = 25.25 -> 25; (100 + 101 + 200 + 200) / 4 = 150.25 -> 150.
-        assertArrayEquals(greys(25, 150), m.texels(1));
-        // (25.25 ... ) from the rounded level 1: (25 + 150) / 2 = 87.5 -> 88.
-        assertArrayEquals(greys(88), m.texels(2));
+        // Along x: bottom (30 + 41) / 2 = 35.5 -> 36, top (10 + 20) / 2 = 15; along y (36 + 15) / 2 = 25.5
+        // -> 26 (Mesa's glGenerateMipmap gives the same; the one-step average 25.25 would be 25).
+        // Right: (200 + 200) / 2 = 200, (100 + 101) / 2 = 100.5 -> 101; (200 + 101) / 2 = 150.5 -> 151.
+        assertArrayEquals(greys(26, 151), m.texels(1));
+        // Level 2, 1x1: (26 + 151) / 2 = 88.5 -> 89, then the 1-high column stays.
+        assertArrayEquals(greys(89), m.texels(2));
     }
 
     @Test
     void oddSidesUseTheExactBoxFilter() {
         // 5 -> 2: n = 2, texel 0 = (2 a + 2 b + 1 c) / 5, texel 1 = (1 c + 2 d + 2 e) / 5.
-        Texture t = new Texture("t", 5, 1, greys(0, 50, 100, 150, 200));
-        assertArrayEquals(greys(Math.round((2 * 0 + 2 * 50 + 100) / 5f), Math.round((100 + 2 * 150 + 2 * 200) / 5f)),
-                t.mipChain().texels(1));
+        Texture t = new Texture("t", 5, 1, greys(0, 51, 100, 150, 200));
+        // (0 + 102 + 100) / 5 = 40.4 -> 40; (100 + 300 + 400) / 5 = 160.
+        assertArrayEquals(greys(40, 160), t.mipChain().texels(1));
         // 3 -> 1: (a + b + c) / 3.
         Texture three = new Texture("t", 3, 1, greys(10, 20, 61));
         assertArrayEquals(greys(30), three.mipChain().texels(1));
@@ -81,7 +83,8 @@ class MipChainTest {
 
     @Test
     void oddByOddCombinesBothAxes() {
-        // 3x3 -> 1x1: the plain average of all nine.
+        // 3x3 -> 1x1: rows averaged (bottom 60, 70, 81 -> 70.33 -> 70; 30, 40, 50 -> 40; 0, 10, 20 -> 10),
+        // then the column: (70 + 40 + 10) / 3 = 40.
         Texture t = new Texture("t", 3, 3, greys(0, 10, 20, 30, 40, 50, 60, 70, 81));
         assertArrayEquals(greys(40), t.mipChain().texels(1));
     }
