@@ -85,8 +85,35 @@ public final class Lod {
         return selection & 0x1FF;
     }
 
-    /** log2(x), minus infinity for 0. */
+    /** Mantissa bits indexing {@link #LOG2_TABLE}. */
+    private static final int TABLE_BITS = 10;
+    /** log2(1 + i / 2^TABLE_BITS) for i = 0..2^TABLE_BITS, for {@link #log2}. */
+    private static final double[] LOG2_TABLE = new double[(1 << TABLE_BITS) + 1];
+
+    static {
+        for (int i = 0; i < LOG2_TABLE.length; i++) {
+            LOG2_TABLE[i] = Math.log1p(i / (double) (1 << TABLE_BITS)) / Math.log(2);
+        }
+    }
+
+    /**
+     * log2(x) for x &gt;= 0, minus infinity for 0 (and for subnormal x, far below any level of detail
+     * that matters): the exponent of x plus log2 of its mantissa interpolated linearly in a table of
+     * 1025 entries. Absolute error below 2e-7 (the curvature of log2 over a 1/1024 step), so a blend
+     * weight quantized to 1/256 comes out as from the exact logarithm but within a hair of a step;
+     * several times faster per pixel than {@link Math#log}.
+     */
     static double log2(double x) {
-        return Math.log(x) * (1 / Math.log(2));
+        long bits = Double.doubleToRawLongBits(x);
+        int exponent = (int) (bits >>> 52) & 0x7FF;
+        if (exponent == 0 || exponent == 0x7FF) {
+            // Zero or subnormal, infinity or NaN: leave them to the exact function.
+            return Math.log(x) * (1 / Math.log(2));
+        }
+        long mantissa = bits & 0xFFFFFFFFFFFFFL;
+        int index = (int) (mantissa >>> (52 - TABLE_BITS));
+        double fraction = (mantissa & ((1L << (52 - TABLE_BITS)) - 1)) * (1.0 / (1L << (52 - TABLE_BITS)));
+        double a = LOG2_TABLE[index];
+        return exponent - 1023 + a + (LOG2_TABLE[index + 1] - a) * fraction;
     }
 }

@@ -66,4 +66,16 @@ class LodTest {
         assertEquals(8, Lod.level(Lod.select(Double.POSITIVE_INFINITY, 8)));
         assertEquals(0, Lod.select(5, 0), "a 1x1 texture has one level");
     }
+
+    @Test
+    void tableLogarithmIsWithinTwoTenMillionths() {
+        java.util.Random rnd = new java.util.Random(11);
+        for (int i = 0; i < 100_000; i++) {
+            double x = Math.pow(2, rnd.nextDouble() * 80 - 40);
+            assertEquals(Math.log(x) / Math.log(2), Lod.log2(x), 2e-7, "log2(" + x + ")");
+        }
+        assertEquals(3.0, Lod.log2(8), 0.0, "powers of two are exact");
+        assertEquals(-1.0, Lod.log2(0.5), 0.0);
+        assertEquals(Double.NEGATIVE_INFINITY, Lod.log2(0));
+    }
 }
