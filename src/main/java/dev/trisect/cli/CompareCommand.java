@@ -1,10 +1,12 @@
 package dev.trisect.cli;
 
+import dev.trisect.base.InputException;
 import dev.trisect.base.JsonObject;
 import dev.trisect.io.ImageFiles;
 import dev.trisect.io.OutputBatch;
 import dev.trisect.metrics.Comparison;
 import dev.trisect.metrics.HeatMap;
+import dev.trisect.metrics.HeatScale;
 import dev.trisect.metrics.ImageComparison;
 import dev.trisect.metrics.TexelToScreen;
 import dev.trisect.pipeline.FrameRenderer;
@@ -40,11 +42,19 @@ final class CompareCommand extends SceneCommand {
                     + "(default: ${DEFAULT-VALUE}).")
     double heatmapMax;
 
+    @Option(names = "--heatmap-scale", paramLabel = "linear|log", defaultValue = "linear",
+            description = "Heat map scale: linear from 0, or logarithmic over " + HeatScale.DECADES
+                    + " decades below --heatmap-max, so that small and huge errors both show (default: ${DEFAULT-VALUE}).")
+    String heatmapScale;
+
     @Option(names = "--out", paramLabel = "FILE.png|FILE.ppm", description = "Also write the --mode image.")
     Path out;
 
     @Override
     void checkOutputs() {
+        if (!heatmapScale.equals("linear") && !heatmapScale.equals("log")) {
+            throw InputException.usage("--heatmap-scale must be linear or log, got " + heatmapScale);
+        }
         if (heatmap != null) {
             Outputs.checkPng("--heatmap", heatmap);
         }
@@ -84,7 +94,9 @@ final class CompareCommand extends SceneCommand {
         try (OutputBatch batch = new OutputBatch()) {
             if (heatmap != null) {
                 int[] argb = new int[w * h];
-                HeatMap.render(displacement, test.uv(), reference.uv(), w, h, heatmapMax, argb);
+                HeatScale scale = new HeatScale(heatmapScale.equals("log"), heatmapMax);
+                HeatMap.render(displacement, test.uv(), reference.uv(), w, h, scale, argb);
+                HeatMap.drawLegend(argb, w, h, scale);
                 ImageFiles.write(batch, heatmap, w, h, argb);
             }
             if (out != null) {

@@ -1,5 +1,6 @@
 package dev.trisect.metrics;
 
+import dev.trisect.texture.BitmapFont;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -79,6 +80,62 @@ public final class HeatMap {
             stops.add(new LegendStop(maxPixels * index / (RAMP_SIZE - 1), RAMP[index]));
         }
         return List.copyOf(stops);
+    }
+
+    /** The colour of one displacement on a linear or logarithmic scale; NaN gives {@link #UNDEFINED_ARGB}. */
+    public static int colour(double value, HeatScale scale) {
+        return Double.isNaN(value) ? UNDEFINED_ARGB : RAMP[(int) Math.round(scale.fraction(value) * (RAMP_SIZE - 1))];
+    }
+
+    /**
+     * Draws a displacement image on a linear or logarithmic scale, as
+     * {@link #render(float[], float[], float[], int, int, double, int[])} does on a linear one.
+     */
+    public static void render(float[] displacement, float[] uvTest, float[] uvReference, int width, int height,
+                              HeatScale scale, int[] argbOut) {
+        if (!scale.logarithmic()) {
+            render(displacement, uvTest, uvReference, width, height, scale.maxPixels(), argbOut);
+            return;
+        }
+        render(displacement, uvTest, uvReference, width, height, 1.0, argbOut);
+        for (int i = 0; i < displacement.length; i++) {
+            if (!Float.isNaN(displacement[i])) {
+                argbOut[i] = colour(displacement[i], scale);
+            }
+        }
+    }
+
+    /**
+     * Draws the scale's legend into an image: a bar of the ramp with its two ends labelled and the
+     * scale named, on a dark box in the top-left corner (clipped to small images).
+     */
+    public static void drawLegend(int[] argb, int width, int height, HeatScale scale) {
+        int barW = Math.min(200, width - 16);
+        if (barW < 20 || height < 40) {
+            return;
+        }
+        int x = 8;
+        int y = 8;
+        int font = BitmapFont.CELL_HEIGHT;
+        fill(argb, width, height, x - 4, y - 4, x + barW + 4, y + 10 + 2 * font + 8, 0xFF000000);
+        for (int i = 0; i < barW; i++) {
+            int c = RAMP[(int) Math.round((double) i / (barW - 1) * (RAMP_SIZE - 1))];
+            fill(argb, width, height, x + i, y, x + i + 1, y + 10, c);
+        }
+        String low = HeatScale.number(scale.minPixels());
+        String high = HeatScale.number(scale.maxPixels()) + " px";
+        BitmapFont.drawText(argb, width, height, x, y + 13, low, 1, 0xFFFFFFFF);
+        BitmapFont.drawText(argb, width, height, x + barW - BitmapFont.textWidth(high, 1), y + 13, high, 1, 0xFFFFFFFF);
+        BitmapFont.drawText(argb, width, height, x, y + 13 + font, (scale.logarithmic() ? "LOG" : "LINEAR")
+                + " DISPLACEMENT", 1, 0xFFFFFFFF);
+    }
+
+    private static void fill(int[] argb, int width, int height, int x0, int y0, int x1, int y1, int colour) {
+        for (int y = Math.max(0, y0); y < Math.min(height, y1); y++) {
+            for (int x = Math.max(0, x0); x < Math.min(width, x1); x++) {
+                argb[y * width + x] = colour;
+            }
+        }
     }
 
     /**

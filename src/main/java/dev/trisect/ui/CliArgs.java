@@ -42,6 +42,13 @@ final class CliArgs {
         return a;
     }
 
+    /** The camera as command-line options: {@code --eye x,y,z --target x,y,z --up ... --fov ... --near ... --far ...}. */
+    static String cameraOptions(Camera c) {
+        return String.join(" ", "--eye", c.eye().toString(), "--target", c.target().toString(), "--up",
+                c.up().toString(), "--fov", Double.toString(c.fovY()), "--near", Double.toString(c.near()), "--far",
+                Double.toString(c.far()));
+    }
+
     /** How the copied command starts: the jar {@code mvn package} builds, run from the repository root. */
     static final String LAUNCHER = "java -jar target/trisect.jar";
 

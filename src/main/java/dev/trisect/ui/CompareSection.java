@@ -1,11 +1,15 @@
 package dev.trisect.ui;
 
 import dev.trisect.metrics.Comparison;
+import dev.trisect.metrics.HeatScale;
 import java.util.Locale;
 import javax.swing.BoxLayout;
 import javax.swing.ButtonGroup;
 import javax.swing.JCheckBox;
+import javax.swing.JComboBox;
 import javax.swing.JComponent;
+import javax.swing.JLabel;
+import javax.swing.JSlider;
 import javax.swing.JPanel;
 import javax.swing.JRadioButton;
 
@@ -21,6 +25,10 @@ final class CompareSection implements ToolSection {
     private final JRadioButton viewImage = new JRadioButton("Image");
     private final JRadioButton viewDifference = new JRadioButton("Difference");
     private final JRadioButton viewSplit = new JRadioButton("Split");
+    private final JComboBox<String> heatScale = new JComboBox<>(new String[] {"Linear", "Logarithmic"});
+    /** Top of the heat map's scale: 0..400 maps onto 0.1..1000 px, logarithmically. */
+    private final JSlider heatTop = new JSlider(0, 400, topToSlider(2));
+    private final JLabel heatTopValue = ToolsForm.value();
 
     CompareSection(DemoWindow owner) {
         this.owner = owner;
@@ -60,6 +68,33 @@ final class CompareSection implements ToolSection {
         viewSplit.addActionListener(e -> setView(ViewKind.SPLIT));
         form.row(ToolsForm.label("View", "What the main window shows"));
         form.row(viewRow);
+        heatScale.setToolTipText("Heat map scale: linear from 0, or logarithmic over " + HeatScale.DECADES
+                + " decades below its top, so that 0.5 px and 1,000 px errors both read");
+        heatTop.setToolTipText("Displacement drawn white, at the top of the heat map's scale, pixels");
+        heatScale.addActionListener(e -> heat());
+        ToolsForm.listen(heatTop, () -> syncing, this::showHeatTop, v -> heat());
+        form.row(ToolsForm.label("Heat map scale", heatScale.getToolTipText()), heatScale);
+        form.row(ToolsForm.label("Heat map top", heatTop.getToolTipText()), heatTopValue);
+        form.row(heatTop);
+    }
+
+    static int topToSlider(double px) {
+        return (int) Math.round(100 * (Math.log10(px) + 1));
+    }
+
+    static double sliderToTop(int v) {
+        return Math.pow(10, v / 100.0 - 1);
+    }
+
+    private void heat() {
+        if (!syncing) {
+            owner.update(s -> s.withHeatScale(new HeatScale(heatScale.getSelectedIndex() == 1,
+                    sliderToTop(heatTop.getValue()))));
+        }
+    }
+
+    private void showHeatTop() {
+        heatTopValue.setText(HeatScale.number(sliderToTop(heatTop.getValue())) + " px");
     }
 
     @Override
@@ -81,6 +116,9 @@ final class CompareSection implements ToolSection {
             viewImage.setSelected(s.view() == ViewKind.IMAGE);
             viewDifference.setSelected(s.view() == ViewKind.DIFFERENCE);
             viewSplit.setSelected(s.view() == ViewKind.SPLIT);
+            heatScale.setSelectedIndex(s.heatScale().logarithmic() ? 1 : 0);
+            heatTop.setValue(topToSlider(s.heatScale().maxPixels()));
+            showHeatTop();
         } finally {
             syncing = false;
         }

@@ -13,6 +13,8 @@ final class DemoState {
     static final long MAX_FRAME_PIXELS = 3840L * 2160;
 
     final InputState input = new InputState();
+    /** Freeze and step: set by the event thread, obeyed by the render loop. */
+    final FreezeGate freeze = new FreezeGate();
     private volatile ViewSettings settings = ViewSettings.defaults();
     private volatile Scene scene;
     private volatile long sceneSerial;

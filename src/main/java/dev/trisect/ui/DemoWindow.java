@@ -71,6 +71,8 @@ final class DemoWindow {
     final Command resetCommand;
     /** Steps the texture filter: nearest, bilinear, trilinear, nearest... Named after the current one. */
     final Command filterCommand;
+    final Command freezeCommand;
+    final Command stepCommand;
     final Command screenshotCommand;
     final Command openCommand;
     final Command exitCommand;
@@ -96,6 +98,14 @@ final class DemoWindow {
                 KeyStroke.getKeyStroke(KeyEvent.VK_R, 0), () -> {
                     orbitCommand.show(false);
                     state.input.requestReset();
+                });
+        freezeCommand = Command.toggle("Freeze frame", "Stop on this frame: the camera and the comparison hold "
+                + "still so it can be inspected; settings still apply to it", KeyStroke.getKeyStroke(KeyEvent.VK_SPACE, 0),
+                c -> state.freeze.freeze(c.selected()));
+        stepCommand = Command.action("Step one frame", "Draw the next frame, 1/60 s on, and stay frozen",
+                KeyStroke.getKeyStroke(KeyEvent.VK_PERIOD, 0), () -> {
+                    freezeCommand.show(true);
+                    state.freeze.step();
                 });
         filterCommand = Command.action("Texture filter", "Next texture filter: nearest, bilinear, trilinear "
                 + "(OpenGL's GL_NEAREST, GL_LINEAR, GL_LINEAR_MIPMAP_LINEAR)", KeyStroke.getKeyStroke(KeyEvent.VK_F, 0),
@@ -274,6 +284,9 @@ final class DemoWindow {
         viewMenu.add(new JMenuItem(resetCommand));
         viewMenu.add(new JMenuItem(filterCommand));
         viewMenu.addSeparator();
+        viewMenu.add(new JCheckBoxMenuItem(freezeCommand));
+        viewMenu.add(new JMenuItem(stepCommand));
+        viewMenu.addSeparator();
         ButtonGroup viewGroup = new ButtonGroup();
         for (Command c : viewCommands) {
             JRadioButtonMenuItem item = new JRadioButtonMenuItem(c);
@@ -298,7 +311,8 @@ final class DemoWindow {
     private void bindKeys(JComponent root) {
         InputMap in = root.getInputMap(JComponent.WHEN_IN_FOCUSED_WINDOW);
         ActionMap act = root.getActionMap();
-        List<Command> commands = new ArrayList<>(List.of(devToolsCommand, bordersCommand, orbitCommand, resetCommand, filterCommand,
+        List<Command> commands = new ArrayList<>(List.of(devToolsCommand, bordersCommand, orbitCommand, resetCommand,
+                filterCommand, freezeCommand, stepCommand,
                 screenshotCommand, openCommand, exitCommand));
         commands.addAll(modeCommands);
         commands.addAll(viewCommands);
@@ -380,8 +394,11 @@ final class DemoWindow {
         DemoState.Progress p = state.progress();
         RenderSettings r = state.settings().render();
         FrameSlot f = view.front();
-        pace.setText(String.format(Locale.ROOT, "%s  %.0f fps  %s", r.mode().id(), p.fps(),
-                f == null ? "" : f.width() + "x" + f.height()));
+        pace.setText(state.freeze.frozen()
+                ? String.format(Locale.ROOT, "%s  FROZEN at frame %d  %s", r.mode().id(), f == null ? 0 : f.serial,
+                        f == null ? "" : f.width() + "x" + f.height())
+                : String.format(Locale.ROOT, "%s  %.0f fps  %s", r.mode().id(), p.fps(),
+                        f == null ? "" : f.width() + "x" + f.height()));
         if (devTools != null && devTools.isVisible()) {
             devTools.refresh(p, f, state.measurement());
         }

@@ -23,8 +23,8 @@ final class FrameSlot {
     ViewKind view = ViewKind.IMAGE;
     /** Split view divider, 0..1 of the width. */
     double splitFraction;
-    /** Heat map scale of a difference view, pixels. */
-    double heatmapMax;
+    /** Heat map scale of a difference view. */
+    dev.trisect.metrics.HeatScale heatScale;
     /** Serial number of the frame, counting from 1. */
     long serial;
     /** The camera the frame was drawn with. */

@@ -101,8 +101,16 @@ final class RenderLoop implements Runnable {
                     fw = Math.max(1, (int) (fw * shrink));
                     fh = Math.max(1, (int) (fh * shrink));
                 }
+                FreezeGate.Action action = state.freeze.next(settings, ((long) fw << 32) | fh);
+                if (action == FreezeGate.Action.HOLD) {
+                    // Frozen: mouse looks and wheel turns made now must not jump the camera on the next step.
+                    state.input.takeDrag();
+                    state.input.takeWheel();
+                    sleep(15);
+                    continue;
+                }
                 try {
-                    drawFrame(settings, fw, fh, dt);
+                    drawFrame(settings, fw, fh, action, action == FreezeGate.Action.STEP ? FreezeGate.STEP_SECONDS : dt);
                 } catch (RuntimeException | OutOfMemoryError e) {
                     // Keep the demo alive and say what happened; the next frame starts afresh.
                     state.problem("rendering failed: " + DemoWindow.message(e));
@@ -128,7 +136,7 @@ final class RenderLoop implements Runnable {
         }
     }
 
-    private void drawFrame(ViewSettings settings, int fw, int fh, double dt) {
+    private void drawFrame(ViewSettings settings, int fw, int fh, FreezeGate.Action action, double dt) {
         Scene scene = state.scene();
         if (state.sceneSerial() != sceneSerial || rig == null) {
             sceneSerial = state.sceneSerial();
@@ -138,7 +146,14 @@ final class RenderLoop implements Runnable {
             state.input.orbit(false);
             rig.reset(scene.camera());
         }
-        Camera camera = rig.update(state.input, dt);
+        Camera camera;
+        if (action == FreezeGate.Action.REDRAW) {
+            state.input.takeDrag();
+            state.input.takeWheel();
+            camera = rig.camera();
+        } else {
+            camera = rig.update(state.input, dt);
+        }
         if (back == null || !back.is(fw, fh)) {
             back = new FrameSlot(fw, fh);
         }
@@ -148,7 +163,9 @@ final class RenderLoop implements Runnable {
         }
         long now = System.nanoTime();
         // Measure only while someone can read the numbers: the developer tools are open.
-        boolean compareDue = settings.compare() && state.toolsOpen() && now - lastCompare >= COMPARE_INTERVAL_NANOS;
+        // A frame drawn while frozen is always measured: the numbers must describe the frame on screen.
+        boolean compareDue = settings.compare() && state.toolsOpen()
+                && (action != FreezeGate.Action.RUN || now - lastCompare >= COMPARE_INTERVAL_NANOS);
         boolean needReference = settings.view() != ViewKind.IMAGE || compareDue;
         Framebuffer fb = back.frame;
         fb.recordUv(needReference);
@@ -174,7 +191,7 @@ final class RenderLoop implements Runnable {
         back.camera = camera;
         back.view = settings.view();
         back.splitFraction = settings.splitFraction();
-        back.heatmapMax = settings.heatmapMax();
+        back.heatScale = settings.heatScale();
         if (compareDue) {
             long t0 = System.nanoTime();
             // The exact displacement: the loop knows the geometry (maps are built per visible triangle).
@@ -192,7 +209,7 @@ final class RenderLoop implements Runnable {
         back.overlayNanos = settings.render().borders() && settings.view() != ViewKind.DIFFERENCE
                 ? renderer.drawBorders(fb) : 0;
         if (settings.view() == ViewKind.DIFFERENCE) {
-            HeatMap.render(displacement, fb.uv(), reference.uv(), fw, fh, settings.heatmapMax(), fb.color());
+            HeatMap.render(displacement, fb.uv(), reference.uv(), fw, fh, settings.heatScale(), fb.color());
         } else if (settings.view() == ViewKind.SPLIT) {
             int divider = (int) Math.round(settings.splitFraction() * fw);
             if (divider < fw) {

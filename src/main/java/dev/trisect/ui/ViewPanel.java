@@ -1,6 +1,7 @@
 package dev.trisect.ui;
 
 import dev.trisect.metrics.HeatMap;
+import dev.trisect.metrics.HeatScale;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Dimension;
@@ -11,7 +12,6 @@ import java.awt.RenderingHints;
 import java.awt.event.MouseAdapter;
 import java.awt.event.MouseEvent;
 import java.awt.event.MouseWheelEvent;
-import java.util.List;
 import java.util.Locale;
 import java.util.function.DoubleConsumer;
 import javax.swing.JComponent;
@@ -111,7 +111,7 @@ final class ViewPanel extends JComponent {
             g2.setRenderingHint(RenderingHints.KEY_INTERPOLATION, RenderingHints.VALUE_INTERPOLATION_NEAREST_NEIGHBOR);
             g2.drawImage(front.image, 0, 0, w, h, null);
             if (front.view == ViewKind.DIFFERENCE) {
-                paintLegend(g2, front.heatmapMax);
+                paintLegend(g2, front.heatScale);
             } else if (front.view == ViewKind.SPLIT) {
                 paintDivider(g2, (int) Math.round(front.splitFraction * w), h);
             }
@@ -138,8 +138,7 @@ final class ViewPanel extends JComponent {
         label(g, "per-pixel", x + 10, 22);
     }
 
-    private void paintLegend(Graphics2D g, double max) {
-        List<HeatMap.LegendStop> stops = HeatMap.legendStops(max);
+    private void paintLegend(Graphics2D g, HeatScale scale) {
         int x = 14;
         int y = 14;
         int barW = 220;
@@ -147,15 +146,23 @@ final class ViewPanel extends JComponent {
         g.setColor(new Color(0, 0, 0, 150));
         g.fillRoundRect(x - 8, y - 8, barW + 16, barH + 44, 10, 10);
         for (int i = 0; i < barW; i++) {
-            g.setColor(new Color(HeatMap.colour(max * i / (barW - 1), max)));
+            g.setColor(new Color(HeatMap.colour(scale.pixelsAt((double) i / (barW - 1)), scale)));
             g.fillRect(x + i, y, 1, barH);
         }
         g.setColor(Color.WHITE);
         g.setFont(g.getFont().deriveFont(11f));
-        g.drawString("0", x, y + barH + 14);
-        String end = String.format(Locale.ROOT, "%.2f px", stops.get(stops.size() - 1).pixels());
+        g.drawString(HeatScale.number(scale.minPixels()), x, y + barH + 14);
+        if (scale.logarithmic()) {
+            // Decade ticks, so that the log scale reads as one.
+            for (int d = 1; d < HeatScale.DECADES; d++) {
+                int tx = x + (int) Math.round((barW - 1) * (double) d / HeatScale.DECADES);
+                g.drawLine(tx, y + barH, tx, y + barH + 3);
+            }
+        }
+        String end = HeatScale.number(scale.maxPixels()) + " px";
         g.drawString(end, x + barW - g.getFontMetrics().stringWidth(end), y + barH + 14);
-        g.drawString("displacement vs per-pixel; grey: not comparable", x, y + barH + 29);
+        g.drawString((scale.logarithmic() ? "log" : "linear") + " displacement vs per-pixel; grey: not comparable",
+                x, y + barH + 29);
     }
 
     private static void label(Graphics2D g, String text, int x, int y) {

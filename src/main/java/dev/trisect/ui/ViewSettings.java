@@ -1,5 +1,6 @@
 package dev.trisect.ui;
 
+import dev.trisect.metrics.HeatScale;
 import dev.trisect.pipeline.RenderSettings;
 import dev.trisect.scene.DemoScenes;
 import dev.trisect.texture.TextureFilter;
@@ -13,35 +14,39 @@ import dev.trisect.texture.TextureFilter;
  * @param splitFraction divider position in the split view, 0..1 of the width
  * @param compare       measure the frame against the per-pixel path (at least twice a second)
  * @param renderScale   frame pixels per device pixel, (0, 1]
- * @param heatmapMax    displacement at the top of the heat map's scale, pixels
+ * @param heatScale     how displacements map onto the heat map's colours (linear or logarithmic, and its top)
  */
 record ViewSettings(RenderSettings render, ViewKind view, double splitFraction, boolean compare,
-                    double renderScale, double heatmapMax) {
+                    double renderScale, HeatScale heatScale) {
 
     static ViewSettings defaults() {
         return new ViewSettings(RenderSettings.defaults().withBackground(DemoScenes.SKY).withFilter(TextureFilter.TRILINEAR),
-                ViewKind.IMAGE, 0.5, true, 1.0, 2.0);
+                ViewKind.IMAGE, 0.5, true, 1.0, HeatScale.linear(2.0));
     }
 
     ViewSettings withRender(RenderSettings r) {
-        return new ViewSettings(r, view, splitFraction, compare, renderScale, heatmapMax);
+        return new ViewSettings(r, view, splitFraction, compare, renderScale, heatScale);
     }
 
     /** Another view; the difference and split views compare with the per-pixel path, so they turn comparing on. */
     ViewSettings withView(ViewKind v) {
-        return new ViewSettings(render, v, splitFraction, compare || v != ViewKind.IMAGE, renderScale, heatmapMax);
+        return new ViewSettings(render, v, splitFraction, compare || v != ViewKind.IMAGE, renderScale, heatScale);
     }
 
     ViewSettings withSplitFraction(double f) {
-        return new ViewSettings(render, view, Math.max(0, Math.min(1, f)), compare, renderScale, heatmapMax);
+        return new ViewSettings(render, view, Math.max(0, Math.min(1, f)), compare, renderScale, heatScale);
     }
 
     /** Comparing on or off; off also stops the views that show the comparison (back to the image). */
     ViewSettings withCompare(boolean c) {
-        return new ViewSettings(render, c ? view : ViewKind.IMAGE, splitFraction, c, renderScale, heatmapMax);
+        return new ViewSettings(render, c ? view : ViewKind.IMAGE, splitFraction, c, renderScale, heatScale);
     }
 
     ViewSettings withRenderScale(double s) {
-        return new ViewSettings(render, view, splitFraction, compare, s, heatmapMax);
+        return new ViewSettings(render, view, splitFraction, compare, s, heatScale);
+    }
+
+    ViewSettings withHeatScale(HeatScale h) {
+        return new ViewSettings(render, view, splitFraction, compare, renderScale, h);
     }
 }

@@ -32,4 +32,28 @@ class CompareOverlayTest {
         }
         assertTrue(yellow > 1000, "the --out image still shows the borders: " + yellow);
     }
+
+    @Test
+    void heatmapsCarryTheirLegendAndTheScaleCanBeLogarithmic() throws IOException {
+        Path lin = dir.resolve("lin.png");
+        Path log = dir.resolve("log.png");
+        assertEquals(0, CliRun.of("compare", "--scene", "floor", "--size", "320x180", "--mode", "affine",
+                "--heatmap", lin.toString(), "--heatmap-max", "1000").status());
+        assertEquals(0, CliRun.of("compare", "--scene", "floor", "--size", "320x180", "--mode", "affine",
+                "--heatmap", log.toString(), "--heatmap-max", "1000", "--heatmap-scale", "log").status());
+        int[] a = TextureReader.read(lin).argb();
+        int[] b = TextureReader.read(log).argb();
+        assertEquals(0xFFFFFFFF, a[8 * 320 + 207], "the legend's bar ends white");
+        java.util.Set<Integer> linColours = new java.util.HashSet<>();
+        java.util.Set<Integer> logColours = new java.util.HashSet<>();
+        for (int i = 60 * 320; i < a.length; i++) {
+            linColours.add(a[i]);
+            logColours.add(b[i]);
+        }
+        assertTrue(logColours.size() > linColours.size() + 20, "log spreads the floor's errors over more colours: "
+                + logColours.size() + " vs " + linColours.size());
+        CliRun bad = CliRun.of("compare", "--scene", "floor", "--heatmap-scale", "cubic");
+        assertEquals(2, bad.status());
+        assertTrue(bad.errLine().contains("--heatmap-scale must be linear or log"), bad.err());
+    }
 }

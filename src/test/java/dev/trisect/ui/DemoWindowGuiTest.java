@@ -364,4 +364,30 @@ class DemoWindowGuiTest {
             System.setProperty("user.home", before);
         }
     }
+
+    @Test
+    @Order(11)
+    void spaceFreezesPeriodStepsOneFrameAndTheCameraReadoutFollows() throws Exception {
+        press(KeyEvent.VK_SPACE);
+        waitFor("frozen", () -> window.state().freeze.frozen());
+        assertTrue(onEdt(() -> window.freezeCommand.selected()), "the View menu shows it");
+        // A frame already being drawn when Space was pressed still arrives; wait until it is on screen.
+        waitFor("the last frame on screen", () -> {
+            long drawn = window.state().progress().frames();
+            Thread.sleep(300);
+            return drawn == window.state().progress().frames() && onEdt(() -> window.view().front().serial) == drawn;
+        });
+        long held = onEdt(() -> window.view().front().serial);
+        Thread.sleep(400);
+        assertEquals(held, (long) onEdt(() -> window.view().front().serial), "no new frames while frozen");
+        press(KeyEvent.VK_PERIOD);
+        waitFor("one step", () -> onEdt(() -> window.view().front().serial) == held + 1);
+        Thread.sleep(300);
+        assertEquals(held + 1, (long) onEdt(() -> window.view().front().serial), "one frame per step");
+        waitFor("the camera readout", () -> onEdt(() -> window.view().front().camera.eye().toString()
+                .equals(window.devTools().readout("Eye"))));
+        press(KeyEvent.VK_SPACE);
+        waitFor("running again", () -> onEdt(() -> window.view().front().serial) > held + 3);
+        assertFalse(window.state().freeze.frozen());
+    }
 }
