@@ -82,6 +82,29 @@ class FilteredSpansTest {
     }
 
     @Test
+    void fallbackPiecesTakeThePerPixelLevelInTheAffinePath() {
+        // A piece flagged for the per-pixel fallback, in a frame filled affinely, gets exactly what the
+        // perspective path gives it: division and the per-pixel level of detail.
+        Random rnd = new Random(9);
+        Texture[] textures = {noise(64, 64, 6)};
+        for (int k = 0; k < 20; k++) {
+            double x = rnd.nextDouble() * W;
+            double y = rnd.nextDouble() * H;
+            double[] c = {x, y, 0.05 + rnd.nextDouble(), 0, 0,
+                x + rnd.nextGaussian() * 40, y + rnd.nextGaussian() * 40, 0.05 + rnd.nextDouble(), 300, 20,
+                x + rnd.nextGaussian() * 40, y + rnd.nextGaussian() * 40, 0.05 + rnd.nextDouble(), -30, 250};
+            ScreenTriangles flagged = new ScreenTriangles();
+            flagged.add(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8], c[9], c[10], c[11], c[12], c[13], c[14],
+                    k, 0, true);
+            ScreenTriangles plain = new ScreenTriangles();
+            plain.add(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8], c[9], c[10], c[11], c[12], c[13], c[14],
+                    k, 0);
+            assertArrayEquals(fill(plain, textures, TextureFilter.TRILINEAR, true).color(),
+                    fill(flagged, textures, TextureFilter.TRILINEAR, false).color(), "triangle " + k);
+        }
+    }
+
+    @Test
     void minifiedCheckerAveragesToGrey() {
         // 7.3 texels per pixel: lambda = 2.87, and every level from 1 on of a one-texel checker is the grey
         // (0 + 255 + 0 + 255) / 4 = 127.5, rounded to 128. Bilinear on level 0 alias instead.
