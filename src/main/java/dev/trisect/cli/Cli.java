@@ -62,7 +62,7 @@ public final class Cli {
         try {
             return cl.execute(args);
         } catch (OutOfMemoryError e) {
-            err.println("trisect: out of memory (use a smaller --size or give Java more with -Xmx)");
+            err.println("trisect: out of memory (lower --max-frame-pieces or --size, or give Java more with -Xmx)");
             err.flush();
             return 1;
         }

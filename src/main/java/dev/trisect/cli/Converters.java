@@ -6,6 +6,7 @@ import dev.trisect.pipeline.CullMode;
 import dev.trisect.pipeline.RenderMode;
 import dev.trisect.tessellate.SplitPoint;
 import dev.trisect.tessellate.SplitPolicy;
+import dev.trisect.tessellate.TessellationSettings;
 import dev.trisect.texture.TextureFilter;
 import java.util.Locale;
 import picocli.CommandLine.ITypeConverter;
@@ -80,6 +81,27 @@ final class Converters {
                 // fall through to the message
             }
             throw new TypeConversionException("'" + value + "' is not a positive number");
+        }
+    }
+
+    /** A frame piece budget: a whole number at least 1, or {@code auto} (0, scaled with the frame). */
+    static final class FramePiecesConverter implements ITypeConverter<Integer> {
+        @Override
+        public Integer convert(String value) {
+            String v = value.trim();
+            if (v.equalsIgnoreCase("auto")) {
+                return TessellationSettings.AUTO_FRAME_PIECES;
+            }
+            try {
+                int n = Integer.parseInt(v);
+                if (n >= 1) {
+                    return n;
+                }
+            } catch (NumberFormatException e) {
+                // fall through to the message
+            }
+            throw new TypeConversionException("'" + value + "' is not a piece count: use a whole number from 1 to "
+                    + Integer.MAX_VALUE + ", or auto");
         }
     }
 

@@ -34,8 +34,8 @@ final class PathOptions {
     @Option(names = "--split-point", paramLabel = "screen|geometric|midpoint", converter = Converters.SplitPointConverter.class,
             defaultValue = "screen",
             description = "Where an edge is cut: the point that projects to its screen midpoint (halves its screen "
-                    + "length, so the bound falls at every level), the point where its affine geometric mean depths, or its "
-                    + "3D midpoint (default: ${DEFAULT-VALUE}).")
+                    + "length, so the bound falls at every level), the point at the geometric mean of its ends' "
+                    + "depths, or its 3D midpoint (default: ${DEFAULT-VALUE}).")
     SplitPoint splitPoint;
 
     @Option(names = "--max-depth", paramLabel = "N", defaultValue = "16",
@@ -46,13 +46,21 @@ final class PathOptions {
             description = "Most pieces one triangle may become, at least 1 (default: ${DEFAULT-VALUE}).")
     int maxPieces;
 
+    @Option(names = "--max-frame-pieces", paramLabel = "N|auto", converter = Converters.FramePiecesConverter.class,
+            defaultValue = "auto",
+            description = "Most pieces a whole frame may have, at least 1; a frame that would have more gets a "
+                    + "lower depth cap and fills the pieces it stops short per pixel (default: auto, one piece per "
+                    + "triangle plus one per " + TessellationSettings.PIXELS_PER_PIECE + " pixels of the frame).")
+    int maxFramePieces;
+
     @Option(names = "--filter", paramLabel = "nearest|bilinear|trilinear",
             converter = Converters.FilterConverter.class, defaultValue = "nearest",
             description = "Texture filter in every path, as OpenGL's GL_NEAREST, GL_LINEAR or GL_LINEAR_MIPMAP_LINEAR "
                     + "with GL_REPEAT (default: ${DEFAULT-VALUE}).")
     TextureFilter filter;
 
-    @Option(names = "--borders", description = "Draw the yellow outline of every piece filled (default: off).")
+    @Option(names = "--borders", description = "Draw the yellow outline of every piece filled, magenta for pieces "
+            + "filled per pixel by the fallback (default: off).")
     boolean borders;
 
     /** The split settings, checked. */
@@ -63,7 +71,7 @@ final class PathOptions {
         if (maxPieces < 1) {
             throw InputException.usage("--max-pieces must be at least 1, got " + maxPieces);
         }
-        return new TessellationSettings(split, maxEdge, maxError, maxDepth, maxPieces, splitPoint);
+        return new TessellationSettings(split, maxEdge, maxError, maxDepth, maxPieces, splitPoint, maxFramePieces);
     }
 
     /** Render settings for this path with the frame's culling and background. */

@@ -7,7 +7,9 @@ import dev.trisect.raster.BorderOverlay;
 import dev.trisect.raster.Framebuffer;
 import dev.trisect.raster.Rasterizer;
 import dev.trisect.raster.ScreenTriangles;
+import dev.trisect.tessellate.PieceBudget;
 import dev.trisect.tessellate.PieceSink;
+import dev.trisect.tessellate.TessellationSettings;
 import dev.trisect.tessellate.Tessellator;
 import dev.trisect.texture.Texture;
 import java.util.ArrayList;
@@ -183,6 +185,12 @@ public final class FrameRenderer implements AutoCloseable {
     }
 
     private long transformNanos;
+    /** Shared by the threads' tessellators for one frame. */
+    private final PieceBudget pieceBudget = new PieceBudget();
+    /** The last frame's piece budget (Long.MAX_VALUE when not tessellated). */
+    private long frameBudget;
+    /** The depth cap the last frame's budget forced, or -1. */
+    private int budgetDepth = -1;
     /** Chunks holding the last rendered frame's screen triangles, for {@link #drawBorders}. */
     private int lastChunkCount;
 
@@ -205,15 +213,71 @@ public final class FrameRenderer implements AutoCloseable {
         double gx = 1 + 2.0 * GUARD_PIXELS / width;
         double gy = 1 + 2.0 * GUARD_PIXELS / height;
         boolean split = settings.mode() == RenderMode.TESSELLATED;
+        TessellationSettings t = settings.tessellation();
+        long limit = split ? t.framePieceBudget((long) width * height, triangles) : Long.MAX_VALUE;
+        Attempt attempt = (depth, pieces) -> {
+            pieceBudget.reset(pieces);
+            RenderSettings s = depth == t.maxDepth() ? settings : settings.withTessellation(t.withMaxDepth(depth));
+            parallel(chunkCount, (w, c) -> {
+                int from = Math.min(triangles, c * perChunk);
+                int to = Math.min(triangles, from + perChunk);
+                chunks[c].geometry(w, mesh, textures, clip, invalidPosition, from, to, s, viewport, gx, gy, split,
+                        pieceBudget);
+            });
+            return !pieceBudget.exceeded();
+        };
+        budgetDepth = fitBudget(attempt, t.maxDepth(), limit);
+        frameBudget = limit;
         parallel(chunkCount, (w, c) -> {
-            Chunk chunk = chunks[c];
-            int from = Math.min(triangles, c * perChunk);
-            int to = Math.min(triangles, from + perChunk);
-            chunk.geometry(w, mesh, textures, clip, invalidPosition, from, to, settings, viewport, gx, gy, split);
-            chunk.bin(bands, height);
-            chunk.trimIfOversized();
+            chunks[c].bin(bands, height);
+            chunks[c].trimIfOversized();
         });
         return chunkCount;
+    }
+
+    /** One try at the frame's geometry with edge levels capped at {@code depth}; true if within {@code pieces}. */
+    @FunctionalInterface
+    private interface Attempt {
+        boolean run(int depth, long pieces);
+    }
+
+    /**
+     * Runs the geometry at the configured depth cap and, if the frame's pieces exceed its budget,
+     * searches for the deepest cap at which they fit, leaving that attempt's geometry in the chunks:
+     * first the cap one below (a frame just over its budget costs two attempts), then bisection
+     * between 0 and that. Lowering the level cap is crack-free (it is per edge) and the pieces it
+     * stops short of the policy are filled per pixel, so the bound holds. Each attempt is cut off at
+     * about the budget, and there are at most log2(maxDepth) + 3 of them; each verdict is
+     * thread-count-independent (see {@link PieceBudget}), so the chosen cap is too. Depth 0 (no
+     * splitting) is accepted whatever its count.
+     *
+     * @return the depth cap the budget forced, or -1 if the configured one fit
+     */
+    private static int fitBudget(Attempt attempt, int maxDepth, long limit) {
+        if (attempt.run(maxDepth, limit)) {
+            return -1;
+        }
+        if (maxDepth > 0 && attempt.run(maxDepth - 1, limit)) {
+            return maxDepth - 1;
+        }
+        // Depth 0 counts as fitting even when it does not: the triangles are the least a frame can be.
+        int fits = 0;
+        int fails = Math.max(0, maxDepth - 1);
+        boolean lastRunFits = false;
+        while (fails - fits > 1) {
+            int mid = (fits + fails) >>> 1;
+            lastRunFits = attempt.run(mid, limit);
+            if (lastRunFits) {
+                fits = mid;
+            } else {
+                fails = mid;
+            }
+        }
+        if (!lastRunFits) {
+            // The last attempt was over budget: redo the deepest cap that fit.
+            attempt.run(fits, Long.MAX_VALUE);
+        }
+        return fits;
     }
 
     private FrameStats statistics(int triangles, int chunkCount, long start, long transformed, long geometryDone,
@@ -258,7 +322,7 @@ public final class FrameRenderer implements AutoCloseable {
         long clipWall = cpu == 0 ? 0 : Math.round(geometryWall * (double) clipCpu / cpu);
         return new FrameStats(triangles, back, frustum, degenerate, invalid, clipped, pieces, offScreen, splits,
                 deepest,
-                caps, fallback, pixels, threads, transformed - start, clipWall, geometryWall - clipWall,
+                caps, fallback, frameBudget == Long.MAX_VALUE ? 0 : frameBudget, budgetDepth, pixels, threads, transformed - start, clipWall, geometryWall - clipWall,
                 rasterDone - geometryDone, end - rasterDone, end - start);
     }
 
@@ -418,16 +482,18 @@ public final class FrameRenderer implements AutoCloseable {
 
         void geometry(Worker w, Mesh mesh, Texture[] textures, double[] clip, boolean[] invalidPosition,
                       int from, int to, RenderSettings settings, Viewport viewport, double gx, double gy,
-                      boolean split) {
+                      boolean split, PieceBudget budget) {
             out.clear();
             culledBack = culledFrustum = culledDegenerate = invalid = clipped = 0;
             clipNanos = tessellateNanos = 0;
             Tessellator tess = w.tessellator;
             tess.configure(viewport, settings.tessellation());
+            tess.budget(budget);
             tess.resetStatistics();
             w.clipper.guardBand(gx, gy);
             boolean cullBack = settings.cull() == CullMode.BACK;
-            for (int batchStart = from; batchStart < to; batchStart += BATCH) {
+            // An attempt over budget is thrown away: stop as soon as it is known.
+            for (int batchStart = from; batchStart < to && !budget.exceeded(); batchStart += BATCH) {
                 int batchEnd = Math.min(to, batchStart + BATCH);
                 long t0 = System.nanoTime();
                 int n = cullAndClip(w, mesh, textures, clip, invalidPosition, batchStart, batchEnd, cullBack);

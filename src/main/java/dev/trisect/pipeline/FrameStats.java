@@ -18,6 +18,9 @@ import dev.trisect.base.JsonObject;
  * @param capsReached      input triangles whose splitting a depth or piece cap stopped short
  * @param piecesFallback   pieces a cap stopped short of their split policy, filled per pixel instead
  *                         of affinely (included in {@code pieces})
+ * @param pieceBudget      the frame's piece budget (0 outside the tessellated path)
+ * @param budgetDepth      the edge level cap the budget forced on the frame (its pieces beyond that
+ *                         cap are among the fallback pieces), or -1 when the frame fit its budget
  * @param pixelsWritten    pixels that passed the depth test
  * @param threads          threads that filled the frame
  * @param transformNanos   vertex transform
@@ -29,9 +32,15 @@ import dev.trisect.base.JsonObject;
  */
 public record FrameStats(long trianglesIn, long culledBackFace, long culledFrustum, long culledDegenerate,
                          long skippedInvalid, long clipped, long pieces, long piecesOffScreen, long splits,
-                         int deepestSplit, long capsReached, long piecesFallback, long pixelsWritten, int threads,
+                         int deepestSplit, long capsReached, long piecesFallback, long pieceBudget,
+                         int budgetDepth, long pixelsWritten, int threads,
                          long transformNanos, long clipNanos, long tessellateNanos, long rasterNanos,
                          long overlayNanos, long totalNanos) {
+
+    /** Whether the frame's pieces exceeded its budget, so that its depth cap was lowered. */
+    public boolean budgetReached() {
+        return budgetDepth >= 0;
+    }
 
     /** All culled triangles. */
     public long culled() {
@@ -54,6 +63,9 @@ public record FrameStats(long trianglesIn, long culledBackFace, long culledFrust
                 .put("deepest_split", deepestSplit)
                 .put("caps_reached", capsReached)
                 .put("pieces_fallback", piecesFallback)
+                .put("piece_budget", pieceBudget)
+                .put("budget_reached", budgetReached())
+                .put("budget_depth", budgetDepth)
                 .put("pixels_written", pixelsWritten)
                 .put("threads", threads)
                 .put("ms", new JsonObject()

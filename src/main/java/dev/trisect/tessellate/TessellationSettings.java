@@ -13,9 +13,12 @@ package dev.trisect.tessellate;
  * @param maxPieces the most pieces one input triangle may become, &gt;= 1; when reached, the pieces
  *                  left are filled as they are and the cap is counted
  * @param splitPoint where an edge is cut
+ * @param maxFramePieces the most pieces a whole frame may have, &gt;= 1, or {@link #AUTO_FRAME_PIECES} for
+ *                  one per input triangle plus one per {@link #PIXELS_PER_PIECE} pixels of the frame; a
+ *                  frame that would have more is redone with a lower depth cap (see {@link #framePieceBudget})
  */
 public record TessellationSettings(SplitPolicy policy, double maxEdge, double maxError, int maxDepth, int maxPieces,
-                                   SplitPoint splitPoint) {
+                                   SplitPoint splitPoint, int maxFramePieces) {
 
     /** Default longest edge, pixels. */
     public static final double DEFAULT_MAX_EDGE = 32;
@@ -28,6 +31,16 @@ public record TessellationSettings(SplitPolicy policy, double maxEdge, double ma
 
     /** Default split point: the screen midpoint, which converges (see {@link SplitPoint#SCREEN}). */
     public static final SplitPoint DEFAULT_SPLIT_POINT = SplitPoint.SCREEN;
+
+    /** {@code maxFramePieces} value meaning "scale the frame's piece budget with its pixel count". */
+    public static final int AUTO_FRAME_PIECES = 0;
+    /**
+     * Pixels per piece of the default frame budget. Below about 16 pixels a piece costs more to cut,
+     * set up and bin (a few hundred nanoseconds) than filling its pixels per pixel would, so a frame
+     * that wants more pieces than this is better served by the per-pixel fallback; and at this
+     * density the pieces' storage (about 200 bytes each) stays near 13 bytes per pixel.
+     */
+    public static final int PIXELS_PER_PIECE = 16;
 
     public TessellationSettings {
         if (policy == null) {
@@ -48,41 +61,62 @@ public record TessellationSettings(SplitPolicy policy, double maxEdge, double ma
         if (maxPieces < 1) {
             throw new IllegalArgumentException("max pieces must be at least 1, got " + maxPieces);
         }
+        if (maxFramePieces < 0) {
+            throw new IllegalArgumentException("max frame pieces must be at least 1 (or 0 for automatic), got "
+                    + maxFramePieces);
+        }
     }
 
-    /** The defaults: edge policy, 32 px, 0.5 px, depth 16, 65536 pieces, cut at the screen midpoint. */
+    /**
+     * The piece budget of a frame of {@code pixels} pixels drawing {@code triangles} input triangles:
+     * {@code maxFramePieces}, or when automatic {@code triangles + pixels / PIXELS_PER_PIECE} — one
+     * piece per triangle, which no frame can do with less, plus the pieces the frame's size is worth.
+     */
+    public long framePieceBudget(long pixels, long triangles) {
+        return maxFramePieces != AUTO_FRAME_PIECES ? maxFramePieces : triangles + Math.max(1, pixels / PIXELS_PER_PIECE);
+    }
+
+    /**
+     * The defaults: edge policy, 32 px, 0.5 px, depth 16, 65536 pieces, cut at the screen midpoint,
+     * automatic frame budget.
+     */
     public static TessellationSettings defaults() {
         return new TessellationSettings(SplitPolicy.EDGE, DEFAULT_MAX_EDGE, DEFAULT_MAX_ERROR,
-                DEFAULT_MAX_DEPTH, DEFAULT_MAX_PIECES, DEFAULT_SPLIT_POINT);
+                DEFAULT_MAX_DEPTH, DEFAULT_MAX_PIECES, DEFAULT_SPLIT_POINT, AUTO_FRAME_PIECES);
     }
 
     /** A copy with another policy. */
     public TessellationSettings withPolicy(SplitPolicy p) {
-        return new TessellationSettings(p, maxEdge, maxError, maxDepth, maxPieces, splitPoint);
+        return new TessellationSettings(p, maxEdge, maxError, maxDepth, maxPieces, splitPoint, maxFramePieces);
     }
 
     /** A copy with another max edge. */
     public TessellationSettings withMaxEdge(double px) {
-        return new TessellationSettings(policy, px, maxError, maxDepth, maxPieces, splitPoint);
+        return new TessellationSettings(policy, px, maxError, maxDepth, maxPieces, splitPoint, maxFramePieces);
     }
 
     /** A copy with another max error. */
     public TessellationSettings withMaxError(double px) {
-        return new TessellationSettings(policy, maxEdge, px, maxDepth, maxPieces, splitPoint);
+        return new TessellationSettings(policy, maxEdge, px, maxDepth, maxPieces, splitPoint, maxFramePieces);
     }
 
     /** A copy with another depth cap. */
     public TessellationSettings withMaxDepth(int depth) {
-        return new TessellationSettings(policy, maxEdge, maxError, depth, maxPieces, splitPoint);
+        return new TessellationSettings(policy, maxEdge, maxError, depth, maxPieces, splitPoint, maxFramePieces);
     }
 
     /** A copy with another piece cap. */
     public TessellationSettings withMaxPieces(int pieces) {
-        return new TessellationSettings(policy, maxEdge, maxError, maxDepth, pieces, splitPoint);
+        return new TessellationSettings(policy, maxEdge, maxError, maxDepth, pieces, splitPoint, maxFramePieces);
     }
 
     /** A copy with another split point. */
     public TessellationSettings withSplitPoint(SplitPoint point) {
-        return new TessellationSettings(policy, maxEdge, maxError, maxDepth, maxPieces, point);
+        return new TessellationSettings(policy, maxEdge, maxError, maxDepth, maxPieces, point, maxFramePieces);
+    }
+
+    /** A copy with another frame piece budget ({@link #AUTO_FRAME_PIECES} for automatic). */
+    public TessellationSettings withMaxFramePieces(int pieces) {
+        return new TessellationSettings(policy, maxEdge, maxError, maxDepth, maxPieces, splitPoint, pieces);
     }
 }

@@ -42,6 +42,8 @@ public final class Tessellator {
 
     private Viewport viewport = new Viewport(1, 1);
     private TessellationSettings settings = TessellationSettings.defaults();
+    /** The frame's shared piece budget, or null for none. */
+    private PieceBudget budget;
     private boolean errorPolicy;
     private SplitPoint splitPoint = SplitPoint.SCREEN;
     private double threshold;
@@ -65,6 +67,15 @@ public final class Tessellator {
         this.splitPoint = settings.splitPoint();
         // The edge policy compares squared lengths, sparing a square root per edge.
         this.threshold = errorPolicy ? settings.maxError() : settings.maxEdge() * settings.maxEdge();
+    }
+
+    /**
+     * Sets the frame-wide piece budget the split triangles that follow draw on, shared with the
+     * other threads' tessellators; null for none. When it is exceeded, {@link #process} returns
+     * without finishing (or starting) its triangle: the frame must be redone with a lower depth cap.
+     */
+    public void budget(PieceBudget frameBudget) {
+        this.budget = frameBudget;
     }
 
     /** Clears the counters. */
@@ -127,6 +138,13 @@ public final class Tessellator {
             pieces++;
             sink.piece(vertices, a, b, c, false);
             return;
+        }
+        long allowance = Long.MAX_VALUE;
+        if (budget != null) {
+            if (budget.exceeded()) {
+                return;
+            }
+            allowance = budget.allowance();
         }
         int top = push(0, a, b, c, 0, 0, 0);
         int maxSplits = settings.maxPieces() - 1;
@@ -201,6 +219,11 @@ public final class Tessellator {
                 sink.piece(vertices, v0, v1, v2, atCap);
                 continue;
             }
+            if (splitsHere + 2L > allowance) {
+                // This triangle alone would take the frame past its budget.
+                budget.exceed();
+                return;
+            }
             splitsHere++;
             splits++;
             // Rotate so that the split edge runs p -> q with r opposite, keeping the winding.
@@ -226,6 +249,9 @@ public final class Tessellator {
         }
         if (capped) {
             capsReached++;
+        }
+        if (budget != null) {
+            budget.charge(splitsHere + 1L);
         }
     }
 

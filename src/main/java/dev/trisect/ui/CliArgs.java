@@ -36,6 +36,10 @@ final class CliArgs {
                 "--max-edge", Double.toString(t.maxEdge()), "--max-error", Double.toString(t.maxError()),
                 "--split-point", t.splitPoint().id(), "--max-depth", Integer.toString(t.maxDepth()),
                 "--max-pieces", Integer.toString(t.maxPieces()), "--filter", r.filter().id()));
+        if (t.maxFramePieces() != TessellationSettings.AUTO_FRAME_PIECES) {
+            a.add("--max-frame-pieces");
+            a.add(Integer.toString(t.maxFramePieces()));
+        }
         if (r.borders()) {
             a.add("--borders");
         }

@@ -483,7 +483,7 @@ final class DemoWindow {
             return ie.getMessage();
         }
         if (t instanceof OutOfMemoryError) {
-            return "out of memory (give Java more with -Xmx)";
+            return "out of memory (lower the render scale, or give Java more with -Xmx)";
         }
         return "internal error: " + t;
     }

@@ -29,6 +29,8 @@ final class StatisticsSection implements ToolSection {
             {"Caps reached", "Triangles whose splitting a depth or piece cap stopped short"},
             {"Fallback pieces", "Pieces a cap stopped short of the split policy, filled per pixel instead "
                     + "(magenta outlines)"},
+            {"Piece budget", "Most pieces this frame may have (one per triangle plus one per 16 pixels); when "
+                    + "reached, the frame's depth cap is lowered and the pieces it stops are filled per pixel"},
             {"Pixels written", "Pixels that passed the depth test"}});
     }
 
@@ -59,6 +61,9 @@ final class StatisticsSection implements ToolSection {
         form.set("Deepest split", Integer.toString(st.deepestSplit()));
         form.set("Caps reached", Long.toString(st.capsReached()));
         form.set("Fallback pieces", Long.toString(st.piecesFallback()));
+        form.set("Piece budget", st.budgetReached()
+                ? st.pieceBudget() + ", reached: depth cap " + st.budgetDepth()
+                : st.pieceBudget() == 0 ? "-" : Long.toString(st.pieceBudget()));
         form.set("Pixels written", Long.toString(st.pixelsWritten()));
     }
 

@@ -56,6 +56,8 @@ class BadInputTest {
         "--max-depth|31|--max-depth must be between 0 and 30",
         "--max-pieces|0|--max-pieces must be at least 1",
         "--split-point|middle|is not a split point: use midpoint, screen or geometric",
+        "--max-frame-pieces|0|is not a piece count",
+        "--max-frame-pieces|lots|is not a piece count",
         "--eye|1,2|not a point",
         "--eye|1,NaN,2|not a point",
         "--target|a,b,c|not a point",
