@@ -39,6 +39,15 @@ public final class DemoScenes {
         SCENES.put("boxes", new Entry("textured crates on a checkered floor", DemoScenes::boxes));
         SCENES.put("demo", new Entry("the desktop demo's scene: floor, crates, a brick wall seen at a grazing "
                 + "angle and a globe", DemoScenes::demo));
+        // Textured spheres filling the view, for timing against the triangle count (4 n^2 triangles).
+        SCENES.put("sphere", new Entry("a textured globe of 10,000 triangles filling the view",
+                () -> sphere("sphere", 50)));
+        SCENES.put("sphere100k", new Entry("the textured globe with 99,856 triangles",
+                () -> sphere("sphere100k", 158)));
+        SCENES.put("sphere160k", new Entry("the textured globe with 160,000 triangles",
+                () -> sphere("sphere160k", 200)));
+        SCENES.put("sphere1m", new Entry("the textured globe with 1,000,000 triangles",
+                () -> sphere("sphere1m", 500)));
     }
 
     /** The demo scene's sky, 0xRRGGBB: its background in the desktop demo and on the command line. */
@@ -110,6 +119,18 @@ public final class DemoScenes {
         Camera camera = new Camera(new Vec3(0.5, 1.8, 6), new Vec3(0, 1.0, -10), Vec3.UP,
                 Camera.DEFAULT_FOV, Camera.DEFAULT_NEAR, Camera.DEFAULT_FAR);
         return new Scene("demo", describe("demo"), b.build(), textures, camera);
+    }
+
+    /** A globe of 4 n^2 triangles (2n slices, n + 1 stacks) filling most of the view. */
+    static Scene sphere(String name, int n) {
+        MeshBuilder b = new MeshBuilder();
+        List<Texture> textures = new ArrayList<>();
+        b.material("globe");
+        textures.add(ProceduralTextures.globe(1024, 512));
+        Primitives.sphere(b, Vec3.ZERO, 1.6, 2 * n, n + 1);
+        Camera camera = new Camera(new Vec3(0.6, 0.9, 3.6), Vec3.ZERO, Vec3.UP,
+                Camera.DEFAULT_FOV, Camera.DEFAULT_NEAR, Camera.DEFAULT_FAR);
+        return new Scene(name, describe(name), b.build(), textures, camera);
     }
 
     private static void addFloor(MeshBuilder b, List<Texture> textures, Texture texture) {

@@ -1,0 +1,94 @@
+package dev.trisect.bench;
+
+import dev.trisect.math.Mat4;
+import dev.trisect.math.Viewport;
+import dev.trisect.pipeline.FrameRenderer;
+import dev.trisect.pipeline.FrameStats;
+import dev.trisect.pipeline.RenderMode;
+import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.raster.Framebuffer;
+import dev.trisect.scene.DemoScenes;
+import dev.trisect.scene.Scene;
+import dev.trisect.tessellate.SplitPolicy;
+import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.texture.Texture;
+import java.util.concurrent.TimeUnit;
+import org.openjdk.jmh.annotations.Benchmark;
+import org.openjdk.jmh.annotations.BenchmarkMode;
+import org.openjdk.jmh.annotations.Fork;
+import org.openjdk.jmh.annotations.Measurement;
+import org.openjdk.jmh.annotations.Mode;
+import org.openjdk.jmh.annotations.OutputTimeUnit;
+import org.openjdk.jmh.annotations.Param;
+import org.openjdk.jmh.annotations.Scope;
+import org.openjdk.jmh.annotations.Setup;
+import org.openjdk.jmh.annotations.State;
+import org.openjdk.jmh.annotations.TearDown;
+import org.openjdk.jmh.annotations.Warmup;
+
+/**
+ * The cost of one extra piece on one core: the same frame (1280x720, one thread) drawn affinely and
+ * tessellated. Both fill exactly the same pixels with the same depth tests, so the difference of the
+ * two times is what tessellation adds: splitting, projecting, binning, setting up each piece and the
+ * per-row overhead of filling many small triangles instead of few large ones. Divided by the
+ * difference in pieces (printed by {@code trisect bench --json --threads 1 --size 1280x720}, or the
+ * {@code pieces} line this benchmark prints at setup) it gives nanoseconds per extra piece;
+ * scripts/performance.sh does the division. Run with
+ * {@code mvn -q test-compile exec:exec@jmh -Djmh.args="PieceCostBenchmark"}.
+ */
+@State(Scope.Benchmark)
+@BenchmarkMode(Mode.AverageTime)
+@OutputTimeUnit(TimeUnit.MICROSECONDS)
+@Warmup(iterations = 4, time = 2)
+@Measurement(iterations = 8, time = 2)
+@Fork(1)
+public class PieceCostBenchmark {
+    @Param({"demo", "floor"})
+    public String scene;
+
+    /** The tessellated path's policy: {@code edge} at 32 px or {@code error} at 0.5 px (the defaults). */
+    @Param({"edge", "error"})
+    public String policy;
+
+    private FrameRenderer renderer;
+    private Framebuffer frame;
+    private Scene s;
+    private Texture[] textures;
+    private Mat4 viewProjection;
+    private RenderSettings affine;
+    private RenderSettings tessellated;
+
+    @Setup
+    public void setUp() {
+        s = DemoScenes.byName(scene).orElseThrow();
+        textures = s.textureArray();
+        frame = new Framebuffer(1280, 720);
+        viewProjection = s.camera().viewProjection(new Viewport(1280, 720));
+        affine = RenderSettings.defaults().withMode(RenderMode.AFFINE);
+        tessellated = RenderSettings.defaults().withMode(RenderMode.TESSELLATED).withTessellation(
+                TessellationSettings.defaults().withPolicy("error".equals(policy) ? SplitPolicy.ERROR : SplitPolicy.EDGE));
+        renderer = new FrameRenderer(1);
+        long a = render(affine).pieces();
+        long t = render(tessellated).pieces();
+        System.out.println("pieces " + scene + " " + policy + " affine " + a + " tessellated " + t);
+    }
+
+    private FrameStats render(RenderSettings settings) {
+        return renderer.render(s.mesh(), textures, viewProjection, settings, frame);
+    }
+
+    @TearDown
+    public void tearDown() {
+        renderer.close();
+    }
+
+    @Benchmark
+    public FrameStats affine() {
+        return render(affine);
+    }
+
+    @Benchmark
+    public FrameStats tessellated() {
+        return render(tessellated);
+    }
+}
