@@ -88,7 +88,7 @@ final class CompareCommand extends SceneCommand {
             c = ImageComparison.compare(w, h, test.color(), test.uv(), reference.color(), reference.uv(),
                     exact, displacement);
             if (settings.borders()) {
-                renderer.drawBorders(test);
+                renderer.drawBorders(test, settings.borderStyle(), settings.tessellation());
             }
         }
         try (OutputBatch batch = new OutputBatch()) {

@@ -3,6 +3,7 @@ package dev.trisect.cli;
 import dev.trisect.base.InputException;
 import dev.trisect.pipeline.RenderMode;
 import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.raster.BorderStyle;
 import dev.trisect.tessellate.SplitPoint;
 import dev.trisect.tessellate.SplitPolicy;
 import dev.trisect.tessellate.TessellationSettings;
@@ -59,9 +60,28 @@ final class PathOptions {
                     + "with GL_REPEAT (default: ${DEFAULT-VALUE}).")
     TextureFilter filter;
 
-    @Option(names = "--borders", description = "Draw the yellow outline of every piece filled, magenta for pieces "
-            + "filled per pixel by the fallback (default: off).")
+    @Option(names = "--borders", description = "Draw the outline of every piece filled (default: off).")
     boolean borders;
+
+    @Option(names = "--border-colour", paramLabel = "yellow|depth|bound", defaultValue = "yellow",
+            description = "Outline colour with --borders: yellow; by split depth (cyan unsplit to red at --max-depth); "
+                    + "or by the piece's error bound over --max-error (green, yellow at it, red above). Fallback "
+                    + "pieces are magenta in each (default: ${DEFAULT-VALUE}).")
+    String borderColour;
+
+    @Option(names = "--border-fade", description = "With --borders: outline small pieces translucent, in proportion "
+            + "to their area, so that the texture still shows where pieces crowd near the horizon (default: off).")
+    boolean borderFade;
+
+    /** The outline style, checked. */
+    BorderStyle borderStyle() {
+        for (BorderStyle.Colouring c : BorderStyle.Colouring.values()) {
+            if (c.id().equals(borderColour)) {
+                return new BorderStyle(c, borderFade);
+            }
+        }
+        throw InputException.usage("--border-colour must be yellow, depth or bound, got " + borderColour);
+    }
 
     /** The split settings, checked. */
     TessellationSettings tessellation() {
@@ -76,6 +96,7 @@ final class PathOptions {
 
     /** Render settings for this path with the frame's culling and background. */
     RenderSettings settings(FrameOptions frame) {
-        return new RenderSettings(mode, tessellation(), frame.cull, frame.background(), borders, filter);
+        return new RenderSettings(mode, tessellation(), frame.cull, frame.background(), borders, filter,
+                borderStyle());
     }
 }

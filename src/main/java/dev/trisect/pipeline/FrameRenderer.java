@@ -4,6 +4,7 @@ import dev.trisect.math.Mat4;
 import dev.trisect.math.Viewport;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.raster.BorderOverlay;
+import dev.trisect.raster.BorderStyle;
 import dev.trisect.raster.Framebuffer;
 import dev.trisect.raster.Rasterizer;
 import dev.trisect.raster.ScreenTriangles;
@@ -124,7 +125,7 @@ public final class FrameRenderer implements AutoCloseable {
         long rasterDone = System.nanoTime();
         lastChunkCount = chunkCount;
         if (settings.borders()) {
-            drawBorders(frame);
+            drawBorders(frame, settings.borderStyle(), settings.tessellation());
         }
         long end = System.nanoTime();
         return statistics(mesh.triangleCount(), chunkCount, start, transformed, geometryDone, rasterDone, end);
@@ -139,6 +140,16 @@ public final class FrameRenderer implements AutoCloseable {
      * @return nanoseconds it took
      */
     public long drawBorders(Framebuffer frame) {
+        return drawBorders(frame, BorderStyle.plain(), TessellationSettings.defaults());
+    }
+
+    /**
+     * As {@link #drawBorders(Framebuffer)}, in a style: coloured by split depth (red at
+     * {@code tessellation}'s depth cap) or by error bound (yellow at its Max error), faded where dense.
+     *
+     * @return nanoseconds it took
+     */
+    public long drawBorders(Framebuffer frame, BorderStyle style, TessellationSettings tessellation) {
         long start = System.nanoTime();
         int chunkCount = lastChunkCount;
         int width = frame.width();
@@ -149,7 +160,7 @@ public final class FrameRenderer implements AutoCloseable {
             for (int c = 0; c < chunkCount; c++) {
                 Chunk chunk = chunks[c];
                 w.overlay.draw(frame, chunk.out, chunk.binItems, chunk.binStart[b], chunk.binStart[b + 1],
-                        0, y0, width, y1);
+                        0, y0, width, y1, style, tessellation.maxDepth(), tessellation.maxError());
             }
         });
         return System.nanoTime() - start;
@@ -442,6 +453,8 @@ public final class FrameRenderer implements AutoCloseable {
 
     /** One contiguous range of input triangles: its screen triangles, their bins and its counters. */
     static final class Chunk implements PieceSink {
+        /** The tessellator feeding {@link #piece} during {@link #geometry}. */
+        private Tessellator currentTessellator;
         final ScreenTriangles out = new ScreenTriangles();
         int[] binStart = new int[1];
         int[] binItems = new int[0];
@@ -487,6 +500,7 @@ public final class FrameRenderer implements AutoCloseable {
             culledBack = culledFrustum = culledDegenerate = invalid = clipped = 0;
             clipNanos = tessellateNanos = 0;
             Tessellator tess = w.tessellator;
+            currentTessellator = tess;
             tess.configure(viewport, settings.tessellation());
             tess.budget(budget);
             tess.resetStatistics();
@@ -634,6 +648,7 @@ public final class FrameRenderer implements AutoCloseable {
                     v[b + 6], v[b + 7], 1 / v[b + 3], v[b + 4], v[b + 5],
                     v[c + 6], v[c + 7], 1 / v[c + 3], v[c + 4], v[c + 5],
                     currentId, currentMaterial, fallback);
+            out.levelOfLast(currentTessellator.pieceLevel());
         }
 
         /** Sorts this chunk's screen triangles into bands of rows, keeping their order within a band. */

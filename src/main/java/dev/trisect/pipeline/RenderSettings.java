@@ -1,5 +1,6 @@
 package dev.trisect.pipeline;
 
+import dev.trisect.raster.BorderStyle;
 import dev.trisect.tessellate.TessellationSettings;
 import dev.trisect.texture.TextureFilter;
 
@@ -12,15 +13,23 @@ import dev.trisect.texture.TextureFilter;
  * @param background   background colour, 0xRRGGBB
  * @param borders      draw the yellow outline of every piece filled
  * @param filter       texture filter, in every path
+ * @param borderStyle  how the outlines are coloured and whether they fade where pieces are dense
  */
 public record RenderSettings(RenderMode mode, TessellationSettings tessellation, CullMode cull,
-                             int background, boolean borders, TextureFilter filter) {
+                             int background, boolean borders, TextureFilter filter,
+                             BorderStyle borderStyle) {
 
     public RenderSettings {
-        if (mode == null || tessellation == null || cull == null || filter == null) {
+        if (mode == null || tessellation == null || cull == null || filter == null || borderStyle == null) {
             throw new IllegalArgumentException(
                     "render settings need a mode, tessellation settings, a cull mode and a texture filter");
         }
+    }
+
+    /** Settings with plain yellow borders. */
+    public RenderSettings(RenderMode mode, TessellationSettings tessellation, CullMode cull, int background,
+                          boolean borders, TextureFilter filter) {
+        this(mode, tessellation, cull, background, borders, filter, BorderStyle.plain());
     }
 
     /** Settings with nearest sampling. */
@@ -36,31 +45,36 @@ public record RenderSettings(RenderMode mode, TessellationSettings tessellation,
 
     /** A copy with another mode. */
     public RenderSettings withMode(RenderMode m) {
-        return new RenderSettings(m, tessellation, cull, background, borders, filter);
+        return new RenderSettings(m, tessellation, cull, background, borders, filter, borderStyle);
     }
 
     /** A copy with other tessellation settings. */
     public RenderSettings withTessellation(TessellationSettings t) {
-        return new RenderSettings(mode, t, cull, background, borders, filter);
+        return new RenderSettings(mode, t, cull, background, borders, filter, borderStyle);
     }
 
     /** A copy with another cull mode. */
     public RenderSettings withCull(CullMode c) {
-        return new RenderSettings(mode, tessellation, c, background, borders, filter);
+        return new RenderSettings(mode, tessellation, c, background, borders, filter, borderStyle);
     }
 
     /** A copy with another background. */
     public RenderSettings withBackground(int rgb) {
-        return new RenderSettings(mode, tessellation, cull, rgb, borders, filter);
+        return new RenderSettings(mode, tessellation, cull, rgb, borders, filter, borderStyle);
     }
 
     /** A copy with the border overlay on or off. */
     public RenderSettings withBorders(boolean on) {
-        return new RenderSettings(mode, tessellation, cull, background, on, filter);
+        return new RenderSettings(mode, tessellation, cull, background, on, filter, borderStyle);
     }
 
     /** A copy with another texture filter. */
     public RenderSettings withFilter(TextureFilter f) {
-        return new RenderSettings(mode, tessellation, cull, background, borders, f);
+        return new RenderSettings(mode, tessellation, cull, background, borders, f, borderStyle);
+    }
+
+    /** A copy with another border style. */
+    public RenderSettings withBorderStyle(BorderStyle b) {
+        return new RenderSettings(mode, tessellation, cull, background, borders, filter, b);
     }
 }

@@ -22,6 +22,9 @@ public final class BorderOverlay {
     private final Plane depth = new Plane();
     /** Outline colour of the triangle being drawn. */
     private int colour = YELLOW;
+    /** Opacity of the triangle being drawn, 0..1, and its screen area in square pixels. */
+    private double alpha = 1;
+    private double area;
 
     /**
      * Outlines triangles {@code order[from..to)} within pixels {@code [x0, x1) x [y0, y1)}.
@@ -30,6 +33,18 @@ public final class BorderOverlay {
      */
     public long draw(Framebuffer frame, ScreenTriangles triangles, int[] order, int from, int to,
                      int x0, int y0, int x1, int y1) {
+        return draw(frame, triangles, order, from, to, x0, y0, x1, y1, BorderStyle.plain(), 0, 1);
+    }
+
+    /**
+     * Outlines triangles {@code order[from..to)} within pixels {@code [x0, x1) x [y0, y1)} in a style.
+     *
+     * @param maxLevel the depth cap, drawn red when colouring by depth
+     * @param maxError the Max error threshold in pixels, drawn yellow when colouring by bound
+     * @return number of pixels painted
+     */
+    public long draw(Framebuffer frame, ScreenTriangles triangles, int[] order, int from, int to,
+                     int x0, int y0, int x1, int y1, BorderStyle style, int maxLevel, double maxError) {
         int[] f = triangles.fixed();
         long painted = 0;
         for (int n = from; n < to; n++) {
@@ -37,7 +52,9 @@ public final class BorderOverlay {
             if (!depthPlane(triangles, tri)) {
                 continue;
             }
-            colour = OverlayColours.of(triangles, tri);
+            colour = style.colouring() == BorderStyle.Colouring.YELLOW ? OverlayColours.of(triangles, tri)
+                    : OverlayColours.of(triangles, tri, style.colouring(), maxLevel, maxError);
+            alpha = style.fade() ? fadeAlpha(area) : 1;
             int o = tri * ScreenTriangles.FIXED_STRIDE;
             for (int e = 0; e < 3; e++) {
                 int a = o + 2 * e;
@@ -46,6 +63,21 @@ public final class BorderOverlay {
             }
         }
         return painted;
+    }
+
+    /** Pieces at least this large, in square pixels, are outlined opaque when fading. */
+    static final double FADE_AREA = 64;
+    /** The faintest a faded outline gets, so that even the smallest pieces still show a trace. */
+    static final double MIN_ALPHA = 0.12;
+
+    /**
+     * Opacity of a faded outline for a piece of {@code area} square pixels: in proportion to the area
+     * up to {@link #FADE_AREA}. A piece's outline covers about its perimeter in pixels, so for small
+     * pieces the lines cover a share of the surface that grows as the area shrinks; fading by area keeps
+     * the ink per pixel roughly level, and the texture readable, where pieces crowd near the horizon.
+     */
+    static double fadeAlpha(double area) {
+        return Math.max(MIN_ALPHA, Math.min(1, area / FADE_AREA));
     }
 
     /** The 1/w plane over pixel centres; false for a triangle with no area. */
@@ -64,6 +96,7 @@ public final class BorderOverlay {
         if (det == 0 || !Double.isFinite(det)) {
             return false;
         }
+        area = Math.abs(det) / 2;
         depth.fit(x0, y0, ex1, ey1, ex2, ey2, 1 / det, at[a], at[a + 3], at[a + 6]);
         return true;
     }
@@ -120,7 +153,22 @@ public final class BorderOverlay {
         if (q < frame.depth()[i] * (1 - DEPTH_TOLERANCE)) {
             return 0;
         }
-        frame.color()[i] = colour;
+        if (alpha >= 1) {
+            frame.color()[i] = colour;
+        } else {
+            frame.color()[i] = blend(frame.color()[i], colour, alpha);
+        }
         return 1;
+    }
+
+    /** {@code over} laid on {@code under} with opacity {@code a}, per sRGB channel, opaque result. */
+    static int blend(int under, int over, double a) {
+        int out = 0xFF000000;
+        for (int shift = 16; shift >= 0; shift -= 8) {
+            int u = under >> shift & 0xFF;
+            int o = over >> shift & 0xFF;
+            out |= (int) (u + (o - u) * a + 0.5) << shift;
+        }
+        return out;
     }
 }

@@ -27,6 +27,7 @@ public final class ScreenTriangles {
     private int[] ids = new int[1024];
     private int[] materials = new int[1024];
     private boolean[] perPixel = new boolean[1024];
+    private byte[] levels = new byte[1024];
 
     /** Number of triangles. */
     public int count() {
@@ -58,6 +59,7 @@ public final class ScreenTriangles {
         ids = Arrays.copyOf(ids, n);
         materials = Arrays.copyOf(materials, n);
         perPixel = Arrays.copyOf(perPixel, n);
+        levels = Arrays.copyOf(levels, n);
     }
 
     /** Snapped corners, sub-pixel units. Read-only outside this package. */
@@ -91,6 +93,19 @@ public final class ScreenTriangles {
      */
     public boolean[] perPixel() {
         return perPixel;
+    }
+
+    /**
+     * Split level of each triangle: how many times the most-halved of its edges was halved (0 for a
+     * triangle that was not split, and in the paths that do not split), for the overlay's depth colouring.
+     */
+    public byte[] levels() {
+        return levels;
+    }
+
+    /** Records the split level of the triangle added last (0 unless set), clamped to 0..127. */
+    public void levelOfLast(int level) {
+        levels[count - 1] = (byte) Math.max(0, Math.min(127, level));
     }
 
     /** Appends a triangle that follows the frame's path (not a per-pixel fallback); see the full form. */
@@ -144,6 +159,7 @@ public final class ScreenTriangles {
         ids[count] = id;
         materials[count] = material;
         perPixel[count] = fallback;
+        levels[count] = 0;
         count++;
     }
 
@@ -155,6 +171,7 @@ public final class ScreenTriangles {
         ids = Arrays.copyOf(ids, n);
         materials = Arrays.copyOf(materials, n);
         perPixel = Arrays.copyOf(perPixel, n);
+        levels = Arrays.copyOf(levels, n);
     }
 
     /** Smallest pixel row whose centre the triangle can cover (may be below 0). */

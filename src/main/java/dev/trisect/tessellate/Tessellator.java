@@ -56,6 +56,8 @@ public final class Tessellator {
     private int deepestLevel;
     private int capsReached;
     private long fallbackPieces;
+    /** Split level of the piece being handed to the sink. */
+    private int pieceLevel;
 
     /** Sets the frame's viewport and split settings for the triangles that follow. */
     public void configure(Viewport viewport, TessellationSettings settings) {
@@ -108,6 +110,14 @@ public final class Tessellator {
         return deepestLevel;
     }
 
+    /**
+     * The split level of the piece being handed to the {@link PieceSink} (its most-halved edge's
+     * level); valid during {@link PieceSink#piece}, for the overlay's depth colouring.
+     */
+    public int pieceLevel() {
+        return pieceLevel;
+    }
+
     /** Pieces emitted since the last reset that still failed the policy and are flagged to be filled per pixel. */
     public long fallbackPieces() {
         return fallbackPieces;
@@ -136,6 +146,7 @@ public final class Tessellator {
         int c = load(input, i2);
         if (!split) {
             pieces++;
+            pieceLevel = 0;
             sink.piece(vertices, a, b, c, false);
             return;
         }
@@ -216,6 +227,7 @@ public final class Tessellator {
                     capped = true;
                     fallbackPieces++;
                 }
+                pieceLevel = level;
                 sink.piece(vertices, v0, v1, v2, atCap);
                 continue;
             }

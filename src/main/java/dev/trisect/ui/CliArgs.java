@@ -41,7 +41,10 @@ final class CliArgs {
             a.add(Integer.toString(t.maxFramePieces()));
         }
         if (r.borders()) {
-            a.add("--borders");
+            a.addAll(List.of("--borders", "--border-colour", r.borderStyle().colouring().id()));
+            if (r.borderStyle().fade()) {
+                a.add("--border-fade");
+            }
         }
         return a;
     }

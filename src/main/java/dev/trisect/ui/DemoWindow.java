@@ -5,6 +5,7 @@ import dev.trisect.io.ImageFiles;
 import dev.trisect.pipeline.RenderMode;
 import dev.trisect.texture.TextureFilter;
 import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.raster.BorderStyle;
 import dev.trisect.scene.Scene;
 import dev.trisect.scene.SceneLoader;
 import java.awt.BorderLayout;
@@ -72,6 +73,7 @@ final class DemoWindow {
     /** Steps the texture filter: nearest, bilinear, trilinear, nearest... Named after the current one. */
     final Command filterCommand;
     final Command freezeCommand;
+    final Command borderColourCommand;
     final Command stepCommand;
     final Command screenshotCommand;
     final Command openCommand;
@@ -98,6 +100,13 @@ final class DemoWindow {
                 KeyStroke.getKeyStroke(KeyEvent.VK_R, 0), () -> {
                     orbitCommand.show(false);
                     state.input.requestReset();
+                });
+        borderColourCommand = Command.action("Border colour", "Next outline colouring: yellow; by split depth; "
+                + "by error bound (fallback pieces magenta in each)", KeyStroke.getKeyStroke(KeyEvent.VK_C, 0),
+                () -> {
+                    BorderStyle.Colouring[] all = BorderStyle.Colouring.values();
+                    BorderStyle now = state.settings().render().borderStyle();
+                    selectBorderStyle(new BorderStyle(all[(now.colouring().ordinal() + 1) % all.length], now.fade()));
                 });
         freezeCommand = Command.toggle("Freeze frame", "Stop on this frame: the camera and the comparison hold "
                 + "still so it can be inspected; settings still apply to it", KeyStroke.getKeyStroke(KeyEvent.VK_SPACE, 0),
@@ -142,6 +151,8 @@ final class DemoWindow {
         viewCommands.get(state.settings().view().ordinal()).show(true);
         bordersCommand.show(state.settings().render().borders());
         showFilter(state.settings().render().filter());
+        borderColourCommand.putValue(Action.NAME, "Border colour: "
+                + state.settings().render().borderStyle().colouring().id());
 
         frame.setJMenuBar(menus());
         // A gap between message and pace, so that a long message is cut short rather than run into it.
@@ -259,6 +270,13 @@ final class DemoWindow {
         filterCommand.putValue(Action.NAME, "Texture filter: " + f.id());
     }
 
+    /** Sets how the outlines are coloured (and turns them on, since that is what one wants to see). */
+    void selectBorderStyle(BorderStyle style) {
+        borderColourCommand.putValue(Action.NAME, "Border colour: " + style.colouring().id());
+        bordersCommand.show(true);
+        update(s -> s.withRender(s.render().withBorders(true).withBorderStyle(style)));
+    }
+
     /** Shows a view; the comparison views belong to the developer tools and open them. */
     void selectView(ViewKind k) {
         update(s -> s.withView(k));
@@ -280,6 +298,7 @@ final class DemoWindow {
         viewMenu.setMnemonic(KeyEvent.VK_V);
         viewMenu.add(new JCheckBoxMenuItem(devToolsCommand));
         viewMenu.add(new JCheckBoxMenuItem(bordersCommand));
+        viewMenu.add(new JMenuItem(borderColourCommand));
         viewMenu.add(new JCheckBoxMenuItem(orbitCommand));
         viewMenu.add(new JMenuItem(resetCommand));
         viewMenu.add(new JMenuItem(filterCommand));
@@ -312,7 +331,7 @@ final class DemoWindow {
         InputMap in = root.getInputMap(JComponent.WHEN_IN_FOCUSED_WINDOW);
         ActionMap act = root.getActionMap();
         List<Command> commands = new ArrayList<>(List.of(devToolsCommand, bordersCommand, orbitCommand, resetCommand,
-                filterCommand, freezeCommand, stepCommand,
+                filterCommand, freezeCommand, stepCommand, borderColourCommand,
                 screenshotCommand, openCommand, exitCommand));
         commands.addAll(modeCommands);
         commands.addAll(viewCommands);

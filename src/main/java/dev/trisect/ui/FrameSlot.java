@@ -19,6 +19,8 @@ final class FrameSlot {
     FrameStats stats;
     /** Time the border overlay took on this frame, drawn after the engine's frame (0 when off). */
     long overlayNanos;
+    /** The render settings the frame was drawn with. */
+    dev.trisect.pipeline.RenderSettings render;
     /** What the view showed when the frame was drawn. */
     ViewKind view = ViewKind.IMAGE;
     /** Split view divider, 0..1 of the width. */

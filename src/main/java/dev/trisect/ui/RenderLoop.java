@@ -189,6 +189,7 @@ final class RenderLoop implements Runnable {
         frames++;
         back.serial = frames;
         back.camera = camera;
+        back.render = settings.render();
         back.view = settings.view();
         back.splitFraction = settings.splitFraction();
         back.heatScale = settings.heatScale();
@@ -207,7 +208,7 @@ final class RenderLoop implements Runnable {
                     new TexelToScreen(scene.mesh(), textures, vp, viewport), displacement);
         }
         back.overlayNanos = settings.render().borders() && settings.view() != ViewKind.DIFFERENCE
-                ? renderer.drawBorders(fb) : 0;
+                ? renderer.drawBorders(fb, settings.render().borderStyle(), settings.render().tessellation()) : 0;
         if (settings.view() == ViewKind.DIFFERENCE) {
             HeatMap.render(displacement, fb.uv(), reference.uv(), fw, fh, settings.heatScale(), fb.color());
         } else if (settings.view() == ViewKind.SPLIT) {

@@ -1,6 +1,9 @@
 package dev.trisect.ui;
 
 import dev.trisect.metrics.HeatMap;
+import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.raster.BorderStyle;
+import dev.trisect.raster.OverlayColours;
 import dev.trisect.metrics.HeatScale;
 import java.awt.BasicStroke;
 import java.awt.Color;
@@ -110,6 +113,10 @@ final class ViewPanel extends JComponent {
             // below it the pixels stay crisp rather than blurred.
             g2.setRenderingHint(RenderingHints.KEY_INTERPOLATION, RenderingHints.VALUE_INTERPOLATION_NEAREST_NEIGHBOR);
             g2.drawImage(front.image, 0, 0, w, h, null);
+            if (front.render != null && front.render.borders() && front.view != ViewKind.DIFFERENCE
+                    && front.render.borderStyle().colouring() != BorderStyle.Colouring.YELLOW) {
+                paintBorderLegend(g2, front.render, h);
+            }
             if (front.view == ViewKind.DIFFERENCE) {
                 paintLegend(g2, front.heatScale);
             } else if (front.view == ViewKind.SPLIT) {
@@ -163,6 +170,35 @@ final class ViewPanel extends JComponent {
         g.drawString(end, x + barW - g.getFontMetrics().stringWidth(end), y + barH + 14);
         g.drawString((scale.logarithmic() ? "log" : "linear") + " displacement vs per-pixel; grey: not comparable",
                 x, y + barH + 29);
+    }
+
+    /** The outline colours' legend, bottom left: the ramp of split depth or of error bound, and fallback. */
+    private void paintBorderLegend(Graphics2D g, RenderSettings r, int h) {
+        boolean depth = r.borderStyle().colouring() == BorderStyle.Colouring.DEPTH;
+        int maxLevel = r.tessellation().maxDepth();
+        int barW = 220;
+        int x = 14;
+        int y = h - 62;
+        g.setColor(new Color(0, 0, 0, 160));
+        g.fillRoundRect(x - 8, y - 8, barW + 16, 60, 10, 10);
+        for (int i = 0; i < barW; i++) {
+            double f = (double) i / (barW - 1);
+            int c = depth ? OverlayColours.depth((int) Math.round(f * maxLevel), maxLevel)
+                    : OverlayColours.bound(f * 1.25);
+            g.setColor(new Color(c, false));
+            g.fillRect(x + i, y, 1, 12);
+        }
+        g.setColor(Color.WHITE);
+        g.setFont(g.getFont().deriveFont(11f));
+        String left = depth ? "level 0" : "bound 0";
+        String right = depth ? "level " + maxLevel + " (cap)" : "\u2265 1.25\u00d7 max error";
+        g.drawString(left, x, y + 25);
+        g.drawString(right, x + barW - g.getFontMetrics().stringWidth(right), y + 25);
+        g.setColor(new Color(OverlayColours.FALLBACK, false));
+        g.fillRect(x, y + 32, 12, 10);
+        g.setColor(Color.WHITE);
+        g.drawString(depth ? "fallback (filled per pixel)" : "fallback; yellow = at max error, red = above",
+                x + 18, y + 41);
     }
 
     private static void label(Graphics2D g, String text, int x, int y) {

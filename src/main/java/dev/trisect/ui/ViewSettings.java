@@ -2,6 +2,7 @@ package dev.trisect.ui;
 
 import dev.trisect.metrics.HeatScale;
 import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.raster.BorderStyle;
 import dev.trisect.scene.DemoScenes;
 import dev.trisect.texture.TextureFilter;
 
@@ -20,7 +21,8 @@ record ViewSettings(RenderSettings render, ViewKind view, double splitFraction, 
                     double renderScale, HeatScale heatScale) {
 
     static ViewSettings defaults() {
-        return new ViewSettings(RenderSettings.defaults().withBackground(DemoScenes.SKY).withFilter(TextureFilter.TRILINEAR),
+        return new ViewSettings(RenderSettings.defaults().withBackground(DemoScenes.SKY)
+                .withBorderStyle(new BorderStyle(BorderStyle.Colouring.YELLOW, true)).withFilter(TextureFilter.TRILINEAR),
                 ViewKind.IMAGE, 0.5, true, 1.0, HeatScale.linear(2.0));
     }
 

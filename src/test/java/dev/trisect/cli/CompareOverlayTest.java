@@ -56,4 +56,23 @@ class CompareOverlayTest {
         assertEquals(2, bad.status());
         assertTrue(bad.errLine().contains("--heatmap-scale must be linear or log"), bad.err());
     }
+
+    @Test
+    void renderColoursBordersByDepthOrBoundAndRefusesOtherColourings() throws IOException {
+        Path depth = dir.resolve("depth.png");
+        CliRun r = CliRun.of("render", "--scene", "floor", "--size", "320x180", "--split", "error", "--borders",
+                "--border-colour", "depth", "--out", depth.toString());
+        assertEquals(0, r.status(), r.err());
+        java.util.Set<Integer> colours = new java.util.HashSet<>();
+        int cyan = 0;
+        for (int p : TextureReader.read(depth).argb()) {
+            cyan += p == 0xFF00FFFF ? 1 : 0;
+            colours.add(p);
+        }
+        assertTrue(cyan > 0, "unsplit pieces' outlines are cyan");
+        CliRun bad = CliRun.of("render", "--scene", "floor", "--borders", "--border-colour", "pink", "--out",
+                dir.resolve("x.png").toString());
+        assertEquals(2, bad.status());
+        assertTrue(bad.errLine().contains("--border-colour must be yellow, depth or bound"), bad.err());
+    }
 }

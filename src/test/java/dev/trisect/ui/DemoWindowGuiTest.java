@@ -390,4 +390,18 @@ class DemoWindowGuiTest {
         waitFor("running again", () -> onEdt(() -> window.view().front().serial) > held + 3);
         assertFalse(window.state().freeze.frozen());
     }
+
+    @Test
+    @Order(12)
+    void cCyclesTheBorderColouringAndTurnsTheBordersOn() throws Exception {
+        var start = window.state().settings().render().borderStyle().colouring();
+        press(KeyEvent.VK_C);
+        waitFor("the next colouring", () -> window.state().settings().render().borderStyle().colouring() != start);
+        assertTrue(window.state().settings().render().borders(), "C shows the borders it colours");
+        press(KeyEvent.VK_C);
+        press(KeyEvent.VK_C);
+        waitFor("back round", () -> window.state().settings().render().borderStyle().colouring() == start);
+        press(KeyEvent.VK_B);
+        waitFor("borders off", () -> !window.state().settings().render().borders());
+    }
 }

@@ -1,0 +1,42 @@
+package dev.trisect.raster;
+
+import java.util.Locale;
+
+/**
+ * How the border overlay colours each outline, and whether it fades outlines where pieces are dense.
+ *
+ * @param colouring yellow, by split depth, or by error bound (fallback pieces are magenta in all three)
+ * @param fade      draw the outlines of small pieces translucent, in proportion to their area, so that
+ *                  near the horizon, where pieces are a few pixels across, the texture still shows
+ *                  through instead of a solid band of lines
+ */
+public record BorderStyle(Colouring colouring, boolean fade) {
+    /** What an outline's colour says. */
+    public enum Colouring {
+        /** Every piece yellow. */
+        YELLOW,
+        /** The piece's split level: cyan (never split) through green and yellow to red (the depth cap). */
+        DEPTH,
+        /**
+         * The piece's worst edge's affine error bound over the Max error threshold: green (far within),
+         * yellow (at it), red (above it).
+         */
+        BOUND;
+
+        /** The name on the command line: yellow, depth or bound. */
+        public String id() {
+            return name().toLowerCase(Locale.ROOT);
+        }
+    }
+
+    public BorderStyle {
+        if (colouring == null) {
+            throw new IllegalArgumentException("a border style needs a colouring");
+        }
+    }
+
+    /** Plain yellow, no fading: the overlay as it always was. */
+    public static BorderStyle plain() {
+        return new BorderStyle(Colouring.YELLOW, false);
+    }
+}
