@@ -44,4 +44,25 @@ public final class InputException extends RuntimeException {
     public int exitStatus() {
         return kind == Kind.USAGE ? 2 : 1;
     }
+
+    /**
+     * {@code text} quoted for a one-line message: in single quotes, control characters escaped as
+     * {@code \xNN} so the message stays one printable line, and cut to {@code max} characters
+     * (then ending in {@code ...}).
+     */
+    public static String quote(String text, int max) {
+        StringBuilder sb = new StringBuilder("'");
+        for (int k = 0; k < text.length() && k < max; k++) {
+            char c = text.charAt(k);
+            if (c < 0x20 || (c >= 0x7f && c <= 0x9f)) {
+                sb.append(String.format(java.util.Locale.ROOT, "\\x%02X", (int) c));
+            } else {
+                sb.append(c);
+            }
+        }
+        if (text.length() > max) {
+            sb.append("...");
+        }
+        return sb.append('\'').toString();
+    }
 }

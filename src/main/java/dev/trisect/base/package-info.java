@@ -1,4 +1,5 @@
 /**
- * The lowest layer: what every other package may use. Only the user-facing input error lives here.
+ * The lowest layer: what every other package may use. The user-facing input error (with the quoting
+ * its one-line messages use) and the JSON object every printed JSON line is built with.
  */
 package dev.trisect.base;

@@ -1,5 +1,6 @@
 package dev.trisect.cli;
 
+import dev.trisect.base.InputException;
 import dev.trisect.math.Vec3;
 import dev.trisect.math.Viewport;
 import dev.trisect.pipeline.CullMode;
@@ -29,6 +30,14 @@ final class Converters {
         }
     }
 
+    /**
+     * A value as a message quotes it (see {@link InputException#quote}): Jazzer found a newline in a
+     * value splitting the usage message.
+     */
+    static String quote(String value) {
+        return InputException.quote(value, 60);
+    }
+
     static final class SizeConverter implements ITypeConverter<Size> {
         @Override
         public Size convert(String value) {
@@ -44,7 +53,7 @@ final class Converters {
                     // fall through to the message
                 }
             }
-            throw new TypeConversionException("'" + value + "' is not a frame size: use WxH with each side 1.."
+            throw new TypeConversionException(quote(value) + " is not a frame size: use WxH with each side 1.."
                     + Viewport.MAX_SIDE + " pixels, e.g. 1280x720");
         }
     }
@@ -64,7 +73,7 @@ final class Converters {
                     // fall through to the message
                 }
             }
-            throw new TypeConversionException("'" + value + "' is not a point: use three finite numbers x,y,z, e.g. 0,1.7,6");
+            throw new TypeConversionException(quote(value) + " is not a point: use three finite numbers x,y,z, e.g. 0,1.7,6");
         }
     }
 
@@ -80,7 +89,7 @@ final class Converters {
             } catch (NumberFormatException e) {
                 // fall through to the message
             }
-            throw new TypeConversionException("'" + value + "' is not a positive number");
+            throw new TypeConversionException(quote(value) + " is not a positive number");
         }
     }
 
@@ -116,7 +125,7 @@ final class Converters {
             if (v.matches("[0-9a-fA-F]{6}")) {
                 return Integer.parseInt(v, 16);
             }
-            throw new TypeConversionException("'" + value + "' is not a colour: use six hex digits RRGGBB, e.g. 202830");
+            throw new TypeConversionException(quote(value) + " is not a colour: use six hex digits RRGGBB, e.g. 202830");
         }
     }
 
@@ -143,7 +152,7 @@ final class Converters {
                 }
                 known.append(known.length() == 0 ? "" : e == values[values.length - 1] ? " or " : ", ").append(name(e));
             }
-            throw new TypeConversionException("'" + value + "' is not a " + what + ": use " + known);
+            throw new TypeConversionException(quote(value) + " is not a " + what + ": use " + known);
         }
     }
 

@@ -289,25 +289,9 @@ final class LineScanner implements Closeable {
         return new InputException(label + ":" + lineNumber + ": " + what);
     }
 
-    /**
-     * {@code text} quoted for a message: shortened when long, with control characters escaped so the
-     * message stays one printable line.
-     */
+    /** {@code text} quoted for a message: see {@link InputException#quote}; at most 40 characters shown. */
     static String quote(String text) {
-        int max = 40;
-        StringBuilder sb = new StringBuilder("'");
-        for (int k = 0; k < text.length() && k < max; k++) {
-            char c = text.charAt(k);
-            if (c < 0x20 || (c >= 0x7f && c <= 0x9f)) {
-                sb.append(String.format("\\x%02X", (int) c));
-            } else {
-                sb.append(c);
-            }
-        }
-        if (text.length() > max) {
-            sb.append("...");
-        }
-        return sb.append('\'').toString();
+        return InputException.quote(text, 40);
     }
 
     @Override
