@@ -162,8 +162,9 @@ final class BenchCommand extends SceneCommand {
                 return 0;
             }
             if (!json) {
-                lines.add(String.format(Locale.ROOT, "scene %s, %s, %d triangles, %d threads, %d frames after %d "
-                        + "warm-up", scene.name(), frame.size, scene.mesh().triangleCount(), threads, frames, warmup));
+                lines.add(String.format(Locale.ROOT, "scene %s, %s, %d triangles, %d threads, %s filter, %d frames "
+                        + "after %d warm-up", scene.name(), frame.size, scene.mesh().triangleCount(), threads,
+                        path.filter.id(), frames, warmup));
                 lines.add(String.format(Locale.ROOT, "%-12s %10s %10s %10s %10s %8s %10s", "path", "median ms",
                         "min ms", "mean ms", "p95 ms", "fps", "pieces"));
             }
@@ -195,6 +196,7 @@ final class BenchCommand extends SceneCommand {
                     .put("fps", 1000 / t.medianMs(), 1)
                     .put("pieces", r.last().pieces())
                     .put("threads", threads)
+                    .put("filter", path.filter.id())
                     .put("min_ms", t.minMs(), 3)
                     .put("pixels", (long) frame.size.width() * frame.size.height())
                     .put("pixels_written", r.last().pixelsWritten())
@@ -252,6 +254,7 @@ final class BenchCommand extends SceneCommand {
                         .put("mean_ms", ms, 3)
                         .put("fps", 1000 / ms, 1)
                         .put("threads", threads)
+                        .put("filter", path.filter.id())
                         .toString();
             }
             return String.format(Locale.ROOT, "%-12s %10s %10.3f %10s %8.1f %10s  (Mesa llvmpipe, LP_NUM_THREADS=%d, "

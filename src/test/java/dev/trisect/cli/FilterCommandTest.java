@@ -63,6 +63,15 @@ class FilterCommandTest {
     }
 
     @Test
+    void benchRowsNameTheFilter() {
+        CliRun r = CliRun.of("bench", "--scene", "floor", "--size", "64x48", "--frames", "2", "--warmup", "0",
+                "--filter", "trilinear", "--json");
+        assertEquals(0, r.status(), r.err());
+        long rows = r.out().lines().filter(l -> l.contains("\"filter\":\"trilinear\"")).count();
+        assertEquals(3, rows, r.out());
+    }
+
+    @Test
     void anUnknownFilterIsAUsageError() {
         CliRun r = CliRun.of("render", "--scene", "floor", "--size", "8x8", "--filter", "anisotropic",
                 "--out", dir.resolve("o.png").toString());
