@@ -23,6 +23,8 @@ final class DemoState {
     private volatile Measurement measurement;
     private volatile Progress progress = new Progress(0, 0, 0);
     private volatile String problem;
+    /** The pixel the inspector looks at, frame pixels x in the high half; -1 when the inspector is off. */
+    private volatile long inspected = -1;
     /** Whether the developer tools are showing, so that their numbers are worth measuring. */
     private volatile boolean toolsOpen;
 
@@ -95,6 +97,16 @@ final class DemoState {
 
     void measurement(Measurement m) {
         measurement = m;
+    }
+
+    /** Points the inspector at frame pixel (x, y), or turns it off with a negative x. */
+    void inspect(int x, int y) {
+        inspected = x < 0 ? -1 : ((long) x << 32) | (y & 0xFFFFFFFFL);
+    }
+
+    /** The inspected pixel packed as in {@link #inspect}, -1 when off. */
+    long inspected() {
+        return inspected;
     }
 
     boolean toolsOpen() {

@@ -74,6 +74,7 @@ final class DemoWindow {
     final Command filterCommand;
     final Command freezeCommand;
     final Command borderColourCommand;
+    final Command inspectorCommand;
     final Command stepCommand;
     final Command screenshotCommand;
     final Command openCommand;
@@ -108,6 +109,10 @@ final class DemoWindow {
                     BorderStyle now = state.settings().render().borderStyle();
                     selectBorderStyle(new BorderStyle(all[(now.colouring().ordinal() + 1) % all.length], now.fade()));
                 });
+        inspectorCommand = Command.toggle("Pixel inspector", "Show what the pixel under the mouse is made of "
+                + "(click to pin it): triangle, piece, split level, depth, texel coordinates in both paths, exact "
+                + "displacement, mip level and texel; with a crosshair and a magnifier",
+                KeyStroke.getKeyStroke(KeyEvent.VK_I, 0), c -> view.inspector(c.selected()));
         freezeCommand = Command.toggle("Freeze frame", "Stop on this frame: the camera and the comparison hold "
                 + "still so it can be inspected; settings still apply to it", KeyStroke.getKeyStroke(KeyEvent.VK_SPACE, 0),
                 c -> state.freeze.freeze(c.selected()));
@@ -303,6 +308,7 @@ final class DemoWindow {
         viewMenu.add(new JMenuItem(resetCommand));
         viewMenu.add(new JMenuItem(filterCommand));
         viewMenu.addSeparator();
+        viewMenu.add(new JCheckBoxMenuItem(inspectorCommand));
         viewMenu.add(new JCheckBoxMenuItem(freezeCommand));
         viewMenu.add(new JMenuItem(stepCommand));
         viewMenu.addSeparator();
@@ -331,7 +337,7 @@ final class DemoWindow {
         InputMap in = root.getInputMap(JComponent.WHEN_IN_FOCUSED_WINDOW);
         ActionMap act = root.getActionMap();
         List<Command> commands = new ArrayList<>(List.of(devToolsCommand, bordersCommand, orbitCommand, resetCommand,
-                filterCommand, freezeCommand, stepCommand, borderColourCommand,
+                filterCommand, freezeCommand, stepCommand, borderColourCommand, inspectorCommand,
                 screenshotCommand, openCommand, exitCommand));
         commands.addAll(modeCommands);
         commands.addAll(viewCommands);

@@ -21,6 +21,10 @@ final class FrameSlot {
     long overlayNanos;
     /** The render settings the frame was drawn with. */
     dev.trisect.pipeline.RenderSettings render;
+    /** The pixel inspector's reading of this frame, or null when it is off. */
+    PixelInspector.Inspection inspection;
+    /** Time the inspector took on this frame, nanoseconds. */
+    long inspectNanos;
     /** What the view showed when the frame was drawn. */
     ViewKind view = ViewKind.IMAGE;
     /** Split view divider, 0..1 of the width. */

@@ -33,6 +33,7 @@ final class FreezeGate {
     /** Render thread only: what the frozen frame was drawn with. */
     private ViewSettings drawnSettings;
     private long drawnSize = -1;
+    private long drawnInspected = -1;
 
     boolean frozen() {
         return frozen;
@@ -57,19 +58,25 @@ final class FreezeGate {
      * (and RUN) counts as drawn with these settings.
      */
     Action next(ViewSettings settings, long size) {
+        return next(settings, size, -1);
+    }
+
+    /** As {@link #next(ViewSettings, long)}; a change of the inspected pixel also redraws the frozen frame. */
+    Action next(ViewSettings settings, long size, long inspected) {
         Action a;
         if (!frozen) {
             a = Action.RUN;
         } else if (steps.get() > 0) {
             steps.decrementAndGet();
             a = Action.STEP;
-        } else if (!settings.equals(drawnSettings) || size != drawnSize) {
+        } else if (!settings.equals(drawnSettings) || size != drawnSize || inspected != drawnInspected) {
             a = Action.REDRAW;
         } else {
             return Action.HOLD;
         }
         drawnSettings = settings;
         drawnSize = size;
+        drawnInspected = inspected;
         return a;
     }
 }

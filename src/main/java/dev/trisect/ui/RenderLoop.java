@@ -101,7 +101,7 @@ final class RenderLoop implements Runnable {
                     fw = Math.max(1, (int) (fw * shrink));
                     fh = Math.max(1, (int) (fh * shrink));
                 }
-                FreezeGate.Action action = state.freeze.next(settings, ((long) fw << 32) | fh);
+                FreezeGate.Action action = state.freeze.next(settings, ((long) fw << 32) | fh, state.inspected());
                 if (action == FreezeGate.Action.HOLD) {
                     // Frozen: mouse looks and wheel turns made now must not jump the camera on the next step.
                     state.input.takeDrag();
@@ -166,7 +166,8 @@ final class RenderLoop implements Runnable {
         // A frame drawn while frozen is always measured: the numbers must describe the frame on screen.
         boolean compareDue = settings.compare() && state.toolsOpen()
                 && (action != FreezeGate.Action.RUN || now - lastCompare >= COMPARE_INTERVAL_NANOS);
-        boolean needReference = settings.view() != ViewKind.IMAGE || compareDue;
+        long inspected = state.inspected();
+        boolean needReference = settings.view() != ViewKind.IMAGE || compareDue || inspected >= 0;
         Framebuffer fb = back.frame;
         fb.recordUv(needReference);
         Viewport viewport = new Viewport(fw, fh);
@@ -206,6 +207,19 @@ final class RenderLoop implements Runnable {
             // Between measurements the heat map needs only the displacements, at a fraction of the cost.
             ImageComparison.displacements(fw, fh, fb.uv(), reference.uv(),
                     new TexelToScreen(scene.mesh(), textures, vp, viewport), displacement);
+        }
+        back.inspection = null;
+        if (inspected >= 0) {
+            long t0 = System.nanoTime();
+            int ix = (int) (inspected >> 32);
+            int iy = (int) inspected;
+            if (ix < fw && iy < fh) {
+                back.inspection = PixelInspector.inspect(renderer, fb, reference,
+                        new TexelToScreen(scene.mesh(), textures, vp, viewport), textures,
+                        scene.mesh().triangleMaterials(), settings.render().filter(),
+                        settings.render().mode() == RenderMode.PERSPECTIVE, ix, iy);
+            }
+            back.inspectNanos = System.nanoTime() - t0;
         }
         back.overlayNanos = settings.render().borders() && settings.view() != ViewKind.DIFFERENCE
                 ? renderer.drawBorders(fb, settings.render().borderStyle(), settings.render().tessellation()) : 0;

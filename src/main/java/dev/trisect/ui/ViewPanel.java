@@ -37,6 +37,9 @@ final class ViewPanel extends JComponent {
     private int lastX;
     private int lastY;
     private boolean draggingDivider;
+    private boolean inspecting;
+    private boolean pinned;
+    private boolean dragged;
 
     ViewPanel(DemoState state, TripleBuffer buffers, DoubleConsumer splitMoved) {
         this.state = state;
@@ -48,6 +51,7 @@ final class ViewPanel extends JComponent {
         MouseAdapter mouse = new MouseAdapter() {
             @Override
             public void mousePressed(MouseEvent e) {
+                dragged = false;
                 lastX = e.getX();
                 lastY = e.getY();
                 draggingDivider = state.settings().view() == ViewKind.SPLIT
@@ -56,7 +60,24 @@ final class ViewPanel extends JComponent {
             }
 
             @Override
+            public void mouseMoved(MouseEvent e) {
+                if (inspecting && !pinned) {
+                    inspectAt(e.getX(), e.getY());
+                }
+            }
+
+            @Override
+            public void mouseReleased(MouseEvent e) {
+                if (inspecting && !dragged && !draggingDivider) {
+                    // A click without a drag pins the inspector to this pixel, or lets it follow again.
+                    pinned = !pinned;
+                    inspectAt(e.getX(), e.getY());
+                }
+            }
+
+            @Override
             public void mouseDragged(MouseEvent e) {
+                dragged = true;
                 if (draggingDivider) {
                     splitMoved.accept(getWidth() == 0 ? 0.5 : (double) e.getX() / getWidth());
                 } else {
@@ -74,6 +95,33 @@ final class ViewPanel extends JComponent {
         addMouseListener(mouse);
         addMouseMotionListener(mouse);
         addMouseWheelListener(mouse);
+    }
+
+    /** Turns the pixel inspector on (it follows the mouse; a click pins it) or off. */
+    void inspector(boolean on) {
+        inspecting = on;
+        pinned = false;
+        if (!on) {
+            state.inspect(-1, -1);
+        } else {
+            java.awt.Point p = getMousePosition();
+            inspectAt(p == null ? getWidth() / 2 : p.x, p == null ? getHeight() / 2 : p.y);
+        }
+    }
+
+    boolean pinned() {
+        return pinned;
+    }
+
+    /** Points the inspector at the frame pixel under view point (x, y). */
+    void inspectAt(int x, int y) {
+        FrameSlot f = front;
+        if (f == null || getWidth() == 0 || getHeight() == 0) {
+            return;
+        }
+        int fx = Math.max(0, Math.min(f.width() - 1, (int) ((long) x * f.width() / getWidth())));
+        int fy = Math.max(0, Math.min(f.height() - 1, (int) ((long) y * f.height() / getHeight())));
+        state.inspect(fx, fy);
     }
 
     /** Connects the loop that waits for frames to be shown. */
@@ -116,6 +164,9 @@ final class ViewPanel extends JComponent {
             if (front.render != null && front.render.borders() && front.view != ViewKind.DIFFERENCE
                     && front.render.borderStyle().colouring() != BorderStyle.Colouring.YELLOW) {
                 paintBorderLegend(g2, front.render, h);
+            }
+            if (front.inspection != null) {
+                InspectorPainter.paint(g2, front, w, h, pinned);
             }
             if (front.view == ViewKind.DIFFERENCE) {
                 paintLegend(g2, front.heatScale);

@@ -404,4 +404,29 @@ class DemoWindowGuiTest {
         press(KeyEvent.VK_B);
         waitFor("borders off", () -> !window.state().settings().render().borders());
     }
+
+    @Test
+    @Order(13)
+    void iInspectsThePixelUnderTheMouseAndAClickPinsIt() throws Exception {
+        var at = onEdt(() -> window.view().getLocationOnScreen());
+        int vw = onEdt(() -> window.view().getWidth());
+        int vh = onEdt(() -> window.view().getHeight());
+        robot.mouseMove(at.x + vw / 3, at.y + vh / 3);
+        press(KeyEvent.VK_I);
+        waitFor("the inspector", () -> onEdt(() -> window.inspectorCommand.selected()) && window.state().inspected() >= 0);
+        waitFor("an inspected frame", () -> onEdt(() -> window.view().front().inspection != null));
+        robot.mouseMove(at.x + vw / 2, at.y + vh / 2);
+        waitFor("the inspector to follow", () -> onEdt(() -> window.view().front().inspection != null
+                && window.view().front().inspection.x() == (int) ((long) (vw / 2) * window.view().front().width()
+                        / vw)));
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        waitFor("pinned", () -> onEdt(() -> window.view().pinned()));
+        long pinnedAt = window.state().inspected();
+        robot.mouseMove(at.x + 200, at.y + 200);
+        Thread.sleep(300);
+        assertEquals(pinnedAt, window.state().inspected(), "a pinned inspector stays put");
+        press(KeyEvent.VK_I);
+        waitFor("the inspector off", () -> window.state().inspected() < 0);
+    }
 }
