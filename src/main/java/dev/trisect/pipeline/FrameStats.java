@@ -16,8 +16,8 @@ import dev.trisect.base.JsonObject;
  * @param splits           edge cuts made
  * @param deepestSplit     highest edge level reached (times an input edge was halved)
  * @param capsReached      input triangles whose splitting a depth or piece cap stopped short
- * @param piecesFallback   pieces a cap stopped short of their split policy, filled per pixel instead
- *                         of affinely (included in {@code pieces})
+ * @param piecesFallback   pieces filled per pixel instead of affinely (included in {@code pieces}): those
+ *                         a cap stopped short of their split policy, and slivers thinner than 1/16 px
  * @param pieceBudget      the frame's piece budget (0 outside the tessellated path)
  * @param budgetDepth      the edge level cap the budget forced on the frame (its pieces beyond that
  *                         cap are among the fallback pieces), or -1 when the frame fit its budget

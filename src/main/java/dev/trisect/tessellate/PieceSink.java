@@ -13,9 +13,9 @@ public interface PieceSink {
     /**
      * One piece, corners in the input triangle's winding order.
      *
-     * @param fallback true when a cap stopped the splitting while the piece still fails its policy:
-     *                 it must be filled per pixel (perspective-correct), not affinely, so that the
-     *                 bound holds on it too
+     * @param fallback true when a cap stopped the splitting while the piece still fails its policy,
+     *                 or the piece is a sliver ({@link Tessellator#SLIVER_PIXELS}): it must be filled
+     *                 per pixel (perspective-correct), not affinely, so that the bound holds on it too
      */
     void piece(double[] vertices, int a, int b, int c, boolean fallback);
 }

@@ -17,9 +17,10 @@ import java.util.Arrays;
  * against enormous or degenerate input, can leave a split undone on one side of an edge; reaching it
  * is counted.
  *
- * <p>A piece that still fails the policy when a cap stops its splitting is handed on flagged as a
- * fallback, to be filled per pixel: same corners, same coverage, so no new crack, and no pixel of it
- * is displaced more than the per-pixel path's rounding.
+ * <p>A piece that still fails the policy when a cap stops its splitting, or that is a sliver thinner
+ * than {@link #SLIVER_PIXELS}, is handed on flagged as a fallback, to be filled per pixel: same
+ * corners, same coverage, so no new crack, and no pixel of it is displaced more than the per-pixel
+ * path's rounding.
  *
  * <p>The recursion runs on an explicit stack in primitive arrays, so no input can overflow the Java
  * stack, and nothing is allocated per triangle once the scratch arrays have grown to their working
@@ -118,7 +119,10 @@ public final class Tessellator {
         return pieceLevel;
     }
 
-    /** Pieces emitted since the last reset that still failed the policy and are flagged to be filled per pixel. */
+    /**
+     * Pieces emitted since the last reset flagged to be filled per pixel: a cap stopped them while
+     * they still failed the policy, or they are slivers (see {@link #SLIVER_PIXELS}).
+     */
     public long fallbackPieces() {
         return fallbackPieces;
     }
@@ -225,10 +229,13 @@ public final class Tessellator {
                 // stopped this piece short, and the per-pixel filler takes it.
                 if (atCap) {
                     capped = true;
+                }
+                boolean perPixel = atCap || thin(v0, v1, v2);
+                if (perPixel) {
                     fallbackPieces++;
                 }
                 pieceLevel = level;
-                sink.piece(vertices, v0, v1, v2, atCap);
+                sink.piece(vertices, v0, v1, v2, perPixel);
                 continue;
             }
             if (splitsHere + 2L > allowance) {
@@ -265,6 +272,37 @@ public final class Tessellator {
         if (budget != null) {
             budget.charge(splitsHere + 1L);
         }
+    }
+
+    /**
+     * Pieces with an altitude below this many pixels (and below an eighth of their longest edge) are
+     * filled per pixel. Coverage uses corners
+     * snapped to 1/256 px, so a pixel centre up to about 0.003 px outside a piece can be filled by it,
+     * its affine map extrapolated that far; across a sliver thinner than the snapping that
+     * extrapolation is large and the bound can fail (measured: 0.125 px at max-error 0.1 with the 3D
+     * midpoint on a plane to the horizon). At 1/16 px the reach outside is under 5 % of the piece's
+     * thickness. Such pieces cover few pixels, so filling them per pixel costs next to nothing.
+     */
+    public static final double SLIVER_PIXELS = 1.0 / 16;
+
+    /**
+     * Whether the piece is a sliver: its least altitude on screen is below {@link #SLIVER_PIXELS} and
+     * below an eighth of its longest edge.
+     */
+    private boolean thin(int a, int b, int c) {
+        double[] v = vertices;
+        double ex1 = v[b + SX] - v[a + SX];
+        double ey1 = v[b + SY] - v[a + SY];
+        double ex2 = v[c + SX] - v[a + SX];
+        double ey2 = v[c + SY] - v[a + SY];
+        double ex3 = v[c + SX] - v[b + SX];
+        double ey3 = v[c + SY] - v[b + SY];
+        double area2 = Math.abs(ex1 * ey2 - ex2 * ey1);
+        double l2 = Math.max(ex1 * ex1 + ey1 * ey1, Math.max(ex2 * ex2 + ey2 * ey2, ex3 * ex3 + ey3 * ey3));
+        // altitude = area2 / longest edge, compared squared to spare a square root: below the limit,
+        // and below an eighth of the longest edge (a small piece of good shape is no sliver).
+        double altitude2 = area2 * area2 / l2;
+        return altitude2 < SLIVER_PIXELS * SLIVER_PIXELS && altitude2 * 64 < l2;
     }
 
     /** Whether the piece's screen bounding box misses the viewport entirely. */

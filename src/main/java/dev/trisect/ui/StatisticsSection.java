@@ -27,8 +27,8 @@ final class StatisticsSection implements ToolSection {
             {"Splits", "Edge cuts made this frame"},
             {"Deepest split", "The most times an edge was halved this frame"},
             {"Caps reached", "Triangles whose splitting a depth or piece cap stopped short"},
-            {"Fallback pieces", "Pieces a cap stopped short of the split policy, filled per pixel instead "
-                    + "(magenta outlines)"},
+            {"Fallback pieces", "Pieces filled per pixel instead of affinely (magenta outlines): those a cap "
+                    + "stopped short of the split policy, and slivers thinner than 1/16 pixel"},
             {"Piece budget", "Most pieces this frame may have (one per triangle plus one per 16 pixels); when "
                     + "reached, the frame's depth cap is lowered and the pieces it stops are filled per pixel"},
             {"Pixels written", "Pixels that passed the depth test"}});

@@ -123,8 +123,8 @@ class DisplacementBoundTest {
         assertTrue(r.pixels() > w * h / 10, what + "enough of the frame is covered: " + r.pixels());
         assertTrue(r.worst() <= threshold + SNAP_SLACK, what + "pixel " + r.worstX() + "," + r.worstY()
                 + " is " + r.worst() + " px off; " + st.toJson());
-        assertEquals(st.capsReached() > 0, st.piecesFallback() > 0,
-                what + "a cap is reached exactly when the fallback takes over: " + st.toJson());
+        assertTrue(st.capsReached() == 0 || st.piecesFallback() > 0,
+                what + "when a cap is reached the fallback takes over: " + st.toJson());
         return st;
     }
 
