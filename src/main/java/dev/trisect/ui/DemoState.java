@@ -25,6 +25,10 @@ final class DemoState {
     private volatile String problem;
     /** The pixel the inspector looks at, frame pixels x in the high half; -1 when the inspector is off. */
     private volatile long inspected = -1;
+    /** The last few seconds of frame times by stage, for the graph. */
+    final FrameTimes frameTimes = new FrameTimes();
+    /** Milliseconds each path (by RenderMode ordinal) took on the last measured frame, or null. */
+    private volatile double[] pathMs;
     /** Whether the developer tools are showing, so that their numbers are worth measuring. */
     private volatile boolean toolsOpen;
 
@@ -107,6 +111,14 @@ final class DemoState {
     /** The inspected pixel packed as in {@link #inspect}, -1 when off. */
     long inspected() {
         return inspected;
+    }
+
+    double[] pathMs() {
+        return pathMs;
+    }
+
+    void pathMs(double[] ms) {
+        pathMs = ms;
     }
 
     boolean toolsOpen() {

@@ -45,7 +45,7 @@ final class DevToolsDialog extends JDialog {
             }
         });
         sections = List.of(new OverlaySection(owner), new ModeSection(owner), new SplitPolicySection(owner),
-                new BudgetSection(owner), new CompareSection(owner), new StatisticsSection(owner),
+                new BudgetSection(owner), new CompareSection(owner), new StatisticsSection(owner), new TimingSection(owner),
                 new CameraSection(owner), new RenderSection(owner));
         JPanel content = new JPanel();
         content.setLayout(new BoxLayout(content, BoxLayout.Y_AXIS));

@@ -7,6 +7,7 @@ import dev.trisect.metrics.HeatMap;
 import dev.trisect.metrics.ImageComparison;
 import dev.trisect.metrics.TexelToScreen;
 import dev.trisect.pipeline.FrameRenderer;
+import dev.trisect.pipeline.FrameStats;
 import dev.trisect.pipeline.RenderMode;
 import dev.trisect.pipeline.RenderSettings;
 import dev.trisect.raster.Framebuffer;
@@ -40,6 +41,10 @@ final class RenderLoop implements Runnable {
 
     private FrameSlot back;
     private Framebuffer reference;
+    /** Frame for timing a path that is neither shown nor the reference. */
+    private Framebuffer scratch;
+    /** Time the last frame spent on the comparison: the per-pixel render, other paths' timing, measuring. */
+    private long compareStageNanos;
     private float[] displacement;
     private CameraRig rig;
     private final BudgetHook budget = new BudgetHook();
@@ -109,6 +114,7 @@ final class RenderLoop implements Runnable {
                     sleep(15);
                     continue;
                 }
+                long frameStart = System.nanoTime();
                 try {
                     drawFrame(settings, fw, fh, action, action == FreezeGate.Action.STEP ? FreezeGate.STEP_SECONDS : dt);
                 } catch (RuntimeException | OutOfMemoryError e) {
@@ -120,6 +126,9 @@ final class RenderLoop implements Runnable {
                     continue;
                 }
                 long serial = back.serial;
+                FrameStats st = back.stats;
+                long overlay = back.overlayNanos;
+                long presentStart = System.nanoTime();
                 back = buffers.publish(back);
                 repaint.run();
                 secondFrames++;
@@ -130,6 +139,10 @@ final class RenderLoop implements Runnable {
                 }
                 state.progress(new DemoState.Progress(frames, fps, compareMs));
                 awaitPaint(serial);
+                long end = System.nanoTime();
+                state.frameTimes.add(new double[] {st.transformNanos() / 1e6, st.clipNanos() / 1e6,
+                    st.tessellateNanos() / 1e6, st.rasterNanos() / 1e6, (st.overlayNanos() + overlay) / 1e6,
+                    compareStageNanos / 1e6, (end - presentStart) / 1e6}, (end - frameStart) / 1e6);
             }
         } finally {
             renderer.close();
@@ -173,6 +186,9 @@ final class RenderLoop implements Runnable {
         Viewport viewport = new Viewport(fw, fh);
         Mat4 vp = camera.viewProjection(viewport);
         var textures = scene.textureArray();
+        long compareStart = System.nanoTime();
+        long perspectiveNanos = 0;
+        double[] paths = null;
         if (needReference) {
             if (reference == null || reference.width() != fw || reference.height() != fh) {
                 reference = new Framebuffer(fw, fh);
@@ -181,11 +197,35 @@ final class RenderLoop implements Runnable {
             }
             renderer.render(scene.mesh(), textures, vp,
                     settings.render().withMode(RenderMode.PERSPECTIVE).withBorders(false), reference);
+            perspectiveNanos = System.nanoTime() - compareStart;
         }
+        if (compareDue) {
+            // Each path's time on this very frame, side by side: the one not drawn anyway is drawn
+            // into scratch, before this path so that the overlay and the inspector see this path's pieces.
+            paths = new double[RenderMode.values().length];
+            paths[RenderMode.PERSPECTIVE.ordinal()] = perspectiveNanos / 1e6;
+            for (RenderMode m : RenderMode.values()) {
+                if (m != RenderMode.PERSPECTIVE && m != settings.render().mode()) {
+                    if (scratch == null || scratch.width() != fw || scratch.height() != fh) {
+                        scratch = new Framebuffer(fw, fh);
+                    }
+                    long t0 = System.nanoTime();
+                    renderer.render(scene.mesh(), textures, vp, settings.render().withMode(m).withBorders(false),
+                            scratch);
+                    paths[m.ordinal()] = (System.nanoTime() - t0) / 1e6;
+                }
+            }
+        }
+        long compareNanos = System.nanoTime() - compareStart;
         // This path last, so that its pieces are the ones the overlay outlines; the overlay comes after
         // the comparison, which measures the rendered image and never the borders.
         RenderSettings render = budget.apply(settings.render(), state.budget());
         back.stats = renderer.render(scene.mesh(), textures, vp, render.withBorders(false), fb);
+        if (paths != null) {
+            paths[settings.render().mode().ordinal()] = back.stats.totalNanos() / 1e6;
+            state.pathMs(paths);
+        }
+        long afterThisPath = System.nanoTime();
         state.chosenThreshold(budget.frameDone(back.stats.totalNanos() / 1e6));
         frames++;
         back.serial = frames;
@@ -208,6 +248,7 @@ final class RenderLoop implements Runnable {
             ImageComparison.displacements(fw, fh, fb.uv(), reference.uv(),
                     new TexelToScreen(scene.mesh(), textures, vp, viewport), displacement);
         }
+        compareNanos += System.nanoTime() - afterThisPath;
         back.inspection = null;
         if (inspected >= 0) {
             long t0 = System.nanoTime();
@@ -221,6 +262,7 @@ final class RenderLoop implements Runnable {
             }
             back.inspectNanos = System.nanoTime() - t0;
         }
+        compareStageNanos = compareNanos;
         back.overlayNanos = settings.render().borders() && settings.view() != ViewKind.DIFFERENCE
                 ? renderer.drawBorders(fb, settings.render().borderStyle(), settings.render().tessellation()) : 0;
         if (settings.view() == ViewKind.DIFFERENCE) {
