@@ -424,6 +424,11 @@ final class DemoWindow {
                         f == null ? "" : f.width() + "x" + f.height())
                 : String.format(Locale.ROOT, "%s  %.0f fps  %s", r.mode().id(), p.fps(),
                         f == null ? "" : f.width() + "x" + f.height()));
+        String warning = f == null || f.stats == null ? null
+                : Warnings.of(f.stats, state.budget(), state.chosenThreshold(), r.tessellation());
+        if (warning != null && !warning.equals(statusLine.text())) {
+            status(warning);
+        }
         if (devTools != null && devTools.isVisible()) {
             devTools.refresh(p, f, state.measurement());
         }
