@@ -54,7 +54,7 @@ public final class BorderOverlay {
             }
             colour = style.colouring() == BorderStyle.Colouring.YELLOW ? OverlayColours.of(triangles, tri)
                     : OverlayColours.of(triangles, tri, style.colouring(), maxLevel, maxError);
-            alpha = style.fade() ? fadeAlpha(area) : 1;
+            alpha = style.fade() ? fadeAlpha(area, perimeter(triangles, tri)) : 1;
             int o = tri * ScreenTriangles.FIXED_STRIDE;
             for (int e = 0; e < 3; e++) {
                 int a = o + 2 * e;
@@ -65,19 +65,26 @@ public final class BorderOverlay {
         return painted;
     }
 
-    /** Pieces at least this large, in square pixels, are outlined opaque when fading. */
-    static final double FADE_AREA = 64;
+    /** Pieces whose inscribed circle has at least this radius, pixels, are outlined opaque when fading. */
+    static final double FADE_RADIUS = 2;
     /** The faintest a faded outline gets, so that even the smallest pieces still show a trace. */
-    static final double MIN_ALPHA = 0.12;
+    static final double MIN_ALPHA = 0.02;
 
     /**
-     * Opacity of a faded outline for a piece of {@code area} square pixels: in proportion to the area
-     * up to {@link #FADE_AREA}. A piece's outline covers about its perimeter in pixels, so for small
-     * pieces the lines cover a share of the surface that grows as the area shrinks; fading by area keeps
-     * the ink per pixel roughly level, and the texture readable, where pieces crowd near the horizon.
+     * Opacity of a faded outline for a piece of {@code area} square pixels and {@code perimeter}
+     * pixels: the square of its inscribed circle's radius {@code 2 * area / perimeter} over {@link #FADE_RADIUS}. The
+     * outline covers about {@code perimeter} pixels of the piece's {@code area}, so the share of line
+     * ink is about {@code 1 / radius}: fading by the radius keeps the ink per pixel level, and the
+     * texture readable, where pieces crowd or thin to slivers near the horizon.
      */
-    static double fadeAlpha(double area) {
-        return Math.max(MIN_ALPHA, Math.min(1, area / FADE_AREA));
+    static double fadeAlpha(double area, double perimeter) {
+        if (!(perimeter > 0)) {
+            return 1;
+        }
+        double r = Math.min(1, 2 * area / perimeter / FADE_RADIUS);
+        // Squared: where pieces are far thinner than a pixel, many outlines stack on each pixel, and
+        // their opacities add up.
+        return Math.max(MIN_ALPHA, r * r);
     }
 
     /** The 1/w plane over pixel centres; false for a triangle with no area. */
@@ -159,6 +166,13 @@ public final class BorderOverlay {
             frame.color()[i] = blend(frame.color()[i], colour, alpha);
         }
         return 1;
+    }
+
+    private static double perimeter(ScreenTriangles triangles, int tri) {
+        double[] sc = triangles.screen();
+        int s = tri * ScreenTriangles.SCREEN_STRIDE;
+        return Math.hypot(sc[s + 2] - sc[s], sc[s + 3] - sc[s + 1]) + Math.hypot(sc[s + 4] - sc[s + 2],
+                sc[s + 5] - sc[s + 3]) + Math.hypot(sc[s] - sc[s + 4], sc[s + 1] - sc[s + 5]);
     }
 
     /** {@code over} laid on {@code under} with opacity {@code a}, per sRGB channel, opaque result. */

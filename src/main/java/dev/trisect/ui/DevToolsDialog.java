@@ -15,6 +15,7 @@ import javax.swing.BoxLayout;
 import javax.swing.JDialog;
 import javax.swing.JPanel;
 import javax.swing.JScrollPane;
+import javax.swing.Scrollable;
 import javax.swing.ScrollPaneConstants;
 
 /**
@@ -47,7 +48,8 @@ final class DevToolsDialog extends JDialog {
         sections = List.of(new OverlaySection(owner), new ModeSection(owner), new SplitPolicySection(owner),
                 new BudgetSection(owner), new CompareSection(owner), new StatisticsSection(owner), new TimingSection(owner),
                 new CameraSection(owner), new RenderSection(owner));
-        JPanel content = new JPanel();
+        // Laid out at the viewport's width, so that the value column never hides under the scroll bar.
+        JPanel content = new TrackingPanel();
         content.setLayout(new BoxLayout(content, BoxLayout.Y_AXIS));
         content.setBorder(BorderFactory.createEmptyBorder(8, 8, 8, 8));
         for (ToolSection s : sections) {
@@ -63,6 +65,9 @@ final class DevToolsDialog extends JDialog {
         pack();
     }
 
+    /** Narrowest the tools get: room for a label and a value such as "0.4 s ago, 120 ms". */
+    static final int MIN_WIDTH = 400;
+
     /** Pixels one mouse-wheel notch (or arrow click) scrolls the tools. */
     static final int WHEEL_PIXELS = 24;
 
@@ -75,7 +80,7 @@ final class DevToolsDialog extends JDialog {
     static Dimension fit(Dimension content, int scrollBarWidth, Rectangle usable, int top) {
         int room = Math.max(200, usable.y + usable.height - Math.max(usable.y, top));
         int height = Math.min(content.height, room);
-        int width = content.width + (height < content.height ? scrollBarWidth : 0);
+        int width = Math.max(MIN_WIDTH, content.width) + (height < content.height ? scrollBarWidth : 0);
         return new Dimension(width, height);
     }
 
@@ -133,6 +138,36 @@ final class DevToolsDialog extends JDialog {
     void refresh(DemoState.Progress progress, FrameSlot front, DemoState.Measurement m) {
         for (ToolSection s : sections) {
             s.refresh(progress, front, m);
+        }
+    }
+
+    /** A panel that a scroll pane lays out at its own width, scrolling only vertically. */
+    private static final class TrackingPanel extends JPanel implements Scrollable {
+        private static final long serialVersionUID = 1L;
+
+        @Override
+        public Dimension getPreferredScrollableViewportSize() {
+            return getPreferredSize();
+        }
+
+        @Override
+        public int getScrollableUnitIncrement(java.awt.Rectangle visible, int orientation, int direction) {
+            return WHEEL_PIXELS;
+        }
+
+        @Override
+        public int getScrollableBlockIncrement(java.awt.Rectangle visible, int orientation, int direction) {
+            return Math.max(WHEEL_PIXELS, visible.height - WHEEL_PIXELS);
+        }
+
+        @Override
+        public boolean getScrollableTracksViewportWidth() {
+            return true;
+        }
+
+        @Override
+        public boolean getScrollableTracksViewportHeight() {
+            return false;
         }
     }
 }

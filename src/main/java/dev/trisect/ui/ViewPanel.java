@@ -230,8 +230,11 @@ final class ViewPanel extends JComponent {
         int barW = 220;
         int x = 14;
         int y = h - 62;
+        g.setFont(g.getFont().deriveFont(11f));
+        String note = depth ? "fallback (filled per pixel)" : "fallback; yellow = at max error, red = above";
+        int boxW = Math.max(barW, 18 + g.getFontMetrics().stringWidth(note)) + 16;
         g.setColor(new Color(0, 0, 0, 160));
-        g.fillRoundRect(x - 8, y - 8, barW + 16, 60, 10, 10);
+        g.fillRoundRect(x - 8, y - 8, boxW, 60, 10, 10);
         for (int i = 0; i < barW; i++) {
             double f = (double) i / (barW - 1);
             int c = depth ? OverlayColours.depth((int) Math.round(f * maxLevel), maxLevel)
@@ -248,8 +251,7 @@ final class ViewPanel extends JComponent {
         g.setColor(new Color(OverlayColours.FALLBACK, false));
         g.fillRect(x, y + 32, 12, 10);
         g.setColor(Color.WHITE);
-        g.drawString(depth ? "fallback (filled per pixel)" : "fallback; yellow = at max error, red = above",
-                x + 18, y + 41);
+        g.drawString(note, x + 18, y + 41);
     }
 
     private static void label(Graphics2D g, String text, int x, int y) {

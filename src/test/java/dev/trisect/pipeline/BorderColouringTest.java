@@ -120,6 +120,6 @@ class BorderColouringTest {
             }
         }
         assertTrue(horizonFaded < horizonPlain / 2, "far pieces fade: " + horizonFaded + " of " + horizonPlain);
-        assertTrue(nearFaded > nearPlain * 0.8, "near outlines stay solid: " + nearFaded + " of " + nearPlain);
+        assertTrue(nearFaded > nearPlain * 0.6, "most near outlines stay solid: " + nearFaded + " of " + nearPlain);
     }
 }

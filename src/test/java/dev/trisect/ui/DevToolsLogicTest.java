@@ -70,10 +70,11 @@ class DevToolsLogicTest {
     @Test
     void theToolsWindowIsAsTallAsItsContentWhereTheScreenAllows() {
         Rectangle screen = new Rectangle(0, 0, 1920, 1080);
-        assertEquals(new Dimension(380, 1000), DevToolsDialog.fit(new Dimension(380, 1000), 15, screen, 0));
-        Dimension tall = DevToolsDialog.fit(new Dimension(380, 1400), 15, screen, 40);
+        assertEquals(new Dimension(420, 1000), DevToolsDialog.fit(new Dimension(420, 1000), 15, screen, 0));
+        Dimension tall = DevToolsDialog.fit(new Dimension(420, 1400), 15, screen, 40);
         assertEquals(1040, tall.height, "down to the screen's bottom edge");
-        assertEquals(395, tall.width, "room for the scroll bar");
+        assertEquals(435, tall.width, "room for the scroll bar");
+        assertEquals(DevToolsDialog.MIN_WIDTH, DevToolsDialog.fit(new Dimension(100, 100), 15, screen, 0).width);
         assertTrue(DevToolsDialog.WHEEL_PIXELS >= 16, "a wheel notch scrolls rows, not pixels");
     }
 
