@@ -68,8 +68,11 @@ final class DiffCommand implements Callable<Integer> {
             throw new InputException((ua.channels() != 3 ? uv : referenceUv)
                     + ": a UV output has 3 channels (a colour PFM, PF)");
         }
+        // The files hold floats; widening is exact, so the estimate sees exactly what was stored.
+        double[] uvA = ua.widened();
+        double[] uvB = ub.widened();
         float[] displacement = heatmap == null ? null : new float[w * h];
-        Comparison c = ImageComparison.compare(w, h, a.argb(), ua.data(), b.argb(), ub.data(), displacement);
+        Comparison c = ImageComparison.compare(w, h, a.argb(), uvA, b.argb(), uvB, displacement);
         int differ = 0;
         for (int i = 0; i < w * h; i++) {
             if (((a.argb()[i] ^ b.argb()[i]) & 0xFFFFFF) != 0) {
@@ -78,7 +81,7 @@ final class DiffCommand implements Callable<Integer> {
         }
         if (heatmap != null) {
             int[] argb = new int[w * h];
-            HeatMap.render(displacement, ua.data(), ub.data(), w, h, heatmapMax, argb);
+            HeatMap.render(displacement, uvA, uvB, w, h, heatmapMax, argb);
             ImageFiles.write(heatmap, w, h, argb);
         }
         common.out().println(new JsonObject()

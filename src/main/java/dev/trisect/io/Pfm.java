@@ -40,6 +40,14 @@ public final class Pfm {
      *                 {@code [s, t, id]} as in the conventions
      */
     public record Image(int width, int height, int channels, float[] data) {
+        /** The data widened to doubles (exactly), in the layout of {@link #data()}, for the metrics. */
+        public double[] widened() {
+            double[] d = new double[data.length];
+            for (int i = 0; i < data.length; i++) {
+                d[i] = data[i];
+            }
+            return d;
+        }
     }
 
     private Pfm() {
@@ -69,20 +77,41 @@ public final class Pfm {
      * when the batch is committed.
      */
     public static void write(OutputBatch batch, Path out, int width, int height, float[] uv3) {
-        if (width < 1 || height < 1 || 3L * width * height != uv3.length) {
-            throw new IllegalArgumentException(
-                    "image size " + width + "x" + height + " does not match " + uv3.length + " floats (3 a pixel)");
-        }
-        batch.write(out, stream -> writeData(stream, width, height, uv3));
+        write(batch, out, width, height, uv3.length, k -> uv3[k]);
     }
 
-    private static void writeData(OutputStream stream, int width, int height, float[] uv3) throws IOException {
+    /**
+     * Writes a 3-channel UV buffer held in doubles (as a {@code Framebuffer} holds it), each value
+     * rounded to the nearest float: the same bytes as {@link #write(OutputBatch, Path, int, int, float[])}
+     * gives for the rounded array.
+     */
+    public static void write(OutputBatch batch, Path out, int width, int height, double[] uv3) {
+        write(batch, out, width, height, uv3.length, k -> (float) uv3[k]);
+    }
+
+    /** The float to store at index k of a row-major buffer (row 0 at the top). */
+    @FunctionalInterface
+    private interface FloatAt {
+        float at(int k);
+    }
+
+    private static void write(OutputBatch batch, Path out, int width, int height, int length, FloatAt value) {
+        if (width < 1 || height < 1 || 3L * width * height != length) {
+            throw new IllegalArgumentException(
+                    "image size " + width + "x" + height + " does not match " + length + " values (3 a pixel)");
+        }
+        batch.write(out, stream -> writeData(stream, width, height, value));
+    }
+
+    private static void writeData(OutputStream stream, int width, int height, FloatAt value) throws IOException {
         stream.write(("PF\n" + width + " " + height + "\n-1.0\n").getBytes(StandardCharsets.US_ASCII));
-        int rowFloats = 3 * width;
-        ByteBuffer row = ByteBuffer.allocate(4 * rowFloats).order(ByteOrder.LITTLE_ENDIAN);
+        int rowValues = 3 * width;
+        ByteBuffer row = ByteBuffer.allocate(4 * rowValues).order(ByteOrder.LITTLE_ENDIAN);
         for (int y = height - 1; y >= 0; y--) {
             row.clear();
-            row.asFloatBuffer().put(uv3, y * rowFloats, rowFloats);
+            for (int k = y * rowValues, end = k + rowValues; k < end; k++) {
+                row.putFloat(value.at(k));
+            }
             stream.write(row.array());
         }
     }

@@ -6,7 +6,7 @@ import java.util.List;
 
 /**
  * Draws a displacement image (pixels, as filled by
- * {@link ImageComparison#compare(int, int, int[], float[], int[], float[], float[])}) as colours.
+ * {@link ImageComparison#compare(int, int, int[], double[], int[], double[], float[])}) as colours.
  *
  * <p>The ramp runs from a very dark indigo at 0 through blue, purple, red, orange and yellow to white at
  * {@code maxPixels} and above. Its relative luminance rises strictly from each of its
@@ -89,9 +89,9 @@ public final class HeatMap {
 
     /**
      * Draws a displacement image on a linear or logarithmic scale, as
-     * {@link #render(float[], float[], float[], int, int, double, int[])} does on a linear one.
+     * {@link #render(float[], double[], double[], int, int, double, int[])} does on a linear one.
      */
-    public static void render(float[] displacement, float[] uvTest, float[] uvReference, int width, int height,
+    public static void render(float[] displacement, double[] uvTest, double[] uvReference, int width, int height,
                               HeatScale scale, int[] argbOut) {
         if (!scale.logarithmic()) {
             render(displacement, uvTest, uvReference, width, height, scale.maxPixels(), argbOut);
@@ -168,7 +168,7 @@ public final class HeatMap {
      * @param maxPixels    displacement in pixels drawn white; finite and positive
      * @param argbOut      {@code width * height} pixels to fill, row 0 at the top
      */
-    public static void render(float[] displacement, float[] uvTest, float[] uvReference, int width, int height,
+    public static void render(float[] displacement, double[] uvTest, double[] uvReference, int width, int height,
                               double maxPixels, int[] argbOut) {
         double scale = scale(maxPixels);
         long pixels = (long) width * height;
@@ -190,7 +190,7 @@ public final class HeatMap {
         }
     }
 
-    private static boolean covers(float[] uv, int pixel) {
+    private static boolean covers(double[] uv, int pixel) {
         return uv != null && uv[3 * pixel + 2] != 0;
     }
 

@@ -70,8 +70,8 @@ public final class ImageComparison {
      * @return the statistics
      * @throws IllegalArgumentException when a size is not positive or an array's length does not match
      */
-    public static Comparison compare(int width, int height, int[] argbTest, float[] uvTest,
-                                     int[] argbReference, float[] uvReference) {
+    public static Comparison compare(int width, int height, int[] argbTest, double[] uvTest,
+                                     int[] argbReference, double[] uvReference) {
         return compare(width, height, argbTest, uvTest, argbReference, uvReference, null);
     }
 
@@ -93,8 +93,8 @@ public final class ImageComparison {
      * @return the statistics
      * @throws IllegalArgumentException when a size is not positive or an array's length does not match
      */
-    public static Comparison compare(int width, int height, int[] argbTest, float[] uvTest,
-                                     int[] argbReference, float[] uvReference, float[] displacementOut) {
+    public static Comparison compare(int width, int height, int[] argbTest, double[] uvTest,
+                                     int[] argbReference, double[] uvReference, float[] displacementOut) {
         return measure(width, height, argbTest, uvTest, argbReference, uvReference, null, displacementOut);
     }
 
@@ -116,16 +116,16 @@ public final class ImageComparison {
      * @return the statistics
      * @throws IllegalArgumentException when a size is not positive or an array's length does not match
      */
-    public static Comparison compare(int width, int height, int[] argbTest, float[] uvTest,
-                                     int[] argbReference, float[] uvReference, TexelToScreen exact,
+    public static Comparison compare(int width, int height, int[] argbTest, double[] uvTest,
+                                     int[] argbReference, double[] uvReference, TexelToScreen exact,
                                      float[] displacementOut) {
         return measure(width, height, argbTest, uvTest, argbReference, uvReference,
                 Objects.requireNonNull(exact, "exact"), displacementOut);
     }
 
     /** The comparison, with the exact displacement where {@code exact} is not null, else the estimate. */
-    private static Comparison measure(int width, int height, int[] argbTest, float[] uvTest,
-                                      int[] argbReference, float[] uvReference, TexelToScreen exact,
+    private static Comparison measure(int width, int height, int[] argbTest, double[] uvTest,
+                                      int[] argbReference, double[] uvReference, TexelToScreen exact,
                                       float[] displacementOut) {
         int pixels = checkSizes(width, height, argbTest, uvTest, argbReference, uvReference, displacementOut);
         float[] texelErrors = new float[pixels];
@@ -144,8 +144,8 @@ public final class ImageComparison {
             for (int x = 0; x < width; x++) {
                 int i = y * width + x;
                 int k = 3 * i;
-                float id = uvReference[k + 2];
-                float idTest = uvTest[k + 2];
+                double id = uvReference[k + 2];
+                double idTest = uvTest[k + 2];
                 float displacement = Float.NaN;
                 if (id != 0 || idTest != 0) {
                     double sRef = uvReference[k];
@@ -206,45 +206,46 @@ public final class ImageComparison {
      * The exact displacement (pixels, as a float) of pixel (x, y) showing texel coordinates (s, t) of
      * the triangle with UV-output id {@code id}; NaN where undefined.
      */
-    private static float exactAt(TexelToScreen exact, float id, double s, double t, int x, int y) {
+    private static float exactAt(TexelToScreen exact, double id, double s, double t, int x, int y) {
         float d = (float) exact.displacement(triangleOf(id), s, t, x, y);
         return d <= Float.MAX_VALUE ? d : Float.NaN;
     }
 
     /**
      * The 0-based triangle index of a UV-output id; -1 (no triangle) where the id is not a whole number
-     * that a float holds exactly, so that a rounded id never picks a wrong triangle.
+     * from 1 to 2^31 - 1 (the in-memory buffer holds every int id exactly; a non-integer or larger one
+     * never picks a wrong triangle).
      */
-    private static int triangleOf(float id) {
-        return id >= 1 && id < 0x1p24f && id == (int) id ? (int) id - 1 : -1;
+    private static int triangleOf(double id) {
+        return id >= 1 && id < 0x1p31 && id == (int) id ? (int) id - 1 : -1;
     }
 
     /**
      * Only the estimated displacement of every pixel (see
-     * {@link #compare(int, int, int[], float[], int[], float[], float[])}), without the statistics.
+     * {@link #compare(int, int, int[], double[], int[], double[], float[])}), without the statistics.
      *
      * @param displacementOut {@code width * height} floats: pixels, NaN where undefined
      */
-    public static void displacements(int width, int height, float[] uvTest, float[] uvReference,
+    public static void displacements(int width, int height, double[] uvTest, double[] uvReference,
                                      float[] displacementOut) {
         perPixel(width, height, uvTest, uvReference, null, displacementOut);
     }
 
     /**
      * Only the exact displacement of every pixel (see
-     * {@link #compare(int, int, int[], float[], int[], float[], TexelToScreen, float[])}), without the
+     * {@link #compare(int, int, int[], double[], int[], double[], TexelToScreen, float[])}), without the
      * statistics: what a live heat map or a pixel inspector needs each frame, at a fraction of the cost.
      *
      * @param exact           the frame's texel-to-screen maps; not null
      * @param displacementOut {@code width * height} floats: pixels, NaN where undefined
      */
-    public static void displacements(int width, int height, float[] uvTest, float[] uvReference, TexelToScreen exact,
+    public static void displacements(int width, int height, double[] uvTest, double[] uvReference, TexelToScreen exact,
                                      float[] displacementOut) {
         perPixel(width, height, uvTest, uvReference, Objects.requireNonNull(exact, "exact"), displacementOut);
     }
 
     /** Per-pixel displacements, exact where {@code exact} is not null, else estimated. */
-    private static void perPixel(int width, int height, float[] uvTest, float[] uvReference, TexelToScreen exact,
+    private static void perPixel(int width, int height, double[] uvTest, double[] uvReference, TexelToScreen exact,
                                  float[] displacementOut) {
         long pixels = (long) width * height;
         if (width < 1 || height < 1 || uvTest.length != 3 * pixels || uvReference.length != 3 * pixels
@@ -255,11 +256,11 @@ public final class ImageComparison {
             for (int x = 0; x < width; x++) {
                 int i = y * width + x;
                 int k = 3 * i;
-                float id = uvReference[k + 2];
+                double id = uvReference[k + 2];
                 float displacement = Float.NaN;
                 if (id != 0 && id == uvTest[k + 2]) {
-                    double ds = (double) uvTest[k] - uvReference[k];
-                    double dt = (double) uvTest[k + 1] - uvReference[k + 1];
+                    double ds = uvTest[k] - uvReference[k];
+                    double dt = uvTest[k + 1] - uvReference[k + 1];
                     if (Double.isFinite(ds + dt)) {
                         displacement = exact == null
                                 ? displacementAt(uvReference, k, id, x, y, width, height, ds, dt)
@@ -276,7 +277,7 @@ public final class ImageComparison {
      * through the reference's Jacobian from neighbours drawn by the same triangle; NaN where an axis
      * has no such neighbour or the Jacobian is singular.
      */
-    private static float displacementAt(float[] uvReference, int k, float id, int x, int y, int width, int height,
+    private static float displacementAt(double[] uvReference, int k, double id, int x, int y, int width, int height,
                                         double ds, double dt) {
         int rowStride = 3 * width;
         boolean left = x > 0 && uvReference[k - 1] == id;
@@ -295,13 +296,13 @@ public final class ImageComparison {
 
     /**
      * Derivative per pixel of the value at {@code uv[k]} along the axis whose neighbours are
-     * {@code stride} floats away: central where both neighbours qualify, else one-sided.
+     * {@code stride} values away: central where both neighbours qualify, else one-sided.
      */
-    private static double derivative(float[] uv, int k, int stride, boolean previous, boolean next) {
+    private static double derivative(double[] uv, int k, int stride, boolean previous, boolean next) {
         if (previous && next) {
-            return ((double) uv[k + stride] - uv[k - stride]) * 0.5;
+            return (uv[k + stride] - uv[k - stride]) * 0.5;
         }
-        return next ? (double) uv[k + stride] - uv[k] : (double) uv[k] - uv[k - stride];
+        return next ? uv[k + stride] - uv[k] : uv[k] - uv[k - stride];
     }
 
     /**
@@ -326,8 +327,8 @@ public final class ImageComparison {
      * Through int conversion where that is exact, as it measured several times faster here than
      * {@link Math#floor}; beyond 2^30 texels {@code Math.floor} itself.
      */
-    private static boolean sameFloor(float a, float b) {
-        if (Math.abs(a) < 0x1p30f && Math.abs(b) < 0x1p30f) {
+    private static boolean sameFloor(double a, double b) {
+        if (Math.abs(a) < 0x1p30 && Math.abs(b) < 0x1p30) {
             int floorA = (int) a;
             int floorB = (int) b;
             // (int) truncates toward zero: step down for negative non-integers.
@@ -352,8 +353,8 @@ public final class ImageComparison {
         return Math.sqrt(sum / (3.0 * argbTest.length));
     }
 
-    private static int checkSizes(int width, int height, int[] argbTest, float[] uvTest,
-                                  int[] argbReference, float[] uvReference, float[] displacementOut) {
+    private static int checkSizes(int width, int height, int[] argbTest, double[] uvTest,
+                                  int[] argbReference, double[] uvReference, float[] displacementOut) {
         if (width < 1 || height < 1 || 3L * width * height > Integer.MAX_VALUE) {
             throw new IllegalArgumentException("image size " + width + "x" + height + " is not supported");
         }

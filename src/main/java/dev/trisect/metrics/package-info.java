@@ -6,7 +6,7 @@
  * geometry).
  *
  * <p>Everything here works on plain arrays, row 0 at the top: colour images as {@code int[]} ARGB,
- * {@code width * height}; UV buffers as {@code float[]}, {@code 3 * width * height}, pixel (x, y) at
+ * {@code width * height}; UV buffers as {@code double[]}, {@code 3 * width * height}, pixel (x, y) at
  * {@code 3 * (y * width + x)} holding {@code [s, t, id]} — the texel coordinates
  * {@code (u * texWidth, v * texHeight)} the pixel was textured with (before wrapping) and the triangle
  * index + 1 (0 where nothing covers the pixel), as in the "UV output" of the rendering conventions.

@@ -64,7 +64,7 @@ final class FilteredSpans {
         int width = frame.width();
         int[] color = frame.color();
         float[] depth = frame.depth();
-        float[] uv = frame.uv();
+        double[] uv = frame.uv();
         int[] texels = mips.texels(0);
         int tw = mips.width(0);
         int th = mips.height(0);
@@ -88,8 +88,8 @@ final class FilteredSpans {
                     double t = (tRow + tDx * x) * rq;
                     color[i] = Sampler.bilinear(texels, tw, th, Sampler.position(s), Sampler.position(t));
                     if (uv != null) {
-                        uv[3 * i] = (float) s;
-                        uv[3 * i + 1] = (float) t;
+                        uv[3 * i] = s;
+                        uv[3 * i + 1] = t;
                         uv[3 * i + 2] = uvId;
                     }
                     written++;
@@ -123,7 +123,7 @@ final class FilteredSpans {
         int width = frame.width();
         int[] color = frame.color();
         float[] depth = frame.depth();
-        float[] uv = frame.uv();
+        double[] uv = frame.uv();
         long written = 0;
         int[] sp = r.spans;
         for (int y = r.rowStart, j = 0; y < r.rowEnd; y++, j += 2) {
@@ -156,8 +156,8 @@ final class FilteredSpans {
                     }
                     color[i] = c;
                     if (uv != null) {
-                        uv[3 * i] = (float) s;
-                        uv[3 * i + 1] = (float) t;
+                        uv[3 * i] = s;
+                        uv[3 * i + 1] = t;
                         uv[3 * i + 2] = uvId;
                     }
                     written++;
@@ -187,7 +187,7 @@ final class FilteredSpans {
         int width = frame.width();
         int[] color = frame.color();
         float[] depth = frame.depth();
-        float[] uv = frame.uv();
+        double[] uv = frame.uv();
         int level2 = weight == 0 ? level : level + 1;
         int[] texels = mips.texels(level);
         int tw = mips.width(level);
@@ -238,8 +238,8 @@ final class FilteredSpans {
                     }
                     color[i] = c;
                     if (uv != null) {
-                        uv[3 * i] = (float) (s0 / FIXED_SCALE);
-                        uv[3 * i + 1] = (float) (t0 / FIXED_SCALE);
+                        uv[3 * i] = s0 / FIXED_SCALE;
+                        uv[3 * i + 1] = t0 / FIXED_SCALE;
                         uv[3 * i + 2] = uvId;
                     }
                     written++;

@@ -7,15 +7,18 @@ package dev.trisect.raster;
  * Depth holds {@code 1/w} (w the view depth), which is linear in screen space and larger for nearer
  * surfaces; it is cleared to 0 (infinitely far), and a fragment passes when its {@code 1/w} is
  * strictly larger — the same order as OpenGL's {@code GL_LESS} on window z. The UV output holds three
- * floats a pixel: texel coordinates s = u * width and t = v * height before wrapping, and the input
- * triangle's index + 1 (0 where nothing was drawn).
+ * doubles a pixel: texel coordinates s = u * width and t = v * height before wrapping, and the input
+ * triangle's index + 1 (0 where nothing was drawn). Doubles, not the floats of the UV file, because
+ * the exact displacement maps them back to the screen: where one texel covers hundreds of pixels and
+ * s is in the thousands, a float's rounding of s alone moves the point by tenths of a pixel. The file
+ * ({@code render --uv-out}) still stores floats, rounded when written.
  */
 public final class Framebuffer {
     private final int width;
     private final int height;
     private final int[] color;
     private final float[] depth;
-    private float[] uv;
+    private double[] uv;
 
     /**
      * @param width  pixels, &gt;= 1
@@ -51,15 +54,15 @@ public final class Framebuffer {
         return depth;
     }
 
-    /** The UV output (3 floats a pixel), or null when it is not being recorded. */
-    public float[] uv() {
+    /** The UV output (3 doubles a pixel: s, t in texels, id), or null when it is not being recorded. */
+    public double[] uv() {
         return uv;
     }
 
     /** Starts or stops recording the UV output; the buffer is kept once made. */
     public void recordUv(boolean on) {
         if (on && uv == null) {
-            uv = new float[3 * width * height];
+            uv = new double[3 * width * height];
         } else if (!on) {
             uv = null;
         }
@@ -75,7 +78,7 @@ public final class Framebuffer {
         java.util.Arrays.fill(color, from, to, background | 0xFF000000);
         java.util.Arrays.fill(depth, from, to, 0f);
         if (uv != null) {
-            java.util.Arrays.fill(uv, 3 * from, 3 * to, 0f);
+            java.util.Arrays.fill(uv, 3 * from, 3 * to, 0.0);
         }
     }
 }

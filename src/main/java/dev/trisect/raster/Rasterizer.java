@@ -380,7 +380,7 @@ public final class Rasterizer {
         int width = frame.width();
         int[] color = frame.color();
         float[] depth = frame.depth();
-        float[] uv = frame.uv();
+        double[] uv = frame.uv();
         int[] texels = texture.argb();
         int tw = texture.width();
         int th = texture.height();
@@ -418,8 +418,8 @@ public final class Rasterizer {
                     int rowFromBottom = pot ? ti & hMask : Math.floorMod(ti, th);
                     color[i] = texels[(topRow - rowFromBottom) * tw + column] | 0xFF000000;
                     if (uv != null) {
-                        uv[3 * i] = (float) s;
-                        uv[3 * i + 1] = (float) t;
+                        uv[3 * i] = s;
+                        uv[3 * i + 1] = t;
                         uv[3 * i + 2] = uvId;
                     }
                     written++;
@@ -453,7 +453,7 @@ public final class Rasterizer {
         int width = frame.width();
         int[] color = frame.color();
         float[] depth = frame.depth();
-        float[] uv = frame.uv();
+        double[] uv = frame.uv();
         int[] texels = texture.argb();
         int tw = texture.width();
         int th = texture.height();
@@ -488,8 +488,8 @@ public final class Rasterizer {
                     int rowFromBottom = pot ? ti & hMask : Math.floorMod(ti, th);
                     color[i] = texels[(topRow - rowFromBottom) * tw + column] | 0xFF000000;
                     if (uv != null) {
-                        uv[3 * i] = (float) (s / FIXED_SCALE);
-                        uv[3 * i + 1] = (float) (t / FIXED_SCALE);
+                        uv[3 * i] = s / FIXED_SCALE;
+                        uv[3 * i + 1] = t / FIXED_SCALE;
                         uv[3 * i + 2] = uvId;
                     }
                     written++;

@@ -47,7 +47,7 @@ final class PixelInspector {
                               Texture[] textures, int[] triangleMaterials, TextureFilter filter, boolean perspective,
                               int x, int y) {
         int i = y * frame.width() + x;
-        float[] uv = frame.uv();
+        double[] uv = frame.uv();
         int id = (int) uv[3 * i + 2] - 1;
         int argb = frame.color()[i];
         if (id < 0) {
@@ -57,7 +57,7 @@ final class PixelInspector {
         double q = frame.depth()[i];
         double s = uv[3 * i];
         double t = uv[3 * i + 1];
-        float[] ref = reference == null ? null : reference.uv();
+        double[] ref = reference == null ? null : reference.uv();
         boolean same = ref != null && (int) ref[3 * i + 2] - 1 == id;
         double refS = same ? ref[3 * i] : Double.NaN;
         double refT = same ? ref[3 * i + 1] : Double.NaN;

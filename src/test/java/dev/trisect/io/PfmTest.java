@@ -56,6 +56,33 @@ class PfmTest {
         assertArrayEquals(uv, image.data());
     }
 
+    /** A framebuffer's double UV output is written as the floats it rounds to, byte for byte. */
+    @Test
+    void doublesAreWrittenAsTheirRoundedFloats() throws IOException {
+        float[] rounded = new float[3 * W * H];
+        double[] precise = new double[3 * W * H];
+        java.util.Random rnd = new java.util.Random(6);
+        for (int i = 0; i < precise.length; i++) {
+            precise[i] = i % 3 == 2 ? i / 3 + 1 : (rnd.nextDouble() - 0.3) * 5000;
+            rounded[i] = (float) precise[i];
+        }
+        precise[7] = Double.NaN;
+        rounded[7] = Float.NaN;
+        Path fromFloats = dir.resolve("f.pfm");
+        Path fromDoubles = dir.resolve("d.pfm");
+        Pfm.write(fromFloats, W, H, rounded);
+        try (OutputBatch batch = new OutputBatch()) {
+            Pfm.write(batch, fromDoubles, W, H, precise);
+            batch.commit();
+        }
+        assertArrayEquals(Files.readAllBytes(fromFloats), Files.readAllBytes(fromDoubles));
+        assertThrows(IllegalArgumentException.class, () -> {
+            try (OutputBatch batch = new OutputBatch()) {
+                Pfm.write(batch, dir.resolve("x.pfm"), W, H, new double[3 * W * H - 1]);
+            }
+        });
+    }
+
     @Test
     void fileLayoutIsLittleEndianBottomRowFirst() throws IOException {
         Path file = dir.resolve("uv.pfm");

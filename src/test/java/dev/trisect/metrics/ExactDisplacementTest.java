@@ -161,8 +161,8 @@ class ExactDisplacementTest {
         Comparison c = ImageComparison.compare(W, H, perspective.color(), perspective.uv(), perspective.color(),
                 perspective.uv(), new TexelToScreen(mesh, TEXTURE, VP, VIEWPORT), null);
         assertTrue(c.comparedPixels() > W * H / 8);
-        // Only the float rounding of the stored texel coordinates remains.
-        assertTrue(c.maxDisplacement() < 2e-3, "perspective path off by " + c.maxDisplacement() + " px");
+        // The texel coordinates are kept in doubles: only double rounding remains.
+        assertTrue(c.maxDisplacement() < 1e-4, "perspective path off by " + c.maxDisplacement() + " px");
     }
 
     @Test
@@ -172,7 +172,7 @@ class ExactDisplacementTest {
         Mesh mesh = triangle(uvs);
         TexelToScreen maps = new TexelToScreen(mesh, TEXTURE, VP, VIEWPORT);
         Random rnd = new Random(6);
-        float[] uv = new float[3 * W * H];
+        double[] uv = new double[3 * W * H];
         double[] expected = new double[W * H];
         for (int i = 0; i < W * H; i++) {
             int x = i % W;
@@ -185,7 +185,7 @@ class ExactDisplacementTest {
             double s = (b0 * uvs[0][0] + b1 * uvs[1][0] + b2 * uvs[2][0]) * 64;
             double t = (b0 * uvs[0][1] + b1 * uvs[1][1] + b2 * uvs[2][1]) * 48;
             UvFields.set(uv, W, x, y, s, t, 1);
-            // The float UV buffer rounds (s, t); the expected point is the one the stored values name.
+            // The expected point is the one the stored values name (doubles: (s, t) as computed).
             double fs = uv[3 * i];
             double ft = uv[3 * i + 1];
             double f1 = solve(uvs, fs / 64, ft / 48, 1);
@@ -193,7 +193,7 @@ class ExactDisplacementTest {
             Vec3 q = CORNERS[0].scale(1 - f1 - f2).add(CORNERS[1].scale(f1)).add(CORNERS[2].scale(f2));
             double[] c = clip(q);
             expected[i] = Math.hypot(VIEWPORT.screenX(c[0], c[3]) - (x + 0.5), VIEWPORT.screenY(c[1], c[3]) - (y + 0.5));
-            assertTrue(p.sub(q).length() < 1e-3, "float rounding moves the point little");
+            assertTrue(p.sub(q).length() < 1e-9, "storing moves the point by rounding only");
         }
         float[] out = new float[W * H];
         int[] argb = new int[W * H];
@@ -257,7 +257,7 @@ class ExactDisplacementTest {
         assertTrue(Double.isNaN(maps.displacement(-1, 10, 10, 0, 0)));
         assertFalse(maps.isDegenerate(5));
         // A pixel whose id names no triangle of the mesh is compared (same id in both) but has none.
-        float[] uv = new float[3 * W * H];
+        double[] uv = new double[3 * W * H];
         UvFields.set(uv, W, 3, 4, 10, 10, 7);
         int[] argb = new int[W * H];
         Comparison c = ImageComparison.compare(W, H, argb, uv, argb, uv, maps, null);

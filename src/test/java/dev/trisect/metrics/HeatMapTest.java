@@ -90,8 +90,8 @@ class HeatMapTest {
     void renderUsesTheRampAndMarksUndefinedAndUncoveredPixels() {
         float nan = Float.NaN;
         float[] displacement = {0, 0.5f, 1, 7, nan, nan, nan, -1};
-        float[] uvTest = new float[24];
-        float[] uvReference = new float[24];
+        double[] uvTest = new double[24];
+        double[] uvReference = new double[24];
         uvTest[3 * 4 + 2] = 5; // pixel 4 covered by the test only
         uvReference[3 * 5 + 2] = 5; // pixel 5 by the reference only; pixel 6 by neither
         int[] out = new int[8];
@@ -116,7 +116,7 @@ class HeatMapTest {
         assertThrows(IllegalArgumentException.class, () -> HeatMap.colour(1, Double.NaN));
         assertThrows(IllegalArgumentException.class, () -> HeatMap.legendStops(Double.POSITIVE_INFINITY));
         assertThrows(IllegalArgumentException.class, () -> HeatMap.render(d, 2, 3, 1, out));
-        assertThrows(IllegalArgumentException.class, () -> HeatMap.render(d, new float[6], null, 2, 2, 1, out));
+        assertThrows(IllegalArgumentException.class, () -> HeatMap.render(d, new double[6], null, 2, 2, 1, out));
     }
 
     /** Relative luminance (Rec. 709 weights on linearised sRGB), 0..1. */

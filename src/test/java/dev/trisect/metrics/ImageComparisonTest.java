@@ -19,13 +19,13 @@ class ImageComparisonTest {
         int w = 57;
         int h = 41;
         java.util.Random rnd = new java.util.Random(5);
-        float[] ref = new float[3 * w * h];
-        float[] test = new float[3 * w * h];
+        double[] ref = new double[3 * w * h];
+        double[] test = new double[3 * w * h];
         for (int y = 0; y < h; y++) {
             for (int x = 0; x < w; x++) {
                 int k = 3 * (y * w + x);
                 // Three regions, a hole, a projective map, and a test render off by a little noise.
-                float id = (x + y) % 19 == 0 ? 0 : x < 20 ? 1 : y < 25 ? 2 : 3;
+                double id = (x + y) % 19 == 0 ? 0 : x < 20 ? 1 : y < 25 ? 2 : 3;
                 double q = 1 / (1 + 0.03 * x + 0.05 * y);
                 ref[k] = (float) (40 * x * q);
                 ref[k + 1] = (float) (25 * y * q - 7);
@@ -53,7 +53,7 @@ class ImageComparisonTest {
         int w = 32;
         int h = 24;
         UvFields.Map map = UvFields.affine(2, 0.5, 3, -0.3, 1.7, -10);
-        float[] uv = UvFields.buffer(w, h, TWO_TRIANGLES, map, 0, 0);
+        double[] uv = UvFields.buffer(w, h, TWO_TRIANGLES, map, 0, 0);
         int[] argb = new int[w * h];
         for (int i = 0; i < argb.length; i++) {
             argb[i] = 0xFF000000 | (i * 0x9E3779B1) >>> 8;
@@ -85,8 +85,8 @@ class ImageComparisonTest {
         UvFields.Map left = UvFields.affine(2, 0.5, 0, -0.3, 1.7, 0);
         UvFields.Map right = UvFields.affine(-1.2, 0.4, 50, 0.9, 2.2, -7);
         // Each pixel keeps its own triangle's map, also where the shift crosses the shared edge.
-        float[] reference = new float[3 * w * h];
-        float[] test = new float[3 * w * h];
+        double[] reference = new double[3 * w * h];
+        double[] test = new double[3 * w * h];
         double[] st = new double[2];
         for (int y = 0; y < h; y++) {
             for (int x = 0; x < w; x++) {
@@ -133,8 +133,8 @@ class ImageComparisonTest {
         double dx = 0.3;
         double dy = -0.4;
         UvFields.Map map = UvFields.affine(2, 0.5, 0, -0.3, 1.7, 0);
-        float[] reference = UvFields.oneTriangle(w, h, map, 0, 0);
-        float[] test = UvFields.oneTriangle(w, h, map, dx, dy);
+        double[] reference = UvFields.oneTriangle(w, h, map, 0, 0);
+        double[] test = UvFields.oneTriangle(w, h, map, dx, dy);
         int[] argb = UvFields.solid(w, h, GREY);
 
         Comparison c = ImageComparison.compare(w, h, argb, test, argb, reference);
@@ -156,8 +156,8 @@ class ImageComparisonTest {
         };
         double dx = 0.02;
         double dy = -0.01;
-        float[] reference = UvFields.oneTriangle(w, h, map, 0, 0);
-        float[] test = UvFields.oneTriangle(w, h, map, dx, dy);
+        double[] reference = UvFields.oneTriangle(w, h, map, 0, 0);
+        double[] test = UvFields.oneTriangle(w, h, map, dx, dy);
         int[] argb = UvFields.solid(w, h, GREY);
 
         Comparison c = ImageComparison.compare(w, h, argb, test, argb, reference);
@@ -174,8 +174,8 @@ class ImageComparisonTest {
         int h = 2;
         int[] refIds = {1, 1, 1, 0, 2, 1, 1, 0, 0, 3};
         int[] testIds = {1, 1, 1, 1, 2, 1, 1, 1, 0, 4};
-        float[] reference = new float[3 * w * h];
-        float[] test = new float[3 * w * h];
+        double[] reference = new double[3 * w * h];
+        double[] test = new double[3 * w * h];
         for (int i = 0; i < w * h; i++) {
             int x = i % w;
             int y = i / w;
@@ -211,8 +211,8 @@ class ImageComparisonTest {
     void nonFiniteTexelCoordinatesCountAsOther() {
         int w = 3;
         int h = 1;
-        float[] reference = UvFields.oneTriangle(w, h, UvFields.IDENTITY, 0, 0);
-        float[] test = reference.clone();
+        double[] reference = UvFields.oneTriangle(w, h, UvFields.IDENTITY, 0, 0);
+        double[] test = reference.clone();
         test[3] = Float.NaN;
         reference[6] = Float.POSITIVE_INFINITY;
         int[] argb = UvFields.solid(w, h, GREY);
@@ -229,8 +229,8 @@ class ImageComparisonTest {
         int w = 40;
         int h = 25;
         // Identity Jacobian, so each pixel's displacement equals its texel error: a permutation of 1..1000.
-        float[] reference = UvFields.oneTriangle(w, h, UvFields.IDENTITY, 0, 0);
-        float[] test = reference.clone();
+        double[] reference = UvFields.oneTriangle(w, h, UvFields.IDENTITY, 0, 0);
+        double[] test = reference.clone();
         for (int i = 0; i < w * h; i++) {
             test[3 * i] += (i * 357) % 1000 + 1;
         }
@@ -266,8 +266,8 @@ class ImageComparisonTest {
             {-3e9, 0.5, -3e9, 0.5, 0},
         };
         int w = cases.length;
-        float[] reference = new float[3 * w];
-        float[] test = new float[3 * w];
+        double[] reference = new double[3 * w];
+        double[] test = new double[3 * w];
         for (int x = 0; x < w; x++) {
             UvFields.set(reference, w, x, 0, cases[x][0], cases[x][1], 1);
             UvFields.set(test, w, x, 0, cases[x][2], cases[x][3], 1);
@@ -284,7 +284,7 @@ class ImageComparisonTest {
     void colourRmseAndPsnrByHand() {
         int[] test = {0xFF0A141E, 0x00FFFFFF};
         int[] reference = {0xFF0D101E, 0xFFFFFFFF}; // differences 3, -4, 0; alpha ignored
-        float[] nothing = new float[6];
+        double[] nothing = new double[6];
 
         Comparison c = ImageComparison.compare(2, 1, test, nothing, reference, nothing.clone());
 
@@ -354,14 +354,14 @@ class ImageComparisonTest {
     @Test
     void mismatchedSizesAreRejected() {
         int[] argb = new int[4];
-        float[] uv = new float[12];
+        double[] uv = new double[12];
         assertThrows(IllegalArgumentException.class,
-                () -> ImageComparison.compare(2, 2, argb, new float[9], argb, uv));
+                () -> ImageComparison.compare(2, 2, argb, new double[9], argb, uv));
         assertThrows(IllegalArgumentException.class,
                 () -> ImageComparison.compare(2, 2, new int[3], uv, argb, uv));
         assertThrows(IllegalArgumentException.class,
                 () -> ImageComparison.compare(2, 2, argb, uv, argb, uv, new float[3]));
         assertThrows(IllegalArgumentException.class,
-                () -> ImageComparison.compare(0, 2, new int[0], new float[0], new int[0], new float[0]));
+                () -> ImageComparison.compare(0, 2, new int[0], new double[0], new int[0], new double[0]));
     }
 }

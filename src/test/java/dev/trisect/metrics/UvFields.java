@@ -27,8 +27,8 @@ final class UvFields {
      * A UV buffer with the map evaluated at each pixel centre shifted by (dx, dy) pixels, so that the
      * texture appears moved by (-dx, -dy) on screen relative to the unshifted buffer.
      */
-    static float[] buffer(int w, int h, Ids ids, Map map, double dx, double dy) {
-        float[] uv = new float[3 * w * h];
+    static double[] buffer(int w, int h, Ids ids, Map map, double dx, double dy) {
+        double[] uv = new double[3 * w * h];
         double[] st = new double[2];
         for (int y = 0; y < h; y++) {
             for (int x = 0; x < w; x++) {
@@ -36,8 +36,8 @@ final class UvFields {
                 int id = ids.at(x, y);
                 if (id != 0) {
                     map.at(x + 0.5 + dx, y + 0.5 + dy, st);
-                    uv[k] = (float) st[0];
-                    uv[k + 1] = (float) st[1];
+                    uv[k] = st[0];
+                    uv[k + 1] = st[1];
                     uv[k + 2] = id;
                 }
             }
@@ -46,7 +46,7 @@ final class UvFields {
     }
 
     /** {@link #buffer} with one triangle, id 1, covering every pixel. */
-    static float[] oneTriangle(int w, int h, Map map, double dx, double dy) {
+    static double[] oneTriangle(int w, int h, Map map, double dx, double dy) {
         return buffer(w, h, (x, y) -> 1, map, dx, dy);
     }
 
@@ -54,10 +54,10 @@ final class UvFields {
     static final Map IDENTITY = affine(1, 0, 0, 0, 1, 0);
 
     /** Pixel (x, y)'s [s, t, id] written into a UV buffer of width w. */
-    static void set(float[] uv, int w, int x, int y, double s, double t, int id) {
+    static void set(double[] uv, int w, int x, int y, double s, double t, int id) {
         int k = 3 * (y * w + x);
-        uv[k] = (float) s;
-        uv[k + 1] = (float) t;
+        uv[k] = s;
+        uv[k + 1] = t;
         uv[k + 2] = id;
     }
 

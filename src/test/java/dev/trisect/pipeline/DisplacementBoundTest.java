@@ -41,39 +41,52 @@ class DisplacementBoundTest {
 
     /**
      * A square of side {@code 2 * half} on y = 0 centred under the origin, texture repeated once per
-     * {@code repeat} units, texel coordinates 0 at the centre (so that the float UV output stays
-     * precise near a camera above the centre).
+     * {@code repeat} units, texel coordinates 0 at the centre ({@link #offsetUvPlane()} has them large
+     * under the camera).
      */
     static Mesh plane(double half, double repeat) {
-        MeshBuilder b = new MeshBuilder();
         double r = half / repeat;
-        int p0 = b.position(-half, 0, half);
-        int p1 = b.position(half, 0, half);
-        int p2 = b.position(half, 0, -half);
-        int p3 = b.position(-half, 0, -half);
-        int t0 = b.uv(-r, -r);
-        int t1 = b.uv(r, -r);
-        int t2 = b.uv(r, r);
-        int t3 = b.uv(-r, r);
+        return quad(-half, half, half, -half, -r, -r, r, r);
+    }
+
+    /**
+     * Two triangles on y = 0 over x in [x0, x1], z from z0 to z1, with texture coordinates from
+     * (u0, v0) at (x0, z0) to (u1, v1) at (x1, z1).
+     */
+    private static Mesh quad(double x0, double x1, double z0, double z1, double u0, double v0, double u1, double v1) {
+        MeshBuilder b = new MeshBuilder();
+        int p0 = b.position(x0, 0, z0);
+        int p1 = b.position(x1, 0, z0);
+        int p2 = b.position(x1, 0, z1);
+        int p3 = b.position(x0, 0, z1);
+        int t0 = b.uv(u0, v0);
+        int t1 = b.uv(u1, v0);
+        int t2 = b.uv(u1, v1);
+        int t3 = b.uv(u0, v1);
         b.triangle(p0, p1, p2, t0, t1, t2);
         b.triangle(p0, p2, p3, t0, t2, t3);
         return b.build();
     }
 
+    /**
+     * The reviewer's plane (x +-10 km, z -0.01 to -10 km) with texel 0 at a far corner: under the camera
+     * s is about 5120 and t about 0 to 2560 texels (the reviewer's UVs 0..20 x 0..10 on a 512-texel
+     * texture, here 0..160 x 0..80 on the 64-texel one), where one texel covers hundreds of pixels. A
+     * float's rounding of s there moves the texture by tenths of a pixel, so this checks that the
+     * measurement is made from double texel coordinates.
+     */
+    static Mesh offsetUvPlane() {
+        return quad(-10_000, 10_000, -0.01, -10_000, 0, 0, 160, 80);
+    }
+
+    /** The reviewer's camera for {@link #offsetUvPlane()}: 1.6 m up, looking down to 3 m ahead. */
+    static Camera offsetUvPlaneCamera() {
+        return new Camera(new Vec3(0, 1.6, 0), new Vec3(0, 0, -3), Vec3.UP, 60, 0.01, 20000);
+    }
+
     /** Issue 6's floor: 80 m wide from z = +10 to z = -400, texture repeated 16 x 84 times. */
     static Mesh issueFloor() {
-        MeshBuilder b = new MeshBuilder();
-        int p0 = b.position(-40, 0, 10);
-        int p1 = b.position(40, 0, 10);
-        int p2 = b.position(40, 0, -400);
-        int p3 = b.position(-40, 0, -400);
-        int t0 = b.uv(0, 0);
-        int t1 = b.uv(16, 0);
-        int t2 = b.uv(16, 84);
-        int t3 = b.uv(0, 84);
-        b.triangle(p0, p1, p2, t0, t1, t2);
-        b.triangle(p0, p2, p3, t0, t2, t3);
-        return b.build();
+        return quad(-40, 40, 10, -400, 0, 0, 16, 84);
     }
 
     static Camera issueFloorCamera() {
@@ -150,6 +163,27 @@ class DisplacementBoundTest {
     @MethodSource("policies")
     void planeFromTheNearPlaneToTenKilometresAtFullHd(SplitPolicy policy) {
         checkAll("10 km plane", plane(10_000, 1), planeCamera(), 1920, 1080, policy, 0.05, 0.5, 16);
+    }
+
+    @ParameterizedTest
+    @MethodSource("policies")
+    void planeWithLargeTexelCoordinatesAtFullHd(SplitPolicy policy) {
+        checkAll("offset-UV plane", offsetUvPlane(), offsetUvPlaneCamera(), 1920, 1080, policy, 0.5);
+    }
+
+    /** The per-pixel path measured against itself: only double rounding remains, far below 1e-4 px. */
+    @Test
+    void perPixelPathOnLargeTexelCoordinatesMeasuresNearZero() {
+        Mesh mesh = offsetUvPlane();
+        Camera camera = offsetUvPlaneCamera();
+        Mat4 vp = camera.viewProjection(new Viewport(1920, 1080));
+        Framebuffer fb = new Framebuffer(1920, 1080);
+        fb.recordUv(true);
+        RENDERER.render(mesh, TEX, vp, RenderSettings.defaults().withCull(CullMode.NONE)
+                .withMode(RenderMode.PERSPECTIVE), fb);
+        ExactDisplacement.Result r = ExactDisplacement.measure(mesh, TEX, vp, fb);
+        assertTrue(r.pixels() > 1920 * 1080 / 2, "most of the frame is covered: " + r.pixels());
+        assertTrue(r.worst() <= 1e-4, "pixel " + r.worstX() + "," + r.worstY() + " is " + r.worst() + " px off");
     }
 
     @ParameterizedTest

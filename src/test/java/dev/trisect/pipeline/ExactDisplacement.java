@@ -24,7 +24,7 @@ final class ExactDisplacement {
     static Result measure(Mesh mesh, Texture[] textures, Mat4 viewProjection, Framebuffer fb) {
         int w = fb.width();
         int h = fb.height();
-        float[] uv = fb.uv();
+        double[] uv = fb.uv();
         Viewport vp = new Viewport(w, h);
         double worst = 0;
         int wx = -1;

@@ -36,7 +36,7 @@ class ImageErrorTest {
     /** Worst texel error and worst on-screen displacement (pixels) over all covered pixels. */
     private static double[] errors(RenderSettings settings) {
         Framebuffer fb = TestScenes.render(RENDERER, FLOOR, CAMERA, settings, W, H);
-        float[] uv = fb.uv();
+        double[] uv = fb.uv();
         double texel = 0;
         double displacement = 0;
         int covered = 0;
@@ -75,7 +75,7 @@ class ImageErrorTest {
                 mode(RenderMode.TESSELLATED).withTessellation(
                         TessellationSettings.defaults().withPolicy(SplitPolicy.ERROR).withMaxError(0.5))}) {
             Framebuffer fb = TestScenes.render(RENDERER, FLOOR, CAMERA, s, W, H);
-            float[] uv = fb.uv();
+            double[] uv = fb.uv();
             float[] metric = new float[W * H];
             ImageComparison.displacements(W, H, uv, uv, maps, metric);
             int checked = 0;

@@ -275,7 +275,7 @@ class FillRuleTest {
     @Test
     void perPixelFlagFillsAPieceExactlyAsThePerspectivePath() {
         Texture[] tex = {Texture.solid("grey", 0xFF808080)};
-        float[][] uv = new float[2][];
+        double[][] uv = new double[2][];
         for (int pass = 0; pass < 2; pass++) {
             ScreenTriangles t = new ScreenTriangles();
             // Depths 1 to 8 across the triangle: affine and perspective differ at almost every pixel.
