@@ -49,7 +49,7 @@ public final class BorderOverlay {
         long painted = 0;
         for (int n = from; n < to; n++) {
             int tri = order[n];
-            if (!depthPlane(triangles, tri)) {
+            if (style.onlyFallback() && !triangles.perPixel()[tri] || !depthPlane(triangles, tri)) {
                 continue;
             }
             colour = style.colouring() == BorderStyle.Colouring.YELLOW ? OverlayColours.of(triangles, tri)

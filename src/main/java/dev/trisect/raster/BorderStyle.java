@@ -9,8 +9,10 @@ import java.util.Locale;
  * @param fade      draw the outlines of small pieces translucent, in proportion to their area, so that
  *                  near the horizon, where pieces are a few pixels across, the texture still shows
  *                  through instead of a solid band of lines
+ * @param onlyFallback outline the fallback pieces alone (magenta): the demo's highlight of the
+ *                  triangles a cap stopped short, while it warns of them with the borders off
  */
-public record BorderStyle(Colouring colouring, boolean fade) {
+public record BorderStyle(Colouring colouring, boolean fade, boolean onlyFallback) {
     /** What an outline's colour says. */
     public enum Colouring {
         /** Every piece yellow. */
@@ -27,6 +29,16 @@ public record BorderStyle(Colouring colouring, boolean fade) {
         public String id() {
             return name().toLowerCase(Locale.ROOT);
         }
+    }
+
+    /** A style outlining every piece. */
+    public BorderStyle(Colouring colouring, boolean fade) {
+        this(colouring, fade, false);
+    }
+
+    /** Only the fallback pieces, in magenta. */
+    public static BorderStyle fallbackOnly() {
+        return new BorderStyle(Colouring.YELLOW, false, true);
     }
 
     public BorderStyle {

@@ -6,6 +6,7 @@ import dev.trisect.pipeline.RenderMode;
 import dev.trisect.texture.TextureFilter;
 import dev.trisect.pipeline.RenderSettings;
 import dev.trisect.raster.BorderStyle;
+import dev.trisect.tessellate.SplitPolicy;
 import dev.trisect.scene.Scene;
 import dev.trisect.scene.SceneLoader;
 import java.awt.BorderLayout;
@@ -75,6 +76,7 @@ final class DemoWindow {
     final Command freezeCommand;
     final Command borderColourCommand;
     final Command inspectorCommand;
+    final Command splitPolicyCommand;
     final Command stepCommand;
     final Command screenshotCommand;
     final Command openCommand;
@@ -113,6 +115,13 @@ final class DemoWindow {
                 + "(click to pin it): triangle, piece, split level, depth, texel coordinates in both paths, exact "
                 + "displacement, mip level and texel; with a crosshair and a magnifier",
                 KeyStroke.getKeyStroke(KeyEvent.VK_I, 0), c -> view.inspector(c.selected()));
+        splitPolicyCommand = Command.action("Split policy", "Switch the tessellated path's split policy between "
+                + "Edge (longest screen edge over Max edge) and Error (affine error bound over Max error)",
+                KeyStroke.getKeyStroke(KeyEvent.VK_P, 0), () -> {
+                    SplitPolicy next = state.settings().render().tessellation().policy() == SplitPolicy.EDGE
+                            ? SplitPolicy.ERROR : SplitPolicy.EDGE;
+                    update(s -> s.withRender(s.render().withTessellation(s.render().tessellation().withPolicy(next))));
+                });
         freezeCommand = Command.toggle("Freeze frame", "Stop on this frame: the camera and the comparison hold "
                 + "still so it can be inspected; settings still apply to it", KeyStroke.getKeyStroke(KeyEvent.VK_SPACE, 0),
                 c -> state.freeze.freeze(c.selected()));
@@ -158,6 +167,8 @@ final class DemoWindow {
         showFilter(state.settings().render().filter());
         borderColourCommand.putValue(Action.NAME, "Border colour: "
                 + state.settings().render().borderStyle().colouring().id());
+        splitPolicyCommand.putValue(Action.NAME, "Split policy: "
+                + state.settings().render().tessellation().policy().name().toLowerCase(Locale.ROOT));
 
         frame.setJMenuBar(menus());
         // A gap between message and pace, so that a long message is cut short rather than run into it.
@@ -249,6 +260,8 @@ final class DemoWindow {
     /** Replaces the view settings; the render thread uses them from its next frame. */
     void update(UnaryOperator<ViewSettings> change) {
         state.settings(change.apply(state.settings()));
+        splitPolicyCommand.putValue(Action.NAME, "Split policy: "
+                + state.settings().render().tessellation().policy().name().toLowerCase(Locale.ROOT));
         ViewKind view = state.settings().view();
         for (Command c : viewCommands) {
             c.show(c == viewCommands.get(view.ordinal()));
@@ -326,6 +339,8 @@ final class DemoWindow {
             group.add(item);
             render.add(item);
         }
+        render.addSeparator();
+        render.add(new JMenuItem(splitPolicyCommand));
         bar.add(file);
         bar.add(viewMenu);
         bar.add(render);
@@ -337,7 +352,7 @@ final class DemoWindow {
         InputMap in = root.getInputMap(JComponent.WHEN_IN_FOCUSED_WINDOW);
         ActionMap act = root.getActionMap();
         List<Command> commands = new ArrayList<>(List.of(devToolsCommand, bordersCommand, orbitCommand, resetCommand,
-                filterCommand, freezeCommand, stepCommand, borderColourCommand, inspectorCommand,
+                filterCommand, freezeCommand, stepCommand, borderColourCommand, inspectorCommand, splitPolicyCommand,
                 screenshotCommand, openCommand, exitCommand));
         commands.addAll(modeCommands);
         commands.addAll(viewCommands);

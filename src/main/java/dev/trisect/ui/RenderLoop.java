@@ -10,6 +10,7 @@ import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.FrameStats;
 import dev.trisect.pipeline.RenderMode;
 import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.raster.BorderStyle;
 import dev.trisect.raster.Framebuffer;
 import dev.trisect.scene.Camera;
 import dev.trisect.scene.Scene;
@@ -263,8 +264,16 @@ final class RenderLoop implements Runnable {
             back.inspectNanos = System.nanoTime() - t0;
         }
         compareStageNanos = compareNanos;
-        back.overlayNanos = settings.render().borders() && settings.view() != ViewKind.DIFFERENCE
-                ? renderer.drawBorders(fb, settings.render().borderStyle(), settings.render().tessellation()) : 0;
+        if (settings.view() == ViewKind.DIFFERENCE) {
+            back.overlayNanos = 0;
+        } else if (settings.render().borders()) {
+            back.overlayNanos = renderer.drawBorders(fb, settings.render().borderStyle(), settings.render().tessellation());
+        } else if (back.stats.piecesFallback() > 0) {
+            // A cap was reached: the status bar says so, and the pieces concerned are outlined even without B.
+            back.overlayNanos = renderer.drawBorders(fb, BorderStyle.fallbackOnly(), settings.render().tessellation());
+        } else {
+            back.overlayNanos = 0;
+        }
         if (settings.view() == ViewKind.DIFFERENCE) {
             HeatMap.render(displacement, fb.uv(), reference.uv(), fw, fh, settings.heatScale(), fb.color());
         } else if (settings.view() == ViewKind.SPLIT) {

@@ -429,4 +429,17 @@ class DemoWindowGuiTest {
         press(KeyEvent.VK_I);
         waitFor("the inspector off", () -> window.state().inspected() < 0);
     }
+
+    @Test
+    @Order(14)
+    void pSwitchesTheSplitPolicyAndTheMenuNamesIt() throws Exception {
+        var start = window.state().settings().render().tessellation().policy();
+        press(KeyEvent.VK_P);
+        waitFor("the other policy", () -> window.state().settings().render().tessellation().policy() != start);
+        String name = onEdt(() -> (String) window.splitPolicyCommand.getValue(javax.swing.Action.NAME));
+        assertTrue(name.endsWith(window.state().settings().render().tessellation().policy().name()
+                .toLowerCase(Locale.ROOT)), name);
+        press(KeyEvent.VK_P);
+        waitFor("back", () -> window.state().settings().render().tessellation().policy() == start);
+    }
 }
