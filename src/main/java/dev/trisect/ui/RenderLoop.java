@@ -243,7 +243,10 @@ final class RenderLoop implements Runnable {
                     exact, displacement);
             compareMs = (System.nanoTime() - t0) / 1e6;
             lastCompare = now;
-            state.measurement(new DemoState.Measurement(c, back.serial, camera, settings, fw, fh, System.nanoTime()));
+            // The settings the frame was drawn with (the budget may have chosen the threshold), so that the
+            // copied compare command reproduces these numbers.
+            state.measurement(new DemoState.Measurement(c, back.serial, camera, settings.withRender(render), fw, fh,
+                    System.nanoTime()));
         } else if (settings.view() == ViewKind.DIFFERENCE) {
             // Between measurements the heat map needs only the displacements, at a fraction of the cost.
             ImageComparison.displacements(fw, fh, fb.uv(), reference.uv(),

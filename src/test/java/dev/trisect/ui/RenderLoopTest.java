@@ -119,6 +119,41 @@ class RenderLoopTest {
     }
 
     @Test
+    void underABudgetTheCopiedCommandCarriesTheChosenThreshold() throws Exception {
+        DemoState state = new DemoState(DemoScenes.demo());
+        state.viewSize(320, 180);
+        // A generous budget: the controller refines below the user's threshold (its ceiling).
+        state.budget(new DemoState.Budget(true, 1000));
+        state.toolsOpen(true);
+        TripleBuffer buffers = new TripleBuffer();
+        RenderLoop loop = new RenderLoop(state, buffers, () -> { }, 2);
+        Thread t = new Thread(loop, "test-render");
+        t.start();
+        DemoState.Measurement m = null;
+        try {
+            // Bounded: a few measurements, so that the controller has moved off the user's threshold.
+            for (int poll = 0; poll < 1500; poll++) {
+                m = state.measurement();
+                if (m != null && state.progress().frames() > 12) {
+                    break;
+                }
+                Thread.sleep(20);
+            }
+        } finally {
+            loop.stop();
+            t.join(5000);
+        }
+        assertNotNull(m);
+        List<String> args = CliArgs.compare(state.scene(), m);
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        assertEquals(0, Cli.run(new PrintWriter(out, true), new PrintWriter(err, true), args.toArray(String[]::new)),
+                err.toString());
+        assertEquals(m.comparison().maxDisplacement(), number(out.toString(), "max_displacement"), 0.0);
+        assertEquals(m.comparison().psnrDb(), number(out.toString(), "psnr_db"), 0.0);
+    }
+
+    @Test
     void minimizedViewDrawsNothingAndResumes() throws Exception {
         DemoState state = new DemoState(DemoScenes.floor());
         state.viewSize(0, 0);
