@@ -75,8 +75,12 @@ final class FrameOptions {
 
     /** Prints the built-in scenes. */
     static void listScenes(java.io.PrintWriter out) {
+        int width = 0;
         for (String name : DemoScenes.names()) {
-            out.printf("%-8s %s%n", name, DemoScenes.describe(name));
+            width = Math.max(width, name.length());
+        }
+        for (String name : DemoScenes.names()) {
+            out.printf("%-" + width + "s  %s%n", name, DemoScenes.describe(name));
         }
         out.flush();
     }

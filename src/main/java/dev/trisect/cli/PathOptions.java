@@ -63,20 +63,27 @@ final class PathOptions {
     @Option(names = "--borders", description = "Draw the outline of every piece filled (default: off).")
     boolean borders;
 
-    @Option(names = "--border-colour", paramLabel = "yellow|depth|bound", defaultValue = "yellow",
+    @Option(names = "--border-colour", paramLabel = "yellow|depth|bound",
             description = "Outline colour with --borders: yellow; by split depth (cyan unsplit to red at --max-depth); "
                     + "or by the piece's error bound over --max-error (green, yellow at it, red above). Fallback "
-                    + "pieces are magenta in each (default: ${DEFAULT-VALUE}).")
+                    + "pieces are magenta in each (default: yellow).")
     String borderColour;
 
-    @Option(names = "--border-fade", description = "With --borders: outline small pieces translucent, in proportion "
-            + "to their area, so that the texture still shows where pieces crowd near the horizon (default: off).")
+    @Option(names = "--border-fade", description = "With --borders: outline small pieces translucent, by the radius "
+            + "of their inscribed circle, so that the texture still shows where pieces crowd near the horizon "
+            + "(default: off).")
     boolean borderFade;
 
     /** The outline style, checked. */
     BorderStyle borderStyle() {
+        // An outline option without the outlines would change nothing: say so rather than ignore it.
+        if (!borders && (borderColour != null || borderFade)) {
+            throw InputException.usage((borderColour != null ? "--border-colour" : "--border-fade")
+                    + " needs --borders");
+        }
+        String colour = borderColour == null ? "yellow" : borderColour;
         for (BorderStyle.Colouring c : BorderStyle.Colouring.values()) {
-            if (c.id().equals(borderColour)) {
+            if (c.id().equals(colour)) {
                 return new BorderStyle(c, borderFade);
             }
         }

@@ -28,7 +28,7 @@ final class SplitPolicySection implements ToolSection {
     private final JLabel maxEdgeValue = ToolsForm.value();
     private final JSlider maxError = new JSlider(0, SCALE, errorToSlider(0.5));
     private final JLabel maxErrorValue = ToolsForm.value();
-    private final JSlider maxDepth = new JSlider(0, 24, 16);
+    private final JSlider maxDepth = new JSlider(0, 30, 16);
     private final JLabel maxDepthValue = ToolsForm.value();
 
     SplitPolicySection(DemoWindow owner) {

@@ -164,6 +164,15 @@ class CommandsTest {
     void listScenesAndHelpMentionEveryOptionWithItsDefault() {
         CliRun list = CliRun.of("render", "--list-scenes");
         assertTrue(list.out().contains("floor") && list.out().contains("demo"), list.out());
+        // Descriptions start in one column, however long the names.
+        java.util.Set<Integer> columns = new java.util.HashSet<>();
+        for (String line : list.out().split("\\R")) {
+            java.util.regex.Matcher m = java.util.regex.Pattern.compile("^\\S+\\s+").matcher(line);
+            if (m.find()) {
+                columns.add(m.end());
+            }
+        }
+        assertEquals(1, columns.size(), list.out());
         CliRun help = CliRun.of("render", "--help");
         String flat = help.out().replaceAll("\\s+", " ");
         for (String option : new String[] {"--size", "--eye", "--target", "--up", "--fov", "--near", "--far", "--cull",

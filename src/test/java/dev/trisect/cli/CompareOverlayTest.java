@@ -1,6 +1,7 @@
 package dev.trisect.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.texture.TextureReader;
@@ -74,5 +75,18 @@ class CompareOverlayTest {
                 dir.resolve("x.png").toString());
         assertEquals(2, bad.status());
         assertTrue(bad.errLine().contains("--border-colour must be yellow, depth or bound"), bad.err());
+    }
+
+    @Test
+    void outlineOptionsWithoutBordersAreRefusedNotIgnored() {
+        for (String[] option : new String[][] {{"--border-colour", "depth"}, {"--border-fade"}}) {
+            java.util.List<String> args = new java.util.ArrayList<>(java.util.List.of("render", "--scene", "floor",
+                    "--size", "64x36", "--out", dir.resolve("o.png").toString()));
+            args.addAll(java.util.List.of(option));
+            CliRun r = CliRun.of(args.toArray(new String[0]));
+            assertEquals(2, r.status(), r.err());
+            assertTrue(r.errLine().contains(option[0] + " needs --borders"), r.err());
+            assertFalse(java.nio.file.Files.exists(dir.resolve("o.png")), "nothing written");
+        }
     }
 }
