@@ -77,7 +77,8 @@ final class BenchCommand extends SceneCommand {
     List<Double> errors;
 
     @Option(names = "--plot", paramLabel = "FILE.png",
-            description = "With --sweep: also draw the curve (one panel per policy) to this PNG.")
+            description = "With --sweep: also draw the cost/quality curve (one panel per policy) to this PNG; "
+                    + "with --target-ms: the threshold and frame time of every frame.")
     Path plot;
 
     @Option(names = "--target-ms", paramLabel = "MS", converter = Converters.PositiveConverter.class,
