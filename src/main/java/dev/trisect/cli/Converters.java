@@ -109,7 +109,7 @@ final class Converters {
             } catch (NumberFormatException e) {
                 // fall through to the message
             }
-            throw new TypeConversionException("'" + value + "' is not a piece count: use a whole number from 1 to "
+            throw new TypeConversionException(quote(value) + " is not a piece count: use a whole number from 1 to "
                     + Integer.MAX_VALUE + ", or auto");
         }
     }

@@ -132,7 +132,7 @@ public final class Pfm {
         }
         // A pipe or device could block forever or never end; only regular files are read.
         if (Files.exists(in) && !Files.isRegularFile(in)) {
-            throw new InputException(in + ": cannot read: not a regular file");
+            throw new InputException(in + ": cannot read: is not a regular file");
         }
         try (InputStream stream = new BufferedInputStream(Files.newInputStream(in), 1 << 16)) {
             Header header = new Header(in, stream);

@@ -196,16 +196,8 @@ public final class FrameRenderer implements AutoCloseable {
      * rendering with borders on would have. Lets a caller measure the image before the overlay covers
      * it (the comparison with another path must never count the overlay), then add the overlay.
      * Valid until the next {@code render} or {@code coverage} call; {@code frame} must be the one rendered.
-     *
-     * @return nanoseconds it took
-     */
-    public long drawBorders(Framebuffer frame) {
-        return drawBorders(frame, BorderStyle.plain(), TessellationSettings.defaults());
-    }
-
-    /**
-     * As {@link #drawBorders(Framebuffer)}, in a style: coloured by split depth (red at
-     * {@code tessellation}'s depth cap) or by error bound (yellow at its Max error), faded where dense.
+     * The style colours by split depth (red at {@code tessellation}'s depth cap) or by error bound
+     * (yellow at its Max error), and may fade outlines where pieces are dense.
      *
      * @return nanoseconds it took
      */

@@ -6,7 +6,8 @@ import java.util.Locale;
  * How the border overlay colours each outline, and whether it fades outlines where pieces are dense.
  *
  * @param colouring yellow, by split depth, or by error bound (fallback pieces are magenta in all three)
- * @param fade      draw the outlines of small pieces translucent, in proportion to their area, so that
+ * @param fade      draw the outlines of small pieces translucent, by the radius of their inscribed circle
+ *                  ({@link BorderOverlay#fadeAlpha}), so that
  *                  near the horizon, where pieces are a few pixels across, the texture still shows
  *                  through instead of a solid band of lines
  * @param onlyFallback outline the fallback pieces alone (magenta): the demo's highlight of the

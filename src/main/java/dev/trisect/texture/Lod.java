@@ -97,9 +97,9 @@ public final class Lod {
     }
 
     /**
-     * log2(x) for x &gt;= 0, minus infinity for 0 (and for subnormal x, far below any level of detail
-     * that matters): the exponent of x plus log2 of its mantissa interpolated linearly in a table of
-     * 1025 entries. Absolute error below 2e-7 (the curvature of log2 over a 1/1024 step), so a blend
+     * log2(x) for x &gt;= 0 (minus infinity for 0; zero, subnormal and non-finite x go to the exact
+     * function): the exponent of x plus log2 of its mantissa interpolated linearly in a table of 1025
+     * entries. Absolute error below 2e-7 (the curvature of log2 over a 1/1024 step), so a blend
      * weight quantized to 1/256 comes out as from the exact logarithm but within a hair of a step;
      * several times faster per pixel than {@link Math#log}.
      */

@@ -126,7 +126,7 @@ public final class TextureReader {
         }
         if (!Files.isRegularFile(file)) {
             // A pipe or device could block forever or never end.
-            throw error(name, "is not a regular file");
+            throw error(name, "cannot read: is not a regular file");
         }
         int length;
         try (InputStream in = Files.newInputStream(file)) {

@@ -25,7 +25,8 @@ final class OverlaySection implements ToolSection {
         colouring.setToolTipText("Outline colour (C): yellow; by split depth, cyan unsplit to red at Max depth; or "
                 + "by the piece's worst edge error bound over Max error, green to yellow at it, red above. Pieces a "
                 + "cap stopped short, filled per pixel, are magenta in each");
-        fade.setToolTipText("Outline pieces smaller than 8x8 pixels translucent, in proportion to their area, so the "
+        fade.setToolTipText("Outline pieces whose inscribed circle is under 2 px in radius translucent (opacity the "
+                + "square of radius / 2 px), so the "
                 + "texture still shows near the horizon instead of a solid band of lines");
         colouring.addActionListener(e -> style());
         fade.addActionListener(e -> style());

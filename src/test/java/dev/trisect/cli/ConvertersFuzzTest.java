@@ -21,7 +21,8 @@ class ConvertersFuzzTest {
     private static final List<ITypeConverter<?>> CONVERTERS = List.of(new Converters.SizeConverter(),
             new Converters.Vec3Converter(), new Converters.PositiveConverter(), new Converters.ColourConverter(),
             new Converters.ModeConverter(), new Converters.SplitConverter(), new Converters.SplitPointConverter(),
-            new Converters.CullConverter(), new Converters.FilterConverter());
+            new Converters.CullConverter(), new Converters.FilterConverter(),
+            new Converters.FramePiecesConverter());
 
     @FuzzTest(maxDuration = "5m")
     void everyValueConvertsOrIsAOneLineUsageError(byte[] input) throws Exception {

@@ -81,9 +81,9 @@ class RobustnessTest {
         assertEquals(0, CliRun.of("render", "--size", "8x8", "--threads", "1", "--out", img.toString(), "--uv-out",
                 uv.toString()).status());
         status(1, CliRun.of("diff", "--image", img.toString(), "--uv", fifo.toString(), "--reference", img.toString(),
-                "--reference-uv", uv.toString()), "uv.pfm: cannot read: not a regular file");
+                "--reference-uv", uv.toString()), "uv.pfm: cannot read: is not a regular file");
         status(1, CliRun.of("diff", "--image", img.toString(), "--uv", uv.toString(), "--reference", img.toString(),
-                "--reference-uv", fifo.toString()), "uv.pfm: cannot read: not a regular file");
+                "--reference-uv", fifo.toString()), "uv.pfm: cannot read: is not a regular file");
     }
 
     @Test
