@@ -38,74 +38,32 @@ final class FilteredSpans {
      */
     static long fill(Rasterizer r, Framebuffer frame, MipChain mips, int uvId, boolean perspective,
                      boolean fixedSafe, TextureFilter filter) {
-        if (filter == TextureFilter.BILINEAR) {
-            return perspective || !fixedSafe
-                    ? levelFloat(r, frame, mips, uvId, perspective)
-                    : levelFixed(r, frame, mips, 0, 0, uvId);
-        }
+        boolean trilinear = filter == TextureFilter.TRILINEAR;
         if (perspective || !fixedSafe) {
-            return trilinearFloat(r, frame, mips, uvId, perspective);
+            return perPixel(r, frame, mips, uvId, perspective, trilinear);
+        }
+        if (!trilinear) {
+            return levelFixed(r, frame, mips, 0, 0, uvId);
         }
         int selection = Lod.select(Lod.lambda(r.sPlane.dx, r.tPlane.dx, r.sPlane.dy, r.tPlane.dy), mips.maxLevel());
         return levelFixed(r, frame, mips, Lod.level(selection), Lod.weight(selection), uvId);
     }
 
-    /** Bilinear on level 0 with coordinates in doubles: the perspective path, or huge affine coordinates. */
-    private static long levelFloat(Rasterizer r, Framebuffer frame, MipChain mips, int uvId, boolean perspective) {
-        double qBase = r.qPlane.base;
-        double qDx = r.qPlane.dx;
-        double qDy = r.qPlane.dy;
-        double sBase = r.sPlane.base;
-        double sDx = r.sPlane.dx;
-        double sDy = r.sPlane.dy;
-        double tBase = r.tPlane.base;
-        double tDx = r.tPlane.dx;
-        double tDy = r.tPlane.dy;
-        int width = frame.width();
-        int[] color = frame.color();
-        float[] depth = frame.depth();
-        double[] uv = frame.uv();
-        int[] texels = mips.texels(0);
-        int tw = mips.width(0);
-        int th = mips.height(0);
-        long written = 0;
-        int[] sp = r.spans;
-        for (int y = r.rowStart, j = 0; y < r.rowEnd; y++, j += 2) {
-            int spanStart = sp[j];
-            int spanEnd = sp[j + 1];
-            double qRow = qBase + qDy * y;
-            double sRow = sBase + sDy * y;
-            double tRow = tBase + tDy * y;
-            int rowOffset = y * width;
-            for (int x = spanStart; x < spanEnd; x++) {
-                double q = qRow + qDx * x;
-                float qf = (float) q;
-                int i = rowOffset + x;
-                if (qf > depth[i]) {
-                    depth[i] = qf;
-                    double rq = perspective ? 1.0 / q : 1.0;
-                    double s = (sRow + sDx * x) * rq;
-                    double t = (tRow + tDx * x) * rq;
-                    color[i] = Sampler.bilinear(texels, tw, th, Sampler.position(s), Sampler.position(t));
-                    if (uv != null) {
-                        uv[3 * i] = s;
-                        uv[3 * i + 1] = t;
-                        uv[3 * i + 2] = uvId;
-                    }
-                    written++;
-                }
-            }
-        }
-        return written;
-    }
-
     /**
-     * Trilinear with the level of detail per pixel, coordinates in doubles: the perspective path (exact
-     * derivatives of the perspective map at each pixel), or affine pieces whose coordinates are too
-     * large for fixed point (constant derivatives, so the same level everywhere).
+     * Bilinear, or trilinear with the level of detail per pixel, coordinates in doubles: the perspective
+     * path (exact derivatives of the perspective map at each pixel), or affine pieces whose coordinates
+     * are too large for fixed point (constant derivatives, so the same level everywhere).
+     *
+     * <p>On a {@link MipChain#powerOfTwo} chain (every texture of the built-in scenes) each coordinate is
+     * floored once, to 8 fraction bits on level 0 ({@code floor(256 s)}), and level d's bilinear
+     * position {@code floor(256 s 2^-k) - 128} ({@link Sampler#position} of {@code s * scaleS(d)}, k =
+     * log2 of 1 / scaleS(d)) is that value shifted right by k, exactly, since
+     * {@code floor(floor(x) / 2^k) = floor(x / 2^k)}; a level is one packed int ({@link MipChain#shape})
+     * and wraps with masks. Other chains take {@link Sampler#position} and {@link Sampler#bilinear} per
+     * level. The choice is the same for every pixel of the triangle, so its branch is always predicted.
      */
-    private static long trilinearFloat(Rasterizer r, Framebuffer frame, MipChain mips, int uvId,
-                                       boolean perspective) {
+    private static long perPixel(Rasterizer r, Framebuffer frame, MipChain mips, int uvId,
+                                 boolean perspective, boolean trilinear) {
         double qBase = r.qPlane.base;
         double qDx = r.qPlane.dx;
         double qDy = r.qPlane.dy;
@@ -120,6 +78,7 @@ final class FilteredSpans {
         double qDxLod = perspective ? qDx : 0;
         double qDyLod = perspective ? qDy : 0;
         int maxLevel = mips.maxLevel();
+        boolean pot = mips.powerOfTwo();
         int width = frame.width();
         int[] color = frame.color();
         float[] depth = frame.depth();
@@ -142,17 +101,19 @@ final class FilteredSpans {
                     double rq = perspective ? 1.0 / q : 1.0;
                     double s = (sRow + sDx * x) * rq;
                     double t = (tRow + tDx * x) * rq;
-                    int selection = Lod.select(
-                            Lod.lambdaPerspective(s, t, rq, sDx, sDy, tDx, tDy, qDxLod, qDyLod), maxLevel);
+                    long sFixed = (long) Math.floor(s * Sampler.ONE);
+                    long tFixed = (long) Math.floor(t * Sampler.ONE);
+                    int selection = trilinear
+                            ? Lod.select(Lod.lambdaPerspective(s, t, rq, sDx, sDy, tDx, tDy, qDxLod, qDyLod), maxLevel)
+                            : 0;
                     int d = Lod.level(selection);
-                    int c = Sampler.bilinear(mips.texels(d), mips.width(d), mips.height(d),
-                            Sampler.position(s * mips.scaleS(d)), Sampler.position(t * mips.scaleT(d)));
+                    int c = pot ? samplePowerOfTwo(mips.texels(d), mips.shape(d), sFixed, tFixed)
+                            : sample(mips, d, s, t);
                     int weight = Lod.weight(selection);
                     if (weight != 0) {
                         int e = d + 1;
-                        int c2 = Sampler.bilinear(mips.texels(e), mips.width(e), mips.height(e),
-                                Sampler.position(s * mips.scaleS(e)), Sampler.position(t * mips.scaleT(e)));
-                        c = Sampler.lerp(c, c2, weight);
+                        c = Sampler.lerp(c, pot ? samplePowerOfTwo(mips.texels(e), mips.shape(e), sFixed, tFixed)
+                                : sample(mips, e, s, t), weight);
                     }
                     color[i] = c;
                     if (uv != null) {
@@ -165,6 +126,21 @@ final class FilteredSpans {
             }
         }
         return written;
+    }
+
+    /**
+     * The bilinear sample of the level described by {@code shape} ({@link MipChain#shape}) at level-0
+     * texel coordinates {@code floor(256 s)}, {@code floor(256 t)}.
+     */
+    private static int samplePowerOfTwo(int[] texels, int shape, long sFixed, long tFixed) {
+        return Sampler.bilinearPowerOfTwo(texels, shape >>> 16 & 0xFF, shape >>> 24,
+                (sFixed >> (shape & 0xFF)) - Sampler.ONE / 2, (tFixed >> (shape >>> 8 & 0xFF)) - Sampler.ONE / 2);
+    }
+
+    /** The bilinear sample of level {@code d} of any chain at level-0 texel coordinates (s, t). */
+    private static int sample(MipChain mips, int d, double s, double t) {
+        return Sampler.bilinear(mips.texels(d), mips.width(d), mips.height(d),
+                Sampler.position(s * mips.scaleS(d)), Sampler.position(t * mips.scaleT(d)));
     }
 
     /**

@@ -37,6 +37,10 @@ public final class MipChain {
     private final int[] heights;
     private final double[] scaleS;
     private final double[] scaleT;
+    /** Whether both sides of level 0 are powers of two (then every level's are). */
+    private final boolean powerOfTwo;
+    /** Per level, for power-of-two chains: see {@link #shape}. */
+    private final int[] shapes;
 
     /** Builds all levels of {@code width x height} texels {@code argb} (row 0 at the top). */
     MipChain(int width, int height, int[] argb) {
@@ -57,6 +61,17 @@ public final class MipChain {
         for (int d = 0; d < count; d++) {
             scaleS[d] = widths[d] / (double) width;
             scaleT[d] = heights[d] / (double) height;
+        }
+        powerOfTwo = (width & (width - 1)) == 0 && (height & (height - 1)) == 0;
+        shapes = new int[count];
+        if (powerOfTwo) {
+            int logW = Integer.numberOfTrailingZeros(width);
+            int logH = Integer.numberOfTrailingZeros(height);
+            for (int d = 0; d < count; d++) {
+                int lw = Integer.numberOfTrailingZeros(widths[d]);
+                int lh = Integer.numberOfTrailingZeros(heights[d]);
+                shapes[d] = (logW - lw) | (logH - lh) << 8 | lw << 16 | lh << 24;
+            }
         }
     }
 
@@ -101,6 +116,25 @@ public final class MipChain {
     /** Level {@code d}'s height over level 0's (see {@link #scaleS}). */
     public double scaleT(int d) {
         return scaleT[d];
+    }
+
+    /**
+     * Whether both sides of level 0 are powers of two, and with them the sides of every level: then
+     * {@link #shape} describes each level by shifts and masks.
+     */
+    public boolean powerOfTwo() {
+        return powerOfTwo;
+    }
+
+    /**
+     * Level {@code d} of a {@link #powerOfTwo} chain packed into one int, so a span loop that picks the
+     * level per pixel loads one int instead of four values: bits 0–7 {@code log2(W / width(d))}, the
+     * right shift taking a level-0 texel coordinate in fixed point to level d's ({@link #scaleS} is
+     * 2 to minus that); bits 8–15 the same for heights; bits 16–23 {@code log2(width(d))}; bits 24–31
+     * {@code log2(height(d))}. Zero for chains that are not power-of-two.
+     */
+    public int shape(int d) {
+        return shapes[d];
     }
 
     /** Total texels of the levels beyond level 0 (memory check: at most a third of level 0). */

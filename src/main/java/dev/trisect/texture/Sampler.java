@@ -76,6 +76,30 @@ public final class Sampler {
     }
 
     /**
+     * {@link #bilinear} on a level of {@code 2^logW x 2^logH} texels, where wrapping is a mask: the same
+     * result, without the per-sample test for a power of two.
+     *
+     * @param texels level texels, ARGB, row 0 at the top
+     * @param logW   log2 of the level's width
+     * @param logH   log2 of the level's height
+     * @param px     {@code floor((s - 1/2) * 256)}, s the texel coordinate on this level
+     * @param py     {@code floor((t - 1/2) * 256)}, t from the bottom
+     * @return opaque ARGB
+     */
+    public static int bilinearPowerOfTwo(int[] texels, int logW, int logH, long px, long py) {
+        int wMask = (1 << logW) - 1;
+        int hMask = (1 << logH) - 1;
+        int i0 = (int) (px >> FRACTION_BITS) & wMask;
+        int j0 = (int) (py >> FRACTION_BITS) & hMask;
+        int i1 = (i0 + 1) & wMask;
+        int j1 = (j0 + 1) & hMask;
+        int row0 = (hMask - j0) << logW;
+        int row1 = (hMask - j1) << logW;
+        return blend(texels[row0 + i0], texels[row0 + i1], texels[row1 + i0], texels[row1 + i1],
+                (int) px & (ONE - 1), (int) py & (ONE - 1));
+    }
+
+    /**
      * {@code c00 (1 - a)(1 - b) + c10 a (1 - b) + c01 (1 - a) b + c11 a b} per colour channel, with
      * {@code a = fx / 256}, {@code b = fy / 256}, rounded to nearest; opaque.
      */
