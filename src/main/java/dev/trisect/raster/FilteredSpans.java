@@ -26,6 +26,24 @@ final class FilteredSpans {
     /** Right shift from 32.32 fixed point to the sampler's 8 fraction bits. */
     private static final int TO_SAMPLER = 32 - Sampler.FRACTION_BITS;
 
+    /** log2 of {@link #LOD_RUN}. */
+    private static final int LOG2_LOD_RUN = 3;
+    /**
+     * Columns over which the per-pixel path interpolates lambda linearly between exact values at
+     * multiples of this (docs/conventions.md, "Texture filtering").
+     */
+    static final int LOD_RUN = 1 << LOG2_LOD_RUN;
+    /**
+     * The largest change, in 1/256, of lambda along x or of lambda along y across a run that is
+     * interpolated: half a level. Along a row, lambda along x is exactly {@code c - 2 log2(Q)} (the
+     * numerator of ds/dx is constant there), whose chord over a run that changes it by D is off by at
+     * most about {@code 0.043 D^2}: 0.011 for half a level. Runs that change more (a surface nearly
+     * edge-on, Q shrinking fast toward its vanishing point) take the exact lambda per pixel.
+     */
+    static final int MAX_LOD_STEP = Sampler.ONE / 2;
+    /** {@link #lodAt} where there is no level of detail to interpolate (16 high bits below any lambda). */
+    private static final int NO_RUN_LOD = Integer.MIN_VALUE;
+
     private FilteredSpans() {
     }
 
@@ -92,6 +110,16 @@ final class FilteredSpans {
             double sRow = sBase + sDy * y;
             double tRow = tBase + tDy * y;
             int rowOffset = y * width;
+            // The run of LOD_RUN columns the level of detail was last set up for: lambda along x and
+            // along y (1/256 steps) at its first column, their changes to the next run's first column, and
+            // whether to interpolate them (else the exact lambda per pixel).
+            int runEnd = Integer.MIN_VALUE;
+            int lodEnd = 0;
+            int lambdaX = 0;
+            int lambdaY = 0;
+            int stepX = 0;
+            int stepY = 0;
+            boolean interpolate = false;
             for (int x = spanStart; x < spanEnd; x++) {
                 double q = qRow + qDx * x;
                 float qf = (float) q;
@@ -103,9 +131,30 @@ final class FilteredSpans {
                     double t = (tRow + tDx * x) * rq;
                     long sFixed = (long) Math.floor(s * Sampler.ONE);
                     long tFixed = (long) Math.floor(t * Sampler.ONE);
-                    int selection = trilinear
-                            ? Lod.select(Lod.lambdaPerspective(s, t, rq, sDx, sDy, tDx, tDy, qDxLod, qDyLod), maxLevel)
-                            : 0;
+                    int selection = 0;
+                    if (trilinear) {
+                        if (x >= runEnd) {
+                            int runStart = x & -LOD_RUN;
+                            int lodStart = runStart == runEnd ? lodEnd
+                                    : lodAt(runStart, qRow, sRow, tRow, qDx, sDx, sDy, tDx, tDy, qDxLod, qDyLod,
+                                    perspective, maxLevel);
+                            runEnd = runStart + LOD_RUN;
+                            lodEnd = lodAt(runEnd, qRow, sRow, tRow, qDx, sDx, sDy, tDx, tDy, qDxLod, qDyLod,
+                                    perspective, maxLevel);
+                            lambdaX = lodStart >> 16;
+                            lambdaY = (short) lodStart;
+                            stepX = (lodEnd >> 16) - lambdaX;
+                            stepY = (short) lodEnd - lambdaY;
+                            interpolate = lodStart != NO_RUN_LOD && lodEnd != NO_RUN_LOD
+                                    && Math.abs(stepX) <= MAX_LOD_STEP && Math.abs(stepY) <= MAX_LOD_STEP;
+                        }
+                        int k = x & (LOD_RUN - 1);
+                        selection = interpolate
+                                ? Lod.select(Math.max(lambdaX + (stepX * k >> LOG2_LOD_RUN),
+                                lambdaY + (stepY * k >> LOG2_LOD_RUN)), maxLevel)
+                                : Lod.select(Lod.lambdaPerspective(s, t, rq, sDx, sDy, tDx, tDy, qDxLod, qDyLod),
+                                maxLevel);
+                    }
                     int d = Lod.level(selection);
                     int c = pot ? samplePowerOfTwo(mips.texels(d), mips.shape(d), sFixed, tFixed)
                             : sample(mips, d, s, t);
@@ -135,6 +184,30 @@ final class FilteredSpans {
     private static int samplePowerOfTwo(int[] texels, int shape, long sFixed, long tFixed) {
         return Sampler.bilinearPowerOfTwo(texels, shape >>> 16 & 0xFF, shape >>> 24,
                 (sFixed >> (shape & 0xFF)) - Sampler.ONE / 2, (tFixed >> (shape >>> 8 & 0xFF)) - Sampler.ONE / 2);
+    }
+
+    /**
+     * The level of detail at column {@code x} of a row whose planes are at qRow, sRow, tRow at column 0,
+     * from the exact derivatives there: lambda along x ({@link Lod#lambdaOf} of the x derivatives, in
+     * 1/256 steps, {@link Lod#fixed}) in the high 16 bits, along y in the low 16 bits, both signed; or
+     * {@link #NO_RUN_LOD} where the perspective plane has no positive 1/w (a column beyond the
+     * triangle's edge) or a lambda is NaN.
+     */
+    private static int lodAt(int x, double qRow, double sRow, double tRow, double qDx, double sDx, double sDy,
+                             double tDx, double tDy, double qDxLod, double qDyLod, boolean perspective, int maxLevel) {
+        double q = perspective ? qRow + qDx * x : 1.0;
+        if (!(q > 0)) {
+            return NO_RUN_LOD;
+        }
+        double rq = 1.0 / q;
+        double s = (sRow + sDx * x) * rq;
+        double t = (tRow + tDx * x) * rq;
+        int lx = Lod.fixed(Lod.lambdaOf(Lod.rhoSquared(s, t, rq, sDx, tDx, qDxLod)), maxLevel);
+        int ly = Lod.fixed(Lod.lambdaOf(Lod.rhoSquared(s, t, rq, sDy, tDy, qDyLod)), maxLevel);
+        if (lx == Lod.NO_LAMBDA || ly == Lod.NO_LAMBDA) {
+            return NO_RUN_LOD;
+        }
+        return lx << 16 | ly & 0xFFFF;
     }
 
     /** The bilinear sample of level {@code d} of any chain at level-0 texel coordinates (s, t). */

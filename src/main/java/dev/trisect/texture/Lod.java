@@ -49,11 +49,31 @@ public final class Lod {
      */
     public static double lambdaPerspective(double s, double t, double r, double sDx, double sDy, double tDx,
                                            double tDy, double qDx, double qDy) {
-        double a = sDx - s * qDx;
-        double b = tDx - t * qDx;
-        double c = sDy - s * qDy;
-        double d = tDy - t * qDy;
-        return lambda((a * a + b * b) * (r * r), (c * c + d * d) * (r * r));
+        return lambda(rhoSquared(s, t, r, sDx, tDx, qDx), rhoSquared(s, t, r, sDy, tDy, qDy));
+    }
+
+    /**
+     * The squared length of the texel-coordinate derivative along one screen direction at one pixel of
+     * a perspective map (see {@link #lambdaPerspective}): with the slopes along x,
+     * {@code (ds/dx)^2 + (dt/dx)^2}; along y with the y slopes.
+     *
+     * @param s  the pixel's texel coordinate s = S / Q
+     * @param t  the pixel's texel coordinate t = T / Q
+     * @param r  1 / Q at the pixel
+     * @param sD dS along the direction (plane slope), likewise tD and qD
+     */
+    public static double rhoSquared(double s, double t, double r, double sD, double tD, double qD) {
+        double a = sD - s * qD;
+        double b = tD - t * qD;
+        return (a * a + b * b) * (r * r);
+    }
+
+    /**
+     * lambda of one direction, {@code log2(sqrt(rhoSquared))}: {@link #lambda(double, double)} is the
+     * larger of the two directions' values, exactly (the logarithm here is monotonic).
+     */
+    public static double lambdaOf(double rhoSquared) {
+        return 0.5 * log2(rhoSquared);
     }
 
     /**
@@ -73,6 +93,36 @@ public final class Lod {
         int level = (int) lambda;
         int weight = (int) ((lambda - level) * Sampler.ONE);
         return level << 9 | weight;
+    }
+
+    /** {@link #fixed} of a lambda that is NaN: no level of detail to interpolate. */
+    public static final int NO_LAMBDA = Integer.MIN_VALUE;
+
+    /**
+     * lambda in 1/256 steps, {@code floor(256 lambda)}, clamped to {@code [-256, 256 (maxLevel + 1)]} (beyond
+     * that range every value selects the same), or {@link #NO_LAMBDA} for NaN. For stepping the level of
+     * detail along a span in integers; {@link #select(int, int)} splits it as {@link #select(double, int)}
+     * splits lambda.
+     */
+    public static int fixed(double lambda, int maxLevel) {
+        if (lambda != lambda) {
+            return NO_LAMBDA;
+        }
+        return (int) Math.floor(Math.max(-1, Math.min(maxLevel + 1, lambda)) * Sampler.ONE);
+    }
+
+    /**
+     * {@link #select(double, int)} for a lambda given in 1/256 steps ({@link #fixed}): the same level and
+     * weight, since {@code floor(256 lambda) = 256 level + weight} for lambda in (0, maxLevel).
+     */
+    public static int select(int lambda256, int maxLevel) {
+        if (lambda256 <= 0) {
+            return 0;
+        }
+        if (lambda256 >= maxLevel << 8) {
+            return maxLevel << 9;
+        }
+        return (lambda256 >>> 8) << 9 | lambda256 & 0xFF;
     }
 
     /** The first level of a {@link #select} result. */

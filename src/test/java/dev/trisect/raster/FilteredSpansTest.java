@@ -4,6 +4,9 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import dev.trisect.texture.Lod;
+import dev.trisect.texture.MipChain;
+import dev.trisect.texture.Sampler;
 import dev.trisect.texture.Texture;
 import dev.trisect.texture.TextureFilter;
 import java.util.Random;
@@ -128,6 +131,118 @@ class FilteredSpansTest {
             assertEquals(covered, greyTri, "trilinear, perspective " + perspective);
             assertTrue(greyBi < covered / 2, "bilinear stays on level 0, perspective " + perspective);
         }
+    }
+
+    /**
+     * The per-pixel trilinear colour by the documented rule, from the rasterizer's planes: lambda exact
+     * (in 1/256) at the columns that are multiples of {@link FilteredSpans#LOD_RUN}, linear between
+     * unless the run changes it by more than {@link FilteredSpans#MAX_LOD_STEP} (then exact at the
+     * pixel), and the generic {@link Sampler} calls per level.
+     */
+    private static int expectedTrilinear(Rasterizer r, MipChain mips, int x, int y) {
+        double q = r.qPlane.base + r.qPlane.dy * y + r.qPlane.dx * x;
+        double s = (r.sPlane.base + r.sPlane.dy * y + r.sPlane.dx * x) / q;
+        double t = (r.tPlane.base + r.tPlane.dy * y + r.tPlane.dx * x) / q;
+        double lambda = interpolatedLambda(r, mips, x, y);
+        int selection = Double.isNaN(lambda)
+                ? Lod.select(Lod.lambdaPerspective(s, t, 1 / q, r.sPlane.dx, r.sPlane.dy, r.tPlane.dx, r.tPlane.dy,
+                r.qPlane.dx, r.qPlane.dy), mips.maxLevel())
+                : Lod.select((int) lambda, mips.maxLevel());
+        int d = Lod.level(selection);
+        int c = Sampler.bilinear(mips.texels(d), mips.width(d), mips.height(d), Sampler.position(s * mips.scaleS(d)),
+                Sampler.position(t * mips.scaleT(d)));
+        if (Lod.weight(selection) != 0) {
+            int e = d + 1;
+            c = Sampler.lerp(c, Sampler.bilinear(mips.texels(e), mips.width(e), mips.height(e),
+                    Sampler.position(s * mips.scaleS(e)), Sampler.position(t * mips.scaleT(e))), Lod.weight(selection));
+        }
+        return c;
+    }
+
+    /**
+     * The documented interpolated lambda at pixel (x, y), in 1/256 (an integer), or NaN where the rule
+     * takes the exact lambda: lambda along x and along y exact at the run's first column and the next
+     * run's ({@link Lod#fixed}), each stepped linearly (rounded down), the larger of the two.
+     */
+    private static double interpolatedLambda(Rasterizer r, MipChain mips, int x, int y) {
+        int run = FilteredSpans.LOD_RUN;
+        int a = x - Math.floorMod(x, run);
+        int[] la = axisLambdas(r, mips, a, y);
+        int[] lb = axisLambdas(r, mips, a + run, y);
+        if (la == null || lb == null || Math.abs(lb[0] - la[0]) > FilteredSpans.MAX_LOD_STEP
+                || Math.abs(lb[1] - la[1]) > FilteredSpans.MAX_LOD_STEP) {
+            return Double.NaN;
+        }
+        return Math.max(la[0] + Math.floorDiv((lb[0] - la[0]) * (x - a), run),
+                la[1] + Math.floorDiv((lb[1] - la[1]) * (x - a), run));
+    }
+
+    /** lambda along x and along y at (x, y) in 1/256, or null where 1/w is not positive or a lambda is NaN. */
+    private static int[] axisLambdas(Rasterizer r, MipChain mips, int x, int y) {
+        double q = r.qPlane.base + r.qPlane.dy * y + r.qPlane.dx * x;
+        if (!(q > 0)) {
+            return null;
+        }
+        double s = (r.sPlane.base + r.sPlane.dy * y + r.sPlane.dx * x) / q;
+        double t = (r.tPlane.base + r.tPlane.dy * y + r.tPlane.dx * x) / q;
+        int lx = Lod.fixed(Lod.lambdaOf(Lod.rhoSquared(s, t, 1 / q, r.sPlane.dx, r.tPlane.dx, r.qPlane.dx)),
+                mips.maxLevel());
+        int ly = Lod.fixed(Lod.lambdaOf(Lod.rhoSquared(s, t, 1 / q, r.sPlane.dy, r.tPlane.dy, r.qPlane.dy)),
+                mips.maxLevel());
+        return lx == Lod.NO_LAMBDA || ly == Lod.NO_LAMBDA ? null : new int[] {lx, ly};
+    }
+
+    private static double clamp(double lambda, MipChain mips) {
+        return Math.max(0, Math.min(mips.maxLevel(), lambda));
+    }
+
+    @Test
+    void perPixelLevelOfDetailIsExactAtRunStartsAndLinearBetween() {
+        // Steeply foreshortened triangles (depth ratios up to 20 across them), on power-of-two and other
+        // textures: every pixel is the documented rule's colour, bit for bit, and where lambda is
+        // interpolated it stays within 0.012 of the exact one (as it selects levels: clamped to the range
+        // of levels), the bound MAX_LOD_STEP is chosen for.
+        Random rnd = new Random(10);
+        Texture[] textures = {noise(64, 64, 7), noise(48, 20, 8)};
+        double worst = 0;
+        int interpolatedPixels = 0;
+        int exactPixels = 0;
+        for (int k = 0; k < 30; k++) {
+            ScreenTriangles t = new ScreenTriangles();
+            double x = rnd.nextDouble() * W;
+            double y = rnd.nextDouble() * H;
+            t.add(x, y, 1, 0, 0,
+                    x + rnd.nextGaussian() * 50, y + rnd.nextGaussian() * 50, 0.05 + rnd.nextDouble(), 700, 40,
+                    x + rnd.nextGaussian() * 50, y + rnd.nextGaussian() * 50, 0.05 + rnd.nextDouble(), -60, 500,
+                    k, k % 2);
+            Framebuffer fb = new Framebuffer(W, H);
+            fb.clearRows(0, H, 0);
+            Rasterizer r = new Rasterizer();
+            r.filter(TextureFilter.TRILINEAR);
+            r.fill(fb, t, all(t), 0, 1, textures, true, 0, 0, W, H);
+            MipChain mips = textures[k % 2].mipChain();
+            for (int py = r.rowStart, j = 0; py < r.rowEnd; py++, j += 2) {
+                for (int px = r.spans[j]; px < r.spans[j + 1]; px++) {
+                    assertEquals(Integer.toHexString(expectedTrilinear(r, mips, px, py)),
+                            Integer.toHexString(fb.color()[py * W + px]), "triangle " + k + " pixel " + px + "," + py);
+                    double q = r.qPlane.base + r.qPlane.dy * py + r.qPlane.dx * px;
+                    double exact = Lod.lambdaPerspective((r.sPlane.base + r.sPlane.dy * py + r.sPlane.dx * px) / q,
+                            (r.tPlane.base + r.tPlane.dy * py + r.tPlane.dx * px) / q, 1 / q, r.sPlane.dx, r.sPlane.dy,
+                            r.tPlane.dx, r.tPlane.dy, r.qPlane.dx, r.qPlane.dy);
+                    double interpolated = interpolatedLambda(r, mips, px, py) / 256;
+                    if (Double.isNaN(interpolated)) {
+                        exactPixels++;
+                    } else {
+                        // The lambda that selects levels: clamped to [0, last level].
+                        worst = Math.max(worst, Math.abs(clamp(interpolated, mips) - clamp(exact, mips)));
+                        interpolatedPixels++;
+                    }
+                }
+            }
+        }
+        assertTrue(interpolatedPixels > 3 * exactPixels, interpolatedPixels + " interpolated, " + exactPixels + " exact");
+        assertTrue(exactPixels > 0, "some runs change lambda by more than half a level");
+        assertTrue(worst < 0.012, "worst lambda error " + worst);
     }
 
     @Test

@@ -68,6 +68,27 @@ class LodTest {
     }
 
     @Test
+    void fixedPointSelectionSplitsAsTheDoubleOne() {
+        // select(fixed(lambda)) is select(lambda): floor(256 lambda) = 256 level + weight.
+        java.util.Random rnd = new java.util.Random(12);
+        for (int maxLevel : new int[] {0, 1, 9, 14}) {
+            for (int i = 0; i < 100_000; i++) {
+                double lambda = rnd.nextDouble() * (maxLevel + 6) - 3;
+                assertEquals(Lod.select(lambda, maxLevel), Lod.select(Lod.fixed(lambda, maxLevel), maxLevel),
+                        "lambda " + lambda + ", last level " + maxLevel);
+            }
+            for (double lambda : new double[] {0, 1, 2.5, maxLevel, maxLevel + 1e-9, -1e300, 1e300,
+                Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY}) {
+                assertEquals(Lod.select(lambda, maxLevel), Lod.select(Lod.fixed(lambda, maxLevel), maxLevel),
+                        "lambda " + lambda);
+            }
+        }
+        assertEquals(Lod.NO_LAMBDA, Lod.fixed(Double.NaN, 8));
+        assertEquals(-256, Lod.fixed(-7, 8), "clamped below");
+        assertEquals(9 * 256, Lod.fixed(40, 8), "clamped above");
+    }
+
+    @Test
     void tableLogarithmIsWithinTwoTenMillionths() {
         java.util.Random rnd = new java.util.Random(11);
         for (int i = 0; i < 100_000; i++) {
