@@ -33,7 +33,9 @@ public final class Rasterizer {
     int firstColumn;
     /**
      * The covered pixels of each row of the current triangle: row {@code rowStart + j} covers
-     * [spans[2j], spans[2j + 1]); an empty row has start &gt;= end.
+     * [spans[2j], spans[2j + 1]); an empty row has start &gt;= end. Filled by {@link #walk}{@code (false)}
+     * before every loop that reads it ({@link #spans(Framebuffer, Texture, int, boolean)}, {@link FilteredSpans},
+     * {@link #countCoverage}); the nearest affine fill solves its spans on the fly and leaves it as it was.
      */
     int[] spans = new int[64];
     // Attribute planes over pixel centres: value = base + dx * x + dy * y for pixel (x, y).
@@ -76,14 +78,18 @@ public final class Rasterizer {
                 continue;
             }
             Texture texture = textures[materials[tri]];
+            if (filter == TextureFilter.NEAREST && !divide && fixedPointSafe) {
+                prepareAffine(frame, texture, ids[tri] + 1);
+                written += walk(true);
+                continue;
+            }
+            walk(false);
             if (filter != TextureFilter.NEAREST) {
                 written += FilteredSpans.fill(this, frame, texture.mipChain(), ids[tri] + 1, divide,
                         fixedPointSafe, filter);
                 continue;
             }
-            written += divide || !fixedPointSafe
-                    ? spans(frame, texture, ids[tri] + 1, divide)
-                    : spansAffineFixed(frame, texture, ids[tri] + 1);
+            written += spans(frame, texture, ids[tri] + 1, divide);
         }
         return written;
     }
@@ -103,6 +109,7 @@ public final class Rasterizer {
             if (!setup(triangles, order[n], false, x0, y0, x1, y1)) {
                 continue;
             }
+            walk(false);
             int[] sp = spans;
             for (int y = rowStart, j = 0; y < rowEnd; y++, j += 2) {
                 int row = y * width;
@@ -117,8 +124,9 @@ public final class Rasterizer {
     }
 
     /**
-     * Prepares triangle {@code tri} for filling within the rectangle; false when it covers no pixel
-     * centre there (or has no area).
+     * Prepares triangle {@code tri} for filling within the rectangle: bounds, edge order and attribute
+     * planes (the spans follow from {@link #walk}); false when it covers no pixel centre there (or has
+     * no area).
      */
     boolean setup(ScreenTriangles triangles, int tri, boolean perspective, int x0, int y0, int x1, int y1) {
         int[] f = triangles.fixed();
@@ -158,7 +166,7 @@ public final class Rasterizer {
         if (colStart >= colEnd || rowStart >= rowEnd) {
             return false;
         }
-        computeSpans(ax, ay, bx, by, cx, cy);
+        order(ax, ay, bx, by, cx, cy);
         planes(triangles, tri, i1, i2, perspective);
         return true;
     }
@@ -232,22 +240,28 @@ public final class Rasterizer {
         return q;
     }
 
-    /** Longs per edge in {@link #edgeState}: K, its step per row, m, q, r, dq, dr, carry. */
+    /** Longs per edge in {@link #edgeState}: K, its step per row, m, c, r, dc, dr, side. */
     private static final int EDGE_STATE = 8;
-    private final long[] edgeState = new long[3 * EDGE_STATE];
+    /** Edge slot for the binding short edge of the row through the middle corner (see {@link #midRowEdge}). */
+    private static final int SLOT = 3;
+    private final long[] edgeState = new long[4 * EDGE_STATE];
 
     /**
-     * Sets up edge a -&gt; a + (dx, dy) for the row whose centre is {@code py} (see {@link #computeSpans}):
-     * K with the top-left bias, its step ONE * dx per row, and for a non-horizontal edge m = ONE * |dy|,
-     * the bound q with remainder r, their steps dq, dr, and the carry a remainder overflow adds to q.
+     * Sets up edge a -&gt; a + (dx, dy) for the row whose centre is {@code py} (see {@link #order}): K
+     * with the top-left bias, its step ONE * dx per row, and for a non-horizontal edge m = ONE * |dy|,
+     * c = ceil(K / m) with remainder r (K = c m - r, 0 &lt;= r &lt; m), their steps dc, dr, and the side:
+     * -1 for a right edge (dy &gt; 0), 1 for a left edge, 0 for a horizontal one. Both sides step alike,
+     * with no branch on the side.
      */
     private static void edge(long[] st, int o, long ax, long ay, long dx, long dy, long py) {
-        long k = dx * (py - ay) - dy * (HALF - ax) + ((dy < 0 || (dy == 0 && dx > 0)) ? 1 : 0);
+        // The bias is 1 for a left edge (dy < 0) or a top edge (horizontal, going right).
+        long bias = (dy >>> 63) | (dy == 0 && dx > 0 ? 1 : 0);
+        long k = dx * (py - ay) - dy * (HALF - ax) + bias;
         long step = ONE * dx;
         st[o] = k;
         st[o + 1] = step;
         if (dy == 0) {
-            // Horizontal: no bound to step; m = 0 marks it, and the row is in or out by the sign of K.
+            // Horizontal: no bound to step; side 0 marks it, and the row is in or out by the sign of K.
             st[o + 2] = 0;
             st[o + 3] = 0;
             st[o + 4] = 0;
@@ -258,30 +272,19 @@ public final class Rasterizer {
         }
         long m = ONE * Math.abs(dy);
         double inv = 1.0 / m;
-        long q;
-        long dq;
-        if (dy > 0) {
-            // Right edge: q = ceil(K/m), K = q m - r with 0 <= r < m; K grows by step per row.
-            q = ceilDiv(k, m, inv);
-            dq = ceilDiv(step, m, inv);
-            st[o + 4] = q * m - k;
-            st[o + 6] = dq * m - step;
-            st[o + 7] = -1;
-        } else {
-            // Left edge: q = floor(N/m) = -ceil(K/m) for N = -K, N = q m + r; N shrinks by step per row.
-            q = -ceilDiv(k, m, inv);
-            dq = -ceilDiv(step, m, inv);
-            st[o + 4] = -k - q * m;
-            st[o + 6] = -step - dq * m;
-            st[o + 7] = 1;
-        }
+        long c = ceilDiv(k, m, inv);
+        long dc = ceilDiv(step, m, inv);
         st[o + 2] = m;
-        st[o + 3] = q;
-        st[o + 5] = dq;
+        st[o + 3] = c;
+        st[o + 4] = c * m - k;
+        st[o + 5] = dc;
+        st[o + 6] = dc * m - step;
+        st[o + 7] = dy > 0 ? -1 : 1;
     }
 
     /**
-     * Fills {@link #spans} for rows [rowStart, rowEnd), clipped to [colStart, colEnd).
+     * Orders the current triangle's corners by y for {@link #walk}, which solves the covered span of
+     * each row of [rowStart, rowEnd), clipped to [colStart, colEnd).
      *
      * <p>Edge k runs from corner k to corner k+1. With E(x) = K - m x on a row (m = ONE * dY, and
      * the top-left bias folded into K: a centre exactly on a top edge, horizontal with the interior
@@ -292,79 +295,147 @@ public final class Rasterizer {
      * <li>m &lt; 0 (a left edge): x &gt; -K/|m|, so the last pixel outside is q = floor(-K / |m|);</li>
      * <li>m = 0 (horizontal): the whole row is in or out by the sign of K.</li>
      * </ul>
-     * K grows by ONE * dX per row. Rather than divide on every row, each edge's q and its remainder
-     * are stepped with additions only (an exact DDA), in local variables; a right edge's q drops by one
-     * when its remainder overflows, a left edge's rises by one.
+     * K grows by ONE * dX per row. Rather than divide on every row, c = ceil(K / |m|) and its
+     * remainder are stepped with additions only (an exact DDA), in local variables, c dropping by one
+     * when the remainder overflows; a right edge's q is c, a left edge's is -c.
+     *
+     * <p>Only two edges are stepped on a row. With the corners ordered by y as top, mid, bottom, a row
+     * whose centre lies above mid is bounded by the edges top-mid and top-bottom alone: a centre
+     * inside both lies in their wedge at top, below top and above mid, so it is a convex combination
+     * top + a (mid - top) + b (bottom - top) with a + b &lt; 1, where the third edge's function is
+     * (1 - a - b) times its value at top, which is positive: that test cannot fail. Likewise below mid
+     * with mid-bottom and top-bottom. One of the two is a left edge and one a right edge (they meet at
+     * top, or at bottom), so each half runs a loop with no per-row decision. Only a row whose centre
+     * is exactly at mid's height needs all three edges (two of them meet on it; the top-left bias can
+     * tell them apart).
      */
-    private void computeSpans(long ax, long ay, long bx, long by, long cx, long cy) {
-        int rows = rowEnd - rowStart;
-        if (spans.length < 2 * rows) {
-            spans = new int[Math.max(2 * rows, 2 * spans.length)];
+    private void order(long ax, long ay, long bx, long by, long cx, long cy) {
+        long[] c = corners;
+        c[0] = ax;
+        c[1] = ay;
+        c[2] = bx;
+        c[3] = by;
+        c[4] = cx;
+        c[5] = cy;
+        // Corner indices ordered by y (ties in any order: the argument above needs only <=).
+        int top = ay <= by ? (ay <= cy ? 0 : 2) : (by <= cy ? 1 : 2);
+        int bottom = ay > by ? (ay > cy ? 0 : 2) : (by > cy ? 1 : 2);
+        if (bottom == top) {
+            bottom = (top + 1) % 3;
         }
-        long py = (long) rowStart * ONE + HALF;
-        long dx0 = bx - ax;
-        long dy0 = by - ay;
-        long dx1 = cx - bx;
-        long dy1 = cy - by;
-        long dx2 = ax - cx;
-        long dy2 = ay - cy;
+        int mid = 3 - top - bottom;
+        // Edge k is opposite corner k + 2 (mod 3).
+        longEdge = (mid + 1) % 3;
+        upperEdge = (bottom + 1) % 3;
+        lowerEdge = (top + 1) % 3;
+        long midY = c[2 * mid + 1];
+        // Rows before midRow have centres above mid; midRow's centre is at mid's height if exact.
+        midRow = (int) -Math.floorDiv(HALF - midY, (long) ONE);
+        midExact = Math.floorMod(midY - HALF, (long) ONE) == 0;
+    }
+
+    /** The edges of the current triangle that {@link #walk} uses; see {@link #order}. */
+    private int longEdge;
+    private int upperEdge;
+    private int lowerEdge;
+    /** First row whose centre is not above the middle corner. */
+    private int midRow;
+    /** Whether {@link #midRow}'s centre is exactly at the middle corner's height. */
+    private boolean midExact;
+
+    /**
+     * Walks rows [rowStart, rowEnd) of the current triangle, section by section (see {@link #order}):
+     * fills {@link #spans} ({@code fill} false, returns 0), or fills the pixels with the nearest affine
+     * fixed-point loop set up by {@link #prepareAffine} ({@code fill} true, returns pixels written).
+     */
+    private long walk(boolean fill) {
+        if (!fill) {
+            int rows = rowEnd - rowStart;
+            if (spans.length < 2 * rows) {
+                spans = new int[Math.max(2 * rows, 2 * spans.length)];
+            }
+        }
+        long written = 0;
+        int r = rowStart;
+        setEdge(longEdge, r);
+        int upperEnd = Math.min(rowEnd, midRow);
+        if (r < upperEnd) {
+            setEdge(upperEdge, r);
+            written += section(longEdge, upperEdge, r, upperEnd, fill);
+            r = upperEnd;
+        }
+        if (midExact && r == midRow && r < rowEnd) {
+            setEdge(upperEdge, r);
+            setEdge(lowerEdge, r);
+            if (midRowEdge(upperEdge, lowerEdge)) {
+                written += section(longEdge, SLOT, r, r + 1, fill);
+            } else {
+                if (!fill) {
+                    spans[2 * (r - rowStart)] = colStart;
+                    spans[2 * (r - rowStart) + 1] = colStart;
+                }
+                step(longEdge);
+            }
+            r++;
+        }
+        if (r < rowEnd) {
+            setEdge(lowerEdge, r);
+            written += section(longEdge, lowerEdge, r, rowEnd, fill);
+        }
+        return written;
+    }
+
+    /** Snapped corners of the current triangle in setup order (x0, y0, x1, y1, x2, y2), sub-pixel units. */
+    private final long[] corners = new long[6];
+
+    /** Sets up edge {@code e} (corner e to corner e + 1) for the row {@code row}. */
+    private void setEdge(int e, int row) {
+        long[] c = corners;
+        int a = 2 * e;
+        int b = 2 * ((e + 1) % 3);
+        edge(edgeState, e * EDGE_STATE, c[a], c[a + 1], c[b] - c[a], c[b + 1] - c[a + 1],
+                (long) row * ONE + HALF);
+    }
+
+    /** Steps edge {@code e}'s bound to the next row (a non-horizontal edge). */
+    private void step(int e) {
         long[] st = edgeState;
-        edge(st, 0, ax, ay, dx0, dy0, py);
-        edge(st, EDGE_STATE, bx, by, dx1, dy1, py);
-        edge(st, 2 * EDGE_STATE, cx, cy, dx2, dy2, py);
-        long k0 = st[0], s0 = st[1], m0 = st[2], q0 = st[3], r0 = st[4], dq0 = st[5], dr0 = st[6], carry0 = st[7];
-        long k1 = st[8], s1 = st[9], m1 = st[10], q1 = st[11], r1 = st[12], dq1 = st[13], dr1 = st[14], carry1 = st[15];
-        long k2 = st[16], s2 = st[17], m2 = st[18], q2 = st[19], r2 = st[20], dq2 = st[21], dr2 = st[22], carry2 = st[23];
-        int[] out = spans;
-        // The remainder overflows on a data-dependent pattern of rows, which a branch would mispredict
-        // about half the time; a sign mask (all ones when r >= m) applies the carry without one. A
-        // horizontal edge has m = r = dr = carry = 0, so its mask is all ones and changes nothing.
-        long over;
-        for (int j = 0; j < rows; j++) {
-            long start = colStart;
-            long end = colEnd;
-            if (dy0 > 0) {
-                end = Math.min(end, q0);
-            } else if (dy0 < 0) {
-                start = Math.max(start, q0 + 1);
-            } else if (k0 <= 0) {
-                end = start;
+        int o = e * EDGE_STATE;
+        long m = st[o + 2];
+        long q = st[o + 3] + st[o + 5];
+        long r = st[o + 4] + st[o + 6];
+        long over = (m - 1 - r) >> 63;
+        st[o + 3] = q + over;
+        st[o + 4] = r - (m & over);
+    }
+
+    /**
+     * For the row whose centre is at the middle corner's height, with both short edges set up for it:
+     * copies the one that bounds the row into {@link #SLOT} and returns true, or returns false when a
+     * horizontal short edge leaves the row empty. Both short edges meet at the middle corner on the
+     * same side of the long edge (the path top, mid, bottom runs one way), so the tighter bound of the
+     * two is the row's bound on that side; they differ only when a centre lies exactly on the corner,
+     * where the top-left bias of each decides.
+     */
+    private boolean midRowEdge(int upper, int lower) {
+        long[] st = edgeState;
+        int ou = upper * EDGE_STATE;
+        int ol = lower * EDGE_STATE;
+        int pick;
+        if (st[ou + 7] == 0 || st[ol + 7] == 0) {
+            // A horizontal edge on this row: the row is in or out by the sign of its K; then the
+            // other short edge (not horizontal, or the triangle had no area) bounds it.
+            int horizontal = st[ou + 7] == 0 ? ou : ol;
+            if (st[horizontal] <= 0) {
+                return false;
             }
-            if (dy1 > 0) {
-                end = Math.min(end, q1);
-            } else if (dy1 < 0) {
-                start = Math.max(start, q1 + 1);
-            } else if (k1 <= 0) {
-                end = start;
-            }
-            if (dy2 > 0) {
-                end = Math.min(end, q2);
-            } else if (dy2 < 0) {
-                start = Math.max(start, q2 + 1);
-            } else if (k2 <= 0) {
-                end = start;
-            }
-            out[2 * j] = (int) start;
-            out[2 * j + 1] = (int) Math.max(start, end);
-            q0 += dq0;
-            r0 += dr0;
-            over = (m0 - 1 - r0) >> 63;
-            q0 += carry0 & over;
-            r0 -= m0 & over;
-            q1 += dq1;
-            r1 += dr1;
-            over = (m1 - 1 - r1) >> 63;
-            q1 += carry1 & over;
-            r1 -= m1 & over;
-            q2 += dq2;
-            r2 += dr2;
-            over = (m2 - 1 - r2) >> 63;
-            q2 += carry2 & over;
-            r2 -= m2 & over;
-            k0 += s0;
-            k1 += s1;
-            k2 += s2;
+            pick = horizontal == ou ? ol : ou;
+        } else {
+            // Right edges end the row at c, left edges start it at 1 - c: the smaller c binds either way.
+            pick = st[ou + 3] <= st[ol + 3] ? ou : ol;
         }
+        System.arraycopy(st, pick, st, SLOT * EDGE_STATE, EDGE_STATE);
+        return true;
     }
 
     private long spans(Framebuffer frame, Texture texture, int uvId, boolean perspective) {
@@ -432,15 +503,73 @@ public final class Rasterizer {
     /** 2^32: texel coordinates in 32.32 fixed point. */
     private static final double FIXED_SCALE = 4294967296.0;
 
+    // The nearest affine fill's per-triangle state, set by prepareAffine and read by affineSection.
+    private int[] color;
+    private float[] depth;
+    private double[] uvOut;
+    private int width;
+    private int[] texels;
+    private int texWidth;
+    private int texHeight;
+    private boolean pot;
+    private int uvId;
+    private long ds;
+    private long dt;
+
+    /** Sets up the nearest affine fill of the current triangle (see {@link #affineSection}). */
+    private void prepareAffine(Framebuffer frame, Texture texture, int id) {
+        color = frame.color();
+        depth = frame.depth();
+        uvOut = frame.uv();
+        width = frame.width();
+        texels = texture.argb();
+        texWidth = texture.width();
+        texHeight = texture.height();
+        // Power-of-two sides wrap with a mask (exact for negative values in two's complement).
+        pot = (texWidth & (texWidth - 1)) == 0 && (texHeight & (texHeight - 1)) == 0;
+        uvId = id;
+        ds = (long) Math.floor(sPlane.dx * FIXED_SCALE);
+        dt = (long) Math.floor(tPlane.dx * FIXED_SCALE);
+    }
+
     /**
-     * The affine fill with texel coordinates stepped in 32.32 fixed point: per pixel an integer add,
-     * a shift and a mask instead of two multiply-adds, two floors and two conversions. Each row's
-     * values are anchored at the triangle's own first column and reach the span by an exact integer
-     * multiply, so a pixel's value depends on the triangle, the row and the column only — never on the
-     * rectangle being filled — and stepping error stays below 2^-32 texel per pixel of the row.
-     * Needs |s|, |t| &lt; 2^30 over the triangle.
+     * Rows [from, to) of the current triangle, bounded by edges {@code longEdge} and {@code shortEdge}
+     * alone (one left, one right; both set up for row {@code from}; see {@link #order}); leaves the long
+     * edge's state stepped to row {@code to}. With {@code fill} false it stores each row's span in
+     * {@link #spans}; with {@code fill} true it fills the span at once, without storing it (the loop
+     * unswitches on the flag), with the nearest affine loop set up by {@link #prepareAffine}.
+     *
+     * <p>That loop steps texel coordinates in 32.32 fixed point: per pixel an integer add, a shift
+     * and a mask instead of two multiply-adds, two floors and two conversions. Each row's values are
+     * anchored at the triangle's own first column and reach the span by an exact integer multiply, so
+     * a pixel's value depends on the triangle, the row and the column only — never on the rectangle
+     * being filled — and stepping error stays below 2^-32 texel per pixel of the row. Needs |s|, |t|
+     * &lt; 2^30 over the triangle.
+     *
+     * @return pixels written (0 when not filling)
      */
-    private long spansAffineFixed(Framebuffer frame, Texture texture, int uvId) {
+    private long section(int longEdge, int shortEdge, int from, int to, boolean fill) {
+        long[] st = edgeState;
+        int lo = longEdge * EDGE_STATE;
+        int ro = shortEdge * EDGE_STATE;
+        boolean longIsLeft = st[lo + 7] > 0;
+        if (!longIsLeft) {
+            int t = lo;
+            lo = ro;
+            ro = t;
+        }
+        long mL = st[lo + 2];
+        long cL = st[lo + 3];
+        long rL = st[lo + 4];
+        long dcL = st[lo + 5];
+        long drL = st[lo + 6];
+        long mR = st[ro + 2];
+        long cR = st[ro + 3];
+        long rR = st[ro + 4];
+        long dcR = st[ro + 5];
+        long drR = st[ro + 6];
+        long cs = colStart;
+        long ce = colEnd;
         double qBase = qPlane.base;
         double qDx = qPlane.dx;
         double qDy = qPlane.dy;
@@ -450,51 +579,77 @@ public final class Rasterizer {
         double tBase = tPlane.base;
         double tDx = tPlane.dx;
         double tDy = tPlane.dy;
-        int width = frame.width();
-        int[] color = frame.color();
-        float[] depth = frame.depth();
-        double[] uv = frame.uv();
-        int[] texels = texture.argb();
-        int tw = texture.width();
-        int th = texture.height();
-        boolean pot = (tw & (tw - 1)) == 0 && (th & (th - 1)) == 0;
+        int width = this.width;
+        int[] color = this.color;
+        float[] depth = this.depth;
+        double[] uv = uvOut;
+        int[] texels = this.texels;
+        int tw = texWidth;
+        int th = texHeight;
+        boolean pot = this.pot;
         int wMask = tw - 1;
         int hMask = th - 1;
         int topRow = th - 1;
-        long ds = (long) Math.floor(sDx * FIXED_SCALE);
-        long dt = (long) Math.floor(tDx * FIXED_SCALE);
+        long ds = this.ds;
+        long dt = this.dt;
+        int uvId = this.uvId;
+        int firstColumn = this.firstColumn;
+        int[] out = spans;
         long written = 0;
-        int[] sp = spans;
-        for (int y = rowStart, j = 0; y < rowEnd; y++, j += 2) {
-            int spanStart = sp[j];
-            int spanEnd = sp[j + 1];
-            if (spanStart >= spanEnd) {
-                continue;
-            }
-            double qRow = qBase + qDy * y;
-            long skip = spanStart - firstColumn;
-            long s = (long) Math.floor((sBase + sDy * y + sDx * firstColumn) * FIXED_SCALE) + ds * skip;
-            long t = (long) Math.floor((tBase + tDy * y + tDx * firstColumn) * FIXED_SCALE) + dt * skip;
-            int rowOffset = y * width;
-            for (int x = spanStart; x < spanEnd; x++, s += ds, t += dt) {
-                float qf = (float) (qRow + qDx * x);
-                int i = rowOffset + x;
-                if (qf > depth[i]) {
-                    depth[i] = qf;
-                    // An arithmetic shift floors, negative coordinates included.
-                    int si = (int) (s >> 32);
-                    int ti = (int) (t >> 32);
-                    int column = pot ? si & wMask : Math.floorMod(si, tw);
-                    int rowFromBottom = pot ? ti & hMask : Math.floorMod(ti, th);
-                    color[i] = texels[(topRow - rowFromBottom) * tw + column] | 0xFF000000;
-                    if (uv != null) {
-                        uv[3 * i] = s / FIXED_SCALE;
-                        uv[3 * i + 1] = t / FIXED_SCALE;
-                        uv[3 * i + 2] = uvId;
+        long over;
+        // The remainder overflows on a data-dependent pattern of rows, which a branch would mispredict
+        // about half the time; a sign mask (all ones when r >= m) applies the carry without one.
+        for (int y = from, j = 2 * (from - rowStart); y < to; y++, j += 2) {
+            long first = Math.max(cs, 1 - cL);
+            long last = Math.min(ce, cR);
+            if (!fill) {
+                out[j] = (int) first;
+                out[j + 1] = (int) Math.max(first, last);
+            } else if (first < last) {
+                int spanStart = (int) first;
+                int spanEnd = (int) last;
+                double qRow = qBase + qDy * y;
+                long skip = spanStart - firstColumn;
+                long s = (long) Math.floor((sBase + sDy * y + sDx * firstColumn) * FIXED_SCALE) + ds * skip;
+                long t = (long) Math.floor((tBase + tDy * y + tDx * firstColumn) * FIXED_SCALE) + dt * skip;
+                int rowOffset = y * width;
+                for (int x = spanStart; x < spanEnd; x++, s += ds, t += dt) {
+                    float qf = (float) (qRow + qDx * x);
+                    int i = rowOffset + x;
+                    if (qf > depth[i]) {
+                        depth[i] = qf;
+                        // An arithmetic shift floors, negative coordinates included.
+                        int si = (int) (s >> 32);
+                        int ti = (int) (t >> 32);
+                        int column = pot ? si & wMask : Math.floorMod(si, tw);
+                        int rowFromBottom = pot ? ti & hMask : Math.floorMod(ti, th);
+                        color[i] = texels[(topRow - rowFromBottom) * tw + column] | 0xFF000000;
+                        if (uv != null) {
+                            uv[3 * i] = s / FIXED_SCALE;
+                            uv[3 * i + 1] = t / FIXED_SCALE;
+                            uv[3 * i + 2] = uvId;
+                        }
+                        written++;
                     }
-                    written++;
                 }
             }
+            cL += dcL;
+            rL += drL;
+            over = (mL - 1 - rL) >> 63;
+            cL += over;
+            rL -= mL & over;
+            cR += dcR;
+            rR += drR;
+            over = (mR - 1 - rR) >> 63;
+            cR += over;
+            rR -= mR & over;
+        }
+        if (longIsLeft) {
+            st[lo + 3] = cL;
+            st[lo + 4] = rL;
+        } else {
+            st[ro + 3] = cR;
+            st[ro + 4] = rR;
         }
         return written;
     }
