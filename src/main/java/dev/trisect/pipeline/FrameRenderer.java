@@ -110,8 +110,18 @@ public final class FrameRenderer implements AutoCloseable {
         int background = settings.background();
         for (Worker w : workers) {
             w.pixels = 0;
+            w.bandNanos = 0;
+            w.overlayNanos = 0;
         }
+        lastChunkCount = chunkCount;
+        // With borders on, each band is outlined right after it is filled, while its rows are in cache.
+        boolean borders = settings.borders();
+        if (borders) {
+            prepareOutlines(chunkCount, height, settings.borderStyle(), settings.tessellation());
+        }
+        long outlinesReady = System.nanoTime();
         parallel(bands, (w, b) -> {
+            long t0 = System.nanoTime();
             int y0 = b * BAND_ROWS;
             int y1 = Math.min(height, y0 + BAND_ROWS);
             frame.clearRows(y0, y1, background);
@@ -121,13 +131,26 @@ public final class FrameRenderer implements AutoCloseable {
                 w.pixels += w.rasterizer.fill(frame, chunk.out, chunk.binItems, chunk.binStart[b],
                         chunk.binStart[b + 1], textures, perspective, 0, y0, width, y1);
             }
+            long t1 = System.nanoTime();
+            if (borders) {
+                outlines.drawBand(w.overlay, frame, b, y0, y1);
+            }
+            long t2 = System.nanoTime();
+            w.bandNanos += t2 - t0;
+            w.overlayNanos += t2 - t1;
         });
-        long rasterDone = System.nanoTime();
-        lastChunkCount = chunkCount;
-        if (settings.borders()) {
-            drawBorders(frame, settings.borderStyle(), settings.tessellation());
-        }
         long end = System.nanoTime();
+        // Filling and outlining run interleaved per band: their wall time is shared out in proportion
+        // to the processor time each took; preparing the outlines counts wholly to the overlay.
+        long bandCpu = 0;
+        long overlayCpu = 0;
+        for (Worker w : workers) {
+            bandCpu += w.bandNanos;
+            overlayCpu += w.overlayNanos;
+        }
+        long overlay = !borders ? 0 : outlinesReady - geometryDone
+                + (bandCpu == 0 ? 0 : Math.round((end - outlinesReady) * (double) overlayCpu / bandCpu));
+        long rasterDone = end - overlay;
         return statistics(mesh.triangleCount(), chunkCount, start, transformed, geometryDone, rasterDone, end);
     }
 
@@ -153,19 +176,22 @@ public final class FrameRenderer implements AutoCloseable {
      */
     public long drawBorders(Framebuffer frame, BorderStyle style, TessellationSettings tessellation) {
         long start = System.nanoTime();
-        int chunkCount = lastChunkCount;
-        int width = frame.width();
         int height = frame.height();
+        prepareOutlines(lastChunkCount, height, style, tessellation);
         parallel(bandCount(height), (w, b) -> {
             int y0 = b * BAND_ROWS;
             int y1 = Math.min(height, y0 + BAND_ROWS);
-            for (int c = 0; c < chunkCount; c++) {
-                Chunk chunk = chunks[c];
-                w.overlay.draw(frame, chunk.out, chunk.binItems, chunk.binStart[b], chunk.binStart[b + 1],
-                        0, y0, width, y1, style, tessellation.maxDepth(), tessellation.maxError());
-            }
+            // The frame has long left the cache: fetch the band's rows in order first, which costs
+            // less than missing on them at every line pixel.
+            w.touched += frame.touchRows(y0, y1);
+            outlines.drawBand(w.overlay, frame, b, y0, y1);
         });
         return System.nanoTime() - start;
+    }
+
+    private void prepareOutlines(int chunkCount, int height, BorderStyle style, TessellationSettings tessellation) {
+        outlines.resize(chunkCount);
+        parallel(chunkCount, (w, c) -> outlines.prepare(c, chunks[c].out, style, tessellation, height));
     }
 
     /**
@@ -204,6 +230,8 @@ public final class FrameRenderer implements AutoCloseable {
     private long frameBudget;
     /** The depth cap the last frame's budget forced, or -1. */
     private int budgetDepth = -1;
+    /** The border overlay's preparation of the chunks. */
+    private final Outlines outlines = new Outlines();
     /** Chunks holding the last rendered frame's screen triangles, for {@link #drawBorders}. */
     private int lastChunkCount;
 
@@ -451,6 +479,11 @@ public final class FrameRenderer implements AutoCloseable {
         int[] batchIds = new int[BATCH];
         int[] batchMaterials = new int[BATCH];
         long pixels;
+        /** Nanoseconds this thread spent on bands this frame, and on outlining them. */
+        long bandNanos;
+        long overlayNanos;
+        /** Keeps what {@link Framebuffer#touchRows} read. */
+        long touched;
     }
 
     /** One contiguous range of input triangles: its screen triangles, their bins and its counters. */

@@ -2,8 +2,8 @@ package dev.trisect.raster;
 
 /**
  * Draws the outline of every filled triangle (every tessellated piece) over the frame, in yellow,
- * or in magenta for a piece filled per pixel by the fallback ({@link OverlayColours}), restricted to a
- * rectangle so that it can run per band like the fill.
+ * or in magenta for a piece filled per pixel by the fallback ({@link OverlayColours}), one band of
+ * rows at a time from an {@link OutlinePlan}, so that it can run per band like the fill.
  *
  * <p>An edge lights the pixel nearest to it in every column (mostly horizontal edges) or row
  * (mostly vertical ones) whose centre lies within the edge's extent. The pixel is a function of the
@@ -11,6 +11,7 @@ package dev.trisect.raster;
  * either triangle and in any band lights the same pixels. A line pixel is drawn where the outlined
  * triangle's own depth plane is not behind what the frame holds there (within a small relative
  * tolerance), so outlines of hidden pieces stay hidden while the visible ones show on silhouettes.
+ * An edge two triangles share is walked once (see {@link OutlinePlan}).
  */
 public final class BorderOverlay {
     /** The colour of an ordinary piece's outline, #FFFF00. */
@@ -19,47 +20,128 @@ public final class BorderOverlay {
     /** Relative 1/w tolerance: a line pixel may lie this much behind the stored surface and still show. */
     private static final double DEPTH_TOLERANCE = 1.0 / 512;
 
-    private final Plane depth = new Plane();
-    /** Outline colour of the triangle being drawn. */
-    private int colour = YELLOW;
-    /** Opacity of the triangle being drawn, 0..1, and its screen area in square pixels. */
-    private double alpha = 1;
-    private double area;
+    /** The triangle whose turn it is to walk the edge: its 1/w plane, colour and opacity. */
+    private double qBase;
+    private double qDx;
+    private double qDy;
+    private int colour;
+    private double alpha;
+    /** The earlier triangle sharing the edge, applied first at each pixel, when {@link #shared}. */
+    private boolean shared;
+    private double qBaseEarlier;
+    private double qDxEarlier;
+    private double qDyEarlier;
+    private int colourEarlier;
+    private double alphaEarlier;
 
     /**
-     * Outlines triangles {@code order[from..to)} within pixels {@code [x0, x1) x [y0, y1)}.
+     * Outlines the edges of {@code plan}'s band {@code band} within pixels {@code [x0, x1) x [y0, y1)},
+     * which must hold that band's rows lighting (x0 &gt;= 0).
      *
-     * @return number of pixels painted
+     * @return number of outline pixels drawn (a pixel drawn by both triangles sharing an edge counts twice)
      */
-    public long draw(Framebuffer frame, ScreenTriangles triangles, int[] order, int from, int to,
-                     int x0, int y0, int x1, int y1) {
-        return draw(frame, triangles, order, from, to, x0, y0, x1, y1, BorderStyle.plain(), 0, 1);
+    public long draw(Framebuffer frame, OutlinePlan plan, int band, int x0, int y0, int x1, int y1) {
+        double[] planes = plan.planes;
+        int[] colours = plan.colours;
+        double[] alphas = plan.alphas;
+        int[] items = plan.binItems;
+        double[] lines = plan.edgeLine;
+        int[] spans = plan.edgeSpan;
+        int[] cross = plan.edgeCross;
+        long painted = 0;
+        for (int n = plan.binStart[band], end = plan.binStart[band + 1]; n < end; n++) {
+            int edge = items[n];
+            int tri = plan.edgeOwner[edge];
+            qBase = planes[3 * tri];
+            qDx = planes[3 * tri + 1];
+            qDy = planes[3 * tri + 2];
+            colour = colours[tri];
+            alpha = alphas[tri];
+            int earlier = plan.edgeEarlier[edge];
+            shared = earlier >= 0;
+            if (shared) {
+                qBaseEarlier = planes[3 * earlier];
+                qDxEarlier = planes[3 * earlier + 1];
+                qDyEarlier = planes[3 * earlier + 2];
+                colourEarlier = colours[earlier];
+                alphaEarlier = alphas[earlier];
+            }
+            double xa = lines[3 * edge];
+            double ya = lines[3 * edge + 1];
+            double slope = lines[3 * edge + 2];
+            int first = spans[2 * edge];
+            int last = spans[2 * edge + 1];
+            int crossFirst = cross[2 * edge];
+            int crossLast = cross[2 * edge + 1];
+            if (plan.edgeByColumn[edge]) {
+                painted += crossFirst >= y0 && crossLast < y1 && first >= x0 && last < x1
+                        ? byColumnInside(frame, xa, ya, slope, first, last)
+                        : byColumn(frame, xa, ya, slope, first, last, x0, y0, x1, y1);
+            } else {
+                int from = Math.max(y0, first);
+                int to = Math.min(y1 - 1, last);
+                painted += crossFirst >= x0 && crossLast < x1 ? byRowInside(frame, xa, ya, slope, from, to)
+                        : byRow(frame, xa, ya, slope, from, to, x0, x1);
+            }
+        }
+        return painted;
     }
 
     /**
-     * Outlines triangles {@code order[from..to)} within pixels {@code [x0, x1) x [y0, y1)} in a style.
-     *
-     * @param maxLevel the depth cap, drawn red when colouring by depth
-     * @param maxError the Max error threshold in pixels, drawn yellow when colouring by bound
-     * @return number of pixels painted
+     * Walks a mostly horizontal edge: in column c, the pixel on row floor(ya + (c + 0.5 - xa) * slope).
+     * Only the columns whose rows can fall within [y0, y1) are visited, solved from the slope with a
+     * column of margin; the exact test decides.
      */
-    public long draw(Framebuffer frame, ScreenTriangles triangles, int[] order, int from, int to,
-                     int x0, int y0, int x1, int y1, BorderStyle style, int maxLevel, double maxError) {
-        int[] f = triangles.fixed();
-        long painted = 0;
-        for (int n = from; n < to; n++) {
-            int tri = order[n];
-            if (style.onlyFallback() && !triangles.perPixel()[tri] || !depthPlane(triangles, tri)) {
-                continue;
+    private int byColumn(Framebuffer frame, double xa, double ya, double slope, int first, int last,
+                         int x0, int y0, int x1, int y1) {
+        double from = first;
+        double to = last;
+        if (slope != 0) {
+            double c0 = xa - 0.5 + (y0 - ya) / slope;
+            double c1 = xa - 0.5 + (y1 - ya) / slope;
+            from = Math.max(from, Math.floor(Math.min(c0, c1)) - 1);
+            to = Math.min(to, Math.ceil(Math.max(c0, c1)) + 1);
+        }
+        int c = (int) Math.max(from, x0);
+        int end = (int) Math.min(to, x1 - 1);
+        int painted = 0;
+        for (; c <= end; c++) {
+            double r = ya + (c + 0.5 - xa) * slope;
+            // r >= y0 >= 0, so the cast floors.
+            if (r >= y0 && r < y1) {
+                painted += plot(frame, c, (int) r);
             }
-            colour = style.colouring() == BorderStyle.Colouring.YELLOW ? OverlayColours.of(triangles, tri)
-                    : OverlayColours.of(triangles, tri, style.colouring(), maxLevel, maxError);
-            alpha = style.fade() ? fadeAlpha(area, perimeter(triangles, tri)) : 1;
-            int o = tri * ScreenTriangles.FIXED_STRIDE;
-            for (int e = 0; e < 3; e++) {
-                int a = o + 2 * e;
-                int b = o + 2 * ((e + 1) % 3);
-                painted += line(frame, f[a], f[a + 1], f[b], f[b + 1], x0, y0, x1, y1);
+        }
+        return painted;
+    }
+
+    /** {@link #byColumn} for an edge whose pixels all lie within the band and the frame. */
+    private int byColumnInside(Framebuffer frame, double xa, double ya, double slope, int first, int last) {
+        int painted = 0;
+        for (int c = first; c <= last; c++) {
+            // At least the edge's first row, >= 0, so the cast floors.
+            painted += plot(frame, c, (int) (ya + (c + 0.5 - xa) * slope));
+        }
+        return painted;
+    }
+
+    /** {@link #byRow} for an edge whose pixels all lie within the frame's columns. */
+    private int byRowInside(Framebuffer frame, double xa, double ya, double slope, int first, int last) {
+        int painted = 0;
+        for (int r = first; r <= last; r++) {
+            painted += plot(frame, (int) (xa + (r + 0.5 - ya) * slope), r);
+        }
+        return painted;
+    }
+
+    /** Walks a mostly vertical edge over rows first..last: in row r, the pixel in column floor(xa + (r + 0.5 - ya) * slope). */
+    private int byRow(Framebuffer frame, double xa, double ya, double slope, int first, int last, int x0, int x1) {
+        int painted = 0;
+        for (int r = first; r <= last; r++) {
+            double c = xa + (r + 0.5 - ya) * slope;
+            // c >= x0 >= 0, so the cast floors.
+            if (c >= x0 && c < x1) {
+                painted += plot(frame, (int) c, r);
             }
         }
         return painted;
@@ -87,92 +169,21 @@ public final class BorderOverlay {
         return Math.max(MIN_ALPHA, r * r);
     }
 
-    /** The 1/w plane over pixel centres; false for a triangle with no area. */
-    private boolean depthPlane(ScreenTriangles triangles, int tri) {
-        double[] sc = triangles.screen();
-        double[] at = triangles.attributes();
-        int s = tri * ScreenTriangles.SCREEN_STRIDE;
-        int a = tri * ScreenTriangles.ATTRIBUTE_STRIDE;
-        double x0 = sc[s];
-        double y0 = sc[s + 1];
-        double ex1 = sc[s + 2] - x0;
-        double ey1 = sc[s + 3] - y0;
-        double ex2 = sc[s + 4] - x0;
-        double ey2 = sc[s + 5] - y0;
-        double det = ex1 * ey2 - ex2 * ey1;
-        if (det == 0 || !Double.isFinite(det)) {
-            return false;
-        }
-        area = Math.abs(det) / 2;
-        depth.fit(x0, y0, ex1, ey1, ex2, ey2, 1 / det, at[a], at[a + 3], at[a + 6]);
-        return true;
-    }
-
-    private long line(Framebuffer frame, long ax, long ay, long bx, long by, int x0, int y0, int x1, int y1) {
-        // Canonical direction: from the smaller (x, y) end, so both triangles sharing the edge agree.
-        if (ax > bx || (ax == bx && ay > by)) {
-            long t = ax;
-            ax = bx;
-            bx = t;
-            t = ay;
-            ay = by;
-            by = t;
-        }
-        double xa = ax / (double) FixedPoint.ONE;
-        double ya = ay / (double) FixedPoint.ONE;
-        double xb = bx / (double) FixedPoint.ONE;
-        double yb = by / (double) FixedPoint.ONE;
-        double dx = xb - xa;
-        double dy = yb - ya;
-        long painted = 0;
-        if (Math.abs(dx) >= Math.abs(dy)) {
-            if (dx == 0) {
-                return 0;
-            }
-            double slope = dy / dx;
-            int first = Math.max(x0, (int) Math.ceil(xa - 0.5));
-            int last = Math.min(x1 - 1, (int) Math.floor(xb - 0.5));
-            for (int c = first; c <= last; c++) {
-                int r = (int) Math.floor(ya + (c + 0.5 - xa) * slope);
-                if (r >= y0 && r < y1) {
-                    painted += plot(frame, c, r);
-                }
-            }
-        } else {
-            double slope = dx / dy;
-            double yLow = Math.min(ya, yb);
-            double yHigh = Math.max(ya, yb);
-            int first = Math.max(y0, (int) Math.ceil(yLow - 0.5));
-            int last = Math.min(y1 - 1, (int) Math.floor(yHigh - 0.5));
-            for (int r = first; r <= last; r++) {
-                int c = (int) Math.floor(xa + (r + 0.5 - ya) * slope);
-                if (c >= x0 && c < x1) {
-                    painted += plot(frame, c, r);
-                }
-            }
-        }
-        return painted;
-    }
-
+    /** Applies the earlier sharing triangle's outline, if any, then this one's at pixel (x, y). */
     private int plot(Framebuffer frame, int x, int y) {
         int i = y * frame.width() + x;
-        double q = depth.base + depth.dx * x + depth.dy * y;
-        if (q < frame.depth()[i] * (1 - DEPTH_TOLERANCE)) {
-            return 0;
+        double limit = frame.depth()[i] * (1 - DEPTH_TOLERANCE);
+        int[] color = frame.color();
+        int painted = 0;
+        if (shared && !(qBaseEarlier + qDxEarlier * x + qDyEarlier * y < limit)) {
+            color[i] = alphaEarlier >= 1 ? colourEarlier : blend(color[i], colourEarlier, alphaEarlier);
+            painted++;
         }
-        if (alpha >= 1) {
-            frame.color()[i] = colour;
-        } else {
-            frame.color()[i] = blend(frame.color()[i], colour, alpha);
+        if (!(qBase + qDx * x + qDy * y < limit)) {
+            color[i] = alpha >= 1 ? colour : blend(color[i], colour, alpha);
+            painted++;
         }
-        return 1;
-    }
-
-    private static double perimeter(ScreenTriangles triangles, int tri) {
-        double[] sc = triangles.screen();
-        int s = tri * ScreenTriangles.SCREEN_STRIDE;
-        return Math.hypot(sc[s + 2] - sc[s], sc[s + 3] - sc[s + 1]) + Math.hypot(sc[s + 4] - sc[s + 2],
-                sc[s + 5] - sc[s + 3]) + Math.hypot(sc[s] - sc[s + 4], sc[s + 1] - sc[s + 5]);
+        return painted;
     }
 
     /** {@code over} laid on {@code under} with opacity {@code a}, per sRGB channel, opaque result. */

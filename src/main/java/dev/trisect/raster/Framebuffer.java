@@ -81,4 +81,20 @@ public final class Framebuffer {
             java.util.Arrays.fill(uv, 3 * from, 3 * to, 0.0);
         }
     }
+
+    /**
+     * Reads rows {@code [y0, y1)} of the colour and depth buffers in order, one value per cache
+     * line, to bring them into the cache before scattered access (the hardware fetches ahead on such
+     * a walk, and not on a scattered one).
+     *
+     * @return a sum of what was read, for the caller to keep (so that the reads are not optimised away)
+     */
+    public int touchRows(int y0, int y1) {
+        int sum = 0;
+        // 16 four-byte values to a 64-byte line.
+        for (int i = y0 * width, end = y1 * width; i < end; i += 16) {
+            sum += color[i] + Float.floatToRawIntBits(depth[i]);
+        }
+        return sum;
+    }
 }

@@ -21,13 +21,21 @@ class BorderOverlayTest {
         return order;
     }
 
-    private static Framebuffer draw(ScreenTriangles t, int bandRows) {
+    /** The triangles filled per pixel over a black frame. */
+    private static Framebuffer filled(ScreenTriangles t) {
         Framebuffer fb = new Framebuffer(W, H);
         fb.clearRows(0, H, 0);
         new Rasterizer().fill(fb, t, all(t), 0, t.count(), GREY, true, 0, 0, W, H);
+        return fb;
+    }
+
+    private static Framebuffer draw(ScreenTriangles t, int bandRows) {
+        Framebuffer fb = filled(t);
+        OutlinePlan plan = new OutlinePlan();
+        plan.prepare(t, BorderStyle.plain(), 0, 1, H, bandRows);
         BorderOverlay overlay = new BorderOverlay();
-        for (int y = 0; y < H; y += bandRows) {
-            overlay.draw(fb, t, all(t), 0, t.count(), 0, y, W, Math.min(H, y + bandRows));
+        for (int y = 0, band = 0; y < H; y += bandRows, band++) {
+            overlay.draw(fb, plan, band, 0, y, W, Math.min(H, y + bandRows));
         }
         return fb;
     }
@@ -117,5 +125,46 @@ class BorderOverlayTest {
             }
         }
         assertTrue(yellowLeft > 60 && magentaRight > 60, yellowLeft + " yellow, " + magentaRight + " magenta");
+    }
+
+    private static Framebuffer drawEachAlone(ScreenTriangles t, BorderStyle style) {
+        Framebuffer fb = filled(t);
+        BorderOverlay overlay = new BorderOverlay();
+        for (int i = 0; i < t.count(); i++) {
+            // A list of one triangle: nothing to share.
+            ScreenTriangles one = new ScreenTriangles();
+            double[] s = t.screen();
+            double[] a = t.attributes();
+            one.add(s[6 * i], s[6 * i + 1], a[9 * i], 0, 0, s[6 * i + 2], s[6 * i + 3], a[9 * i + 3], 0, 0,
+                    s[6 * i + 4], s[6 * i + 5], a[9 * i + 6], 0, 0, i, 0, t.perPixel()[i]);
+            OutlinePlan plan = new OutlinePlan();
+            plan.prepare(one, style, 0, 1, H, H);
+            overlay.draw(fb, plan, 0, 0, 0, W, H);
+        }
+        return fb;
+    }
+
+    private static Framebuffer drawTogether(ScreenTriangles t, BorderStyle style) {
+        Framebuffer fb = filled(t);
+        OutlinePlan plan = new OutlinePlan();
+        plan.prepare(t, style, 0, 1, H, H);
+        new BorderOverlay().draw(fb, plan, 0, 0, 0, W, H);
+        return fb;
+    }
+
+    @Test
+    void aSharedEdgeWalkedOnceLooksAsIfDrawnTwice() {
+        // A quad split along its diagonal, both halves on one plane, the second a fallback piece:
+        // the diagonal is walked once, applying the first half's outline and then the second's.
+        ScreenTriangles t = new ScreenTriangles();
+        t.add(10, 10, 0.5, 0, 0, 70, 12, 0.5, 0, 0, 12, 50, 0.5, 0, 0, 0, 0, false);
+        t.add(70, 12, 0.5, 0, 0, 68, 52, 0.5, 0, 0, 12, 50, 0.5, 0, 0, 1, 0, true);
+        for (BorderStyle style : new BorderStyle[] {BorderStyle.plain(),
+                new BorderStyle(BorderStyle.Colouring.YELLOW, true), BorderStyle.fallbackOnly()}) {
+            assertArrayEquals(drawEachAlone(t, style).color(), drawTogether(t, style).color(), style.toString());
+        }
+        // The diagonal is magenta where the later (fallback) piece draws over the earlier's yellow.
+        Framebuffer fb = drawTogether(t, BorderStyle.plain());
+        assertEquals(OverlayColours.FALLBACK, fb.color()[31 * W + 40]);
     }
 }

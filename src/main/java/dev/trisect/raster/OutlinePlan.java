@@ -1,0 +1,352 @@
+package dev.trisect.raster;
+
+import java.util.Arrays;
+
+/**
+ * The border overlay's work for one list of screen triangles, prepared once per frame rather than
+ * once per band: each outlined triangle's depth plane, colour and opacity, and the edges to walk,
+ * each set up once (its canonical ends, slope and pixel range) and sorted into the bands of rows its
+ * pixels can fall on.
+ *
+ * <p>An edge shared by two outlined triangles of the list (the same snapped corners, as the inner
+ * edges of a tessellated triangle's pieces are) is walked once, in the later triangle's turn; at each
+ * of its pixels the earlier triangle's outline is applied first, then the later one's, each with its
+ * own depth test, colour and opacity. That is what drawing the edge twice did, except where a third
+ * outline, between the two in drawing order, lights the same pixel in another colour or opacity.
+ *
+ * <p>Not thread-safe: prepared by one thread, then read by any number.
+ */
+public final class OutlinePlan {
+    /** {@link #edgeEarlier} of an edge no earlier triangle shares. */
+    static final int ALONE = -1;
+    /** Per-corner-edge mark of an edge a later triangle shares and walks. */
+    private static final int WALKED_LATER = -2;
+    /** A hash slot holding no edge. */
+    private static final int EMPTY = -1;
+    /** A hash slot whose edge has found its partner: probing passes over it. */
+    private static final int MATCHED = -2;
+    /** Storage for more than this many triangles may shrink when it is far larger than needed. */
+    private static final int TRIM_FLOOR = 16384;
+
+    /** Per triangle: the 1/w plane over pixel centres, base, dx, dy (as {@link Plane}). */
+    double[] planes = new double[0];
+    /** Per triangle: outline colour, opaque ARGB, or 0 for a triangle not outlined. */
+    int[] colours = new int[0];
+    /** Per triangle: outline opacity, 0..1. */
+    double[] alphas = new double[0];
+    /** Per triangle corner edge (edge e from corner e to corner e + 1): the earlier sharer, ALONE or WALKED_LATER. */
+    private int[] partner = new int[0];
+
+    /** Edges to walk, in drawing order: the triangle whose turn it is and the earlier sharer (or ALONE). */
+    int[] edgeOwner = new int[0];
+    int[] edgeEarlier = new int[0];
+    /**
+     * Per edge, pixels: the canonical (smaller x, then y) end's x and y, and the slope: dy/dx for a
+     * mostly horizontal edge, dx/dy for a mostly vertical one.
+     */
+    double[] edgeLine = new double[0];
+    /** Per edge: first and last column (mostly horizontal) or row (mostly vertical) it lights. */
+    int[] edgeSpan = new int[0];
+    /**
+     * Per edge: the first and last row (mostly horizontal) or column (mostly vertical) its pixels
+     * can fall on, unclipped: an edge within the band and the frame is walked without per-pixel tests.
+     */
+    int[] edgeCross = new int[0];
+    /** Per edge: whether it is mostly horizontal (walked by column). */
+    boolean[] edgeByColumn = new boolean[0];
+    private int[] edgeFirstBand = new int[0];
+    private int[] edgeLastBand = new int[0];
+    private int edgeCount;
+
+    /** Band b's edges are {@code binItems[binStart[b] .. binStart[b + 1])}, in drawing order. */
+    int[] binStart = new int[1];
+    int[] binItems = new int[0];
+    private int[] table = new int[0];
+    private final Plane depth = new Plane();
+
+    /**
+     * Prepares the outlines of the triangles of {@code triangles} that the fill draws (those with an
+     * area covering a pixel centre on a row of the frame; only fallback pieces when the style says so)
+     * in {@code style}, binned into bands of {@code bandRows} rows of a frame {@code height} pixels high.
+     *
+     * @param maxLevel the depth cap, drawn red when colouring by depth
+     * @param maxError the Max error threshold in pixels, drawn yellow when colouring by bound
+     */
+    public void prepare(ScreenTriangles triangles, BorderStyle style, int maxLevel, double maxError, int height,
+                        int bandRows) {
+        int n = triangles.count();
+        ensureTriangles(n);
+        setUp(triangles, style, maxLevel, maxError, n, height);
+        matchEdges(triangles.fixed(), n);
+        edges(triangles.fixed(), n, height, bandRows);
+        bin((height + bandRows - 1) / bandRows);
+    }
+
+    private void setUp(ScreenTriangles triangles, BorderStyle style, int maxLevel, double maxError, int n,
+                       int height) {
+        double[] sc = triangles.screen();
+        double[] at = triangles.attributes();
+        int[] f = triangles.fixed();
+        boolean[] perPixel = triangles.perPixel();
+        for (int tri = 0; tri < n; tri++) {
+            colours[tri] = 0;
+            int o = tri * ScreenTriangles.FIXED_STRIDE;
+            int minY = Math.min(f[o + 1], Math.min(f[o + 3], f[o + 5]));
+            int maxY = Math.max(f[o + 1], Math.max(f[o + 3], f[o + 5]));
+            // The rows whose centres it can cover, as ScreenTriangles.firstRow and endRow.
+            int firstRow = Math.max(0, -Math.floorDiv(FixedPoint.HALF - minY, FixedPoint.ONE));
+            int endRow = Math.min(height, Math.floorDiv(maxY - FixedPoint.HALF, FixedPoint.ONE) + 1);
+            if (firstRow >= endRow || style.onlyFallback() && !perPixel[tri]) {
+                continue;
+            }
+            int s = tri * ScreenTriangles.SCREEN_STRIDE;
+            double x0 = sc[s];
+            double y0 = sc[s + 1];
+            double ex1 = sc[s + 2] - x0;
+            double ey1 = sc[s + 3] - y0;
+            double ex2 = sc[s + 4] - x0;
+            double ey2 = sc[s + 5] - y0;
+            double det = ex1 * ey2 - ex2 * ey1;
+            if (det == 0 || !Double.isFinite(det)) {
+                continue;
+            }
+            int a = tri * ScreenTriangles.ATTRIBUTE_STRIDE;
+            depth.fit(x0, y0, ex1, ey1, ex2, ey2, 1 / det, at[a], at[a + 3], at[a + 6]);
+            planes[3 * tri] = depth.base;
+            planes[3 * tri + 1] = depth.dx;
+            planes[3 * tri + 2] = depth.dy;
+            colours[tri] = style.colouring() == BorderStyle.Colouring.YELLOW ? OverlayColours.of(triangles, tri)
+                    : OverlayColours.of(triangles, tri, style.colouring(), maxLevel, maxError);
+            alphas[tri] = style.fade() ? BorderOverlay.fadeAlpha(Math.abs(det) / 2, perimeter(sc, s)) : 1;
+        }
+    }
+
+    private static double perimeter(double[] sc, int s) {
+        return Math.hypot(sc[s + 2] - sc[s], sc[s + 3] - sc[s + 1]) + Math.hypot(sc[s + 4] - sc[s + 2],
+                sc[s + 5] - sc[s + 3]) + Math.hypot(sc[s] - sc[s + 4], sc[s + 1] - sc[s + 5]);
+    }
+
+    /** Pairs up the edges of outlined triangles that have the same two snapped corners. */
+    private void matchEdges(int[] f, int n) {
+        int mask = table.length - 1;
+        Arrays.fill(table, EMPTY);
+        for (int tri = 0; tri < n; tri++) {
+            int o = tri * ScreenTriangles.FIXED_STRIDE;
+            for (int e = 0; e < 3; e++) {
+                int edge = 3 * tri + e;
+                partner[edge] = ALONE;
+                if (colours[tri] == 0) {
+                    continue;
+                }
+                int a = o + 2 * e;
+                int b = o + next(e);
+                int ax = f[a];
+                int ay = f[a + 1];
+                int bx = f[b];
+                int by = f[b + 1];
+                // Symmetric in the two ends: the sharer walks the edge the other way round.
+                int slot = hash(ax + bx, ay + by) & mask;
+                while (true) {
+                    int held = table[slot];
+                    if (held == EMPTY) {
+                        table[slot] = edge;
+                        break;
+                    }
+                    if (held >= 0 && sameEdge(f, held, ax, ay, bx, by)) {
+                        partner[edge] = held / 3;
+                        partner[held] = WALKED_LATER;
+                        table[slot] = MATCHED;
+                        break;
+                    }
+                    slot = (slot + 1) & mask;
+                }
+            }
+        }
+    }
+
+    /** Offset in a triangle's corners of edge e's second end: corner e + 1, wrapping. */
+    private static int next(int e) {
+        return e == 2 ? 0 : 2 * e + 2;
+    }
+
+    /** Hash of an edge by the sum of its ends (twice its midpoint), the same from either end. */
+    private static int hash(int sumX, int sumY) {
+        int h = sumX * 0x9E3779B1 ^ sumY * 0x85EBCA6B;
+        return h ^ (h >>> 15) ^ (h >>> 23);
+    }
+
+    private static boolean sameEdge(int[] f, int edge, int ax, int ay, int bx, int by) {
+        int tri = edge / 3;
+        int e = edge - 3 * tri;
+        int o = tri * ScreenTriangles.FIXED_STRIDE;
+        int a = o + 2 * e;
+        int b = o + next(e);
+        return f[a] == ax && f[a + 1] == ay && f[b] == bx && f[b + 1] == by
+                || f[a] == bx && f[a + 1] == by && f[b] == ax && f[b + 1] == ay;
+    }
+
+    /**
+     * Lists the edges to walk in drawing order, each with its line, its pixel span and the bands its
+     * pixels can fall on. A mostly horizontal edge lights, in each column whose centre lies within it,
+     * the row holding the edge's height there: rows from that of its upper end to that of its lower
+     * end (see {@link #cellBelow}). A mostly vertical edge lights one pixel in each row whose centre
+     * lies within it, likewise in the columns between its ends'.
+     */
+    private void edges(int[] f, int n, int height, int bandRows) {
+        ensureEdges(3 * n);
+        int count = 0;
+        for (int tri = 0; tri < n; tri++) {
+            if (colours[tri] == 0) {
+                continue;
+            }
+            int o = tri * ScreenTriangles.FIXED_STRIDE;
+            for (int e = 0; e < 3; e++) {
+                int earlier = partner[3 * tri + e];
+                if (earlier == WALKED_LATER) {
+                    continue;
+                }
+                int a = o + 2 * e;
+                int b = o + next(e);
+                long ax = f[a];
+                long ay = f[a + 1];
+                long bx = f[b];
+                long by = f[b + 1];
+                // Canonical direction: from the smaller (x, y) end, so both sharers would light the same pixels.
+                if (ax > bx || ax == bx && ay > by) {
+                    long t = ax;
+                    ax = bx;
+                    bx = t;
+                    t = ay;
+                    ay = by;
+                    by = t;
+                }
+                double xa = ax / (double) FixedPoint.ONE;
+                double ya = ay / (double) FixedPoint.ONE;
+                double xb = bx / (double) FixedPoint.ONE;
+                double yb = by / (double) FixedPoint.ONE;
+                double dx = xb - xa;
+                double dy = yb - ya;
+                boolean byColumn = Math.abs(dx) >= Math.abs(dy);
+                int first;
+                int last;
+                int rowFirst;
+                int rowLast;
+                int crossFirst;
+                int crossLast;
+                double slope;
+                if (byColumn) {
+                    if (dx == 0) {
+                        continue;
+                    }
+                    slope = dy / dx;
+                    first = (int) Math.ceil(xa - 0.5);
+                    last = (int) Math.floor(xb - 0.5);
+                    crossFirst = cellBelow(Math.min(ay, by));
+                    crossLast = (int) Math.floorDiv(Math.max(ay, by), FixedPoint.ONE);
+                    rowFirst = crossFirst;
+                    rowLast = crossLast;
+                } else {
+                    slope = dx / dy;
+                    first = (int) Math.ceil(Math.min(ya, yb) - 0.5);
+                    last = (int) Math.floor(Math.max(ya, yb) - 0.5);
+                    crossFirst = cellBelow(ax);
+                    crossLast = (int) Math.floorDiv(bx, FixedPoint.ONE);
+                    rowFirst = first;
+                    rowLast = last;
+                }
+                rowFirst = Math.max(0, rowFirst);
+                rowLast = Math.min(height - 1, rowLast);
+                if (first > last || rowFirst > rowLast) {
+                    continue;
+                }
+                edgeOwner[count] = tri;
+                edgeEarlier[count] = earlier;
+                edgeLine[3 * count] = xa;
+                edgeLine[3 * count + 1] = ya;
+                edgeLine[3 * count + 2] = slope;
+                edgeSpan[2 * count] = first;
+                edgeSpan[2 * count + 1] = last;
+                edgeCross[2 * count] = crossFirst;
+                edgeCross[2 * count + 1] = crossLast;
+                edgeByColumn[count] = byColumn;
+                edgeFirstBand[count] = rowFirst / bandRows;
+                edgeLastBand[count] = rowLast / bandRows;
+                count++;
+            }
+        }
+        edgeCount = count;
+    }
+
+    /**
+     * The lowest pixel row (or column) a line pixel can fall on for an edge whose lower end lies at
+     * {@code low} sub-pixel units: that end's, or the one before when the end lies on a pixel
+     * boundary, where rounding of the line's height can reach just below it.
+     */
+    private static int cellBelow(long low) {
+        return (int) Math.floorDiv(low, FixedPoint.ONE) - (low % FixedPoint.ONE == 0 ? 1 : 0);
+    }
+
+    /** Sorts the edges into bands, keeping their order within a band. */
+    private void bin(int bands) {
+        if (binStart.length < bands + 1) {
+            binStart = new int[bands + 1];
+        }
+        Arrays.fill(binStart, 0, bands + 1, 0);
+        int total = 0;
+        for (int i = 0; i < edgeCount; i++) {
+            for (int b = edgeFirstBand[i]; b <= edgeLastBand[i]; b++) {
+                binStart[b + 1]++;
+            }
+            total += edgeLastBand[i] - edgeFirstBand[i] + 1;
+        }
+        for (int b = 0; b < bands; b++) {
+            binStart[b + 1] += binStart[b];
+        }
+        if (binItems.length < total) {
+            binItems = new int[Math.max(total, 2 * binItems.length)];
+        }
+        // Fill each band's list in edge order, using binStart as moving cursors, then restore.
+        for (int i = 0; i < edgeCount; i++) {
+            for (int b = edgeFirstBand[i]; b <= edgeLastBand[i]; b++) {
+                binItems[binStart[b]++] = i;
+            }
+        }
+        for (int b = bands; b > 0; b--) {
+            binStart[b] = binStart[b - 1];
+        }
+        binStart[0] = 0;
+    }
+
+    /** Makes room for {@code n} triangles; gives storage back when it has become far larger than needed. */
+    private void ensureTriangles(int n) {
+        int capacity = colours.length;
+        if (capacity < n || capacity > TRIM_FLOOR && capacity > 4 * n) {
+            int size = capacity < n ? Math.max(n, 2 * capacity) : 2 * n;
+            planes = new double[3 * size];
+            colours = new int[size];
+            alphas = new double[size];
+            partner = new int[3 * size];
+        }
+        // Open addressing at a load of at most 1/2 over the 3 n edges.
+        int slots = Integer.highestOneBit(Math.max(16, 6 * n - 1)) << 1;
+        if (table.length < slots || table.length > 8 * slots && table.length > 4 * TRIM_FLOOR) {
+            table = new int[slots];
+        }
+    }
+
+    private void ensureEdges(int n) {
+        int capacity = edgeOwner.length;
+        if (capacity < n || capacity > 3 * TRIM_FLOOR && capacity > 4 * n) {
+            int size = capacity < n ? Math.max(n, 2 * capacity) : 2 * n;
+            edgeOwner = new int[size];
+            edgeEarlier = new int[size];
+            edgeLine = new double[3 * size];
+            edgeSpan = new int[2 * size];
+            edgeCross = new int[2 * size];
+            edgeByColumn = new boolean[size];
+            edgeFirstBand = new int[size];
+            edgeLastBand = new int[size];
+            binItems = new int[Math.min(binItems.length, 4 * size)];
+        }
+    }
+}

@@ -1,0 +1,47 @@
+package dev.trisect.pipeline;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+
+import dev.trisect.mesh.Mesh;
+import dev.trisect.raster.BorderStyle;
+import dev.trisect.raster.Framebuffer;
+import dev.trisect.scene.Camera;
+import dev.trisect.tessellate.TessellationSettings;
+import java.util.Arrays;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Rendering with the borders on outlines each band as soon as it is filled; the demo and
+ * {@code compare} render without them, measure, then call {@code drawBorders}. Both must give the
+ * same image, in every path and style.
+ */
+class BorderPassTest {
+    private static final int W = 160;
+    private static final int H = 100;
+
+    @Test
+    void bordersDrawnWithTheFillEqualBordersDrawnAfterIt() {
+        Mesh mesh = TestScenes.floor(13);
+        Camera cam = TestScenes.floorCamera();
+        List<BorderStyle> styles = List.of(BorderStyle.plain(), new BorderStyle(BorderStyle.Colouring.DEPTH, true),
+                new BorderStyle(BorderStyle.Colouring.BOUND, false), BorderStyle.fallbackOnly());
+        try (FrameRenderer renderer = new FrameRenderer(2)) {
+            for (RenderMode mode : RenderMode.values()) {
+                for (BorderStyle style : styles) {
+                    RenderSettings s = RenderSettings.defaults().withMode(mode).withBorderStyle(style)
+                            .withTessellation(TessellationSettings.defaults().withMaxEdge(6));
+                    Framebuffer with = TestScenes.render(renderer, mesh, cam, s.withBorders(true), W, H);
+                    Framebuffer after = TestScenes.render(renderer, mesh, cam, s.withBorders(false), W, H);
+                    int[] plain = after.color().clone();
+                    renderer.drawBorders(after, style, s.tessellation());
+                    assertArrayEquals(with.color(), after.color(), mode.id() + " " + style);
+                    if (!style.onlyFallback()) {
+                        assertNotEquals(Arrays.hashCode(plain), Arrays.hashCode(after.color()), "outlines drawn");
+                    }
+                }
+            }
+        }
+    }
+}
