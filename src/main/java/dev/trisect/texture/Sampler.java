@@ -104,20 +104,22 @@ public final class Sampler {
      * {@code a = fx / 256}, {@code b = fy / 256}, rounded to nearest; opaque.
      */
     static int blend(int c00, int c10, int c01, int c11, int fx, int fy) {
-        int w11 = fx * fy;
-        int w10 = fx * ONE - w11;
-        int w01 = fy * ONE - w11;
-        int w00 = ONE * ONE - fx * ONE - w01;
-        // Red and blue in 32-bit lanes of a long, green in an int: each lane sums to at most
-        // 255 * 65536 < 2^24, so nothing carries between lanes.
-        long rb = w00 * lanes(c00) + w10 * lanes(c10) + w01 * lanes(c01) + w11 * lanes(c11) + 0x0000800000008000L;
-        int g = w00 * ((c00 >>> 8) & 0xFF) + w10 * ((c10 >>> 8) & 0xFF) + w01 * ((c01 >>> 8) & 0xFF)
-                + w11 * ((c11 >>> 8) & 0xFF) + 0x8000;
-        return 0xFF000000 | (int) (rb >>> 48) << 16 | (g >>> 16) << 8 | (int) (rb >>> 16) & 0xFF;
-    }
-
-    private static long lanes(int c) {
-        return (c & 0xFF0000L) << 16 | (c & 0xFF);
+        // Separably and exactly: the weights are (1 - a)(1 - b), a (1 - b), (1 - a) b, a b, so the sum is
+        // the blend along x of each row, blended along y, and rounding once at the end gives the same
+        // result. Along x each channel is at most 255 * 256 < 2^16: red and blue in 16-bit lanes of an
+        // int, green in bits 8..23, with no carry between lanes (the top lane may reach bit 31, so the
+        // ints are read unsigned). Along y red and blue go apart (24 bits each); green, still shifted
+        // by 8, reaches at most 0xFF000000.
+        int kx = ONE - fx;
+        int rb0 = (c00 & 0xFF00FF) * kx + (c10 & 0xFF00FF) * fx;
+        int rb1 = (c01 & 0xFF00FF) * kx + (c11 & 0xFF00FF) * fx;
+        int g0 = (c00 & 0xFF00) * kx + (c10 & 0xFF00) * fx;
+        int g1 = (c01 & 0xFF00) * kx + (c11 & 0xFF00) * fx;
+        int ky = ONE - fy;
+        int r = ((rb0 >>> 16) * ky + (rb1 >>> 16) * fy + 0x8000) >>> 16;
+        int b = ((rb0 & 0xFFFF) * ky + (rb1 & 0xFFFF) * fy + 0x8000) >>> 16;
+        int g = (g0 * ky + g1 * fy + 0x800000) >>> 24;
+        return 0xFF000000 | r << 16 | g << 8 | b;
     }
 
     /**

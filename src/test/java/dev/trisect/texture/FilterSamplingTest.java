@@ -87,6 +87,32 @@ class FilterSamplingTest {
     }
 
     @Test
+    void blendIsTheExactWeightedSumRoundedOnce() {
+        // Every channel: sum of w_ij c_ij with w = (256 - fx)(256 - fy), fx (256 - fy), (256 - fx) fy, fx fy,
+        // plus half, over 65536; extreme texels and weights included (255 everywhere, fractions 0 and 255).
+        java.util.Random rnd = new java.util.Random(13);
+        int[] extremes = {0, 0xFFFFFFFF, 0x00FFFFFF, 0xFF000000, 0x12345678};
+        for (int n = 0; n < 200_000; n++) {
+            int[] c = new int[4];
+            for (int k = 0; k < 4; k++) {
+                c[k] = n % 3 == 0 ? extremes[rnd.nextInt(extremes.length)] : rnd.nextInt();
+            }
+            int fx = n % 5 == 0 ? 255 * rnd.nextInt(2) : rnd.nextInt(256);
+            int fy = n % 7 == 0 ? 255 * rnd.nextInt(2) : rnd.nextInt(256);
+            int[] w = {(256 - fx) * (256 - fy), fx * (256 - fy), (256 - fx) * fy, fx * fy};
+            int expected = 0xFF000000;
+            for (int shift = 0; shift < 24; shift += 8) {
+                long sum = 0;
+                for (int k = 0; k < 4; k++) {
+                    sum += (long) w[k] * (c[k] >>> shift & 0xFF);
+                }
+                expected |= (int) ((sum + 32768) >> 16) << shift;
+            }
+            assertEquals(Integer.toHexString(expected), Integer.toHexString(Sampler.blend(c[0], c[1], c[2], c[3], fx, fy)));
+        }
+    }
+
+    @Test
     void lerpBlendsLevelsByWeight() {
         assertEquals(grey(100), Sampler.lerp(grey(100), grey(200), 0));
         assertEquals(grey(150), Sampler.lerp(grey(100), grey(200), 128));
