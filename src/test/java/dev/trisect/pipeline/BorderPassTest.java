@@ -44,4 +44,25 @@ class BorderPassTest {
             }
         }
     }
+
+    @Test
+    void fadedAndColouredOutlinesDoNotDependOnTheNumberOfThreads() {
+        // Enough triangles for several chunks (more than the four chunks of 2048 one thread once
+        // had): shared edges are walked once per chunk, so the chunks must not depend on the thread count.
+        Mesh mesh = TestScenes.floor(70);
+        Camera cam = TestScenes.floorCamera();
+        for (BorderStyle style : List.of(new BorderStyle(BorderStyle.Colouring.YELLOW, true),
+                new BorderStyle(BorderStyle.Colouring.BOUND, true), new BorderStyle(BorderStyle.Colouring.DEPTH, false))) {
+            RenderSettings s = RenderSettings.defaults().withBorders(true).withBorderStyle(style)
+                    .withTessellation(TessellationSettings.defaults().withMaxEdge(6));
+            Framebuffer one;
+            try (FrameRenderer single = new FrameRenderer(1)) {
+                one = TestScenes.render(single, mesh, cam, s, 2 * W, 2 * H);
+            }
+            try (FrameRenderer three = new FrameRenderer(3)) {
+                assertArrayEquals(one.color(), TestScenes.render(three, mesh, cam, s, 2 * W, 2 * H).color(),
+                        style.toString());
+            }
+        }
+    }
 }
