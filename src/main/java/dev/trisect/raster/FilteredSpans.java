@@ -13,8 +13,10 @@ import dev.trisect.texture.TextureFilter;
  * colour differs (docs/conventions.md, "Texture filtering").
  *
  * <ul>
- * <li>Perspective path: every pixel divides, and trilinear takes its level of detail per pixel from
- * the exact derivatives of the perspective map ({@link Lod#lambdaPerspective}).</li>
+ * <li>Perspective path: every pixel divides, and trilinear takes its level of detail from the exact
+ * derivatives of the perspective map ({@link Lod#lambdaPerspective}) at every {@link #LOD_RUN}th
+ * column, interpolated linearly in between (per pixel where that would be off by more than about
+ * 0.01 level).</li>
  * <li>Affine and tessellated paths: the texel coordinates are linear on screen, so their derivatives
  * are constant over the piece and trilinear takes one level of detail per piece ({@link Lod#lambda}),
  * computed once; the levels are stepped in 32.32 fixed point like the nearest affine loop.</li>
@@ -69,8 +71,13 @@ final class FilteredSpans {
 
     /**
      * Bilinear, or trilinear with the level of detail per pixel, coordinates in doubles: the perspective
-     * path (exact derivatives of the perspective map at each pixel), or affine pieces whose coordinates
-     * are too large for fixed point (constant derivatives, so the same level everywhere).
+     * path, or affine pieces whose coordinates are too large for fixed point (constant derivatives, so
+     * the same level everywhere). Lambda along x and along y come from the exact derivatives at the
+     * columns that are multiples of {@link #LOD_RUN} ({@link #lodAt}) and are stepped linearly in
+     * between, the larger taken per pixel; a run where either changes by more than
+     * {@link #MAX_LOD_STEP}, or with no positive 1/w at an end, takes the exact lambda per pixel. The
+     * runs are anchored at absolute columns, so a pixel's value never depends on the rectangle being
+     * filled.
      *
      * <p>On a {@link MipChain#powerOfTwo} chain (every texture of the built-in scenes) each coordinate is
      * floored once, to 8 fraction bits on level 0 ({@code floor(256 s)}), and level d's bilinear
