@@ -133,15 +133,21 @@ pieces = {}
 for m in re.finditer(r"pieces (\w+) (\w+) affine (\d+) tessellated (\d+)", open(sys.argv[2]).read()):
     pieces[(m[1], m[2])] = (int(m[3]), int(m[4]))
 us = {}
+paired = {}
 for r in runs:
     p = r["params"]
-    us[(p["scene"], p["policy"], r["benchmark"].rsplit(".", 1)[1])] = (r["primaryMetric"]["score"], r["primaryMetric"]["scoreError"])
-print("| scene | policy | affine us | tessellated us | extra pieces | ns per extra piece |")
-print("|---|---|---|---|---|---|")
+    name = r["benchmark"].rsplit(".", 1)[1]
+    us[(p["scene"], p["policy"], name)] = (r["primaryMetric"]["score"], r["primaryMetric"]["scoreError"])
+    if name == "paired":
+        m = r["secondaryMetrics"]
+        paired[(p["scene"], p["policy"])] = m["extraNanos"]["score"] / max(1, m["extraPieces"]["score"])
+print("| scene | policy | affine us | tessellated us | extra pieces | ns per extra piece | paired ns per extra piece |")
+print("|---|---|---|---|---|---|---|")
 for (scene, policy), (a, t) in sorted(pieces.items()):
     ua, ea = us[(scene, policy, "affine")]; ut, et = us[(scene, policy, "tessellated")]
     extra = t - a
-    print(f"| {scene} | {policy} | {ua:.0f} ± {ea:.0f} | {ut:.0f} ± {et:.0f} | {extra} | {(ut - ua) * 1000 / extra:.0f} |")
+    print(f"| {scene} | {policy} | {ua:.0f} ± {ea:.0f} | {ut:.0f} ± {et:.0f} | {extra} | {(ut - ua) * 1000 / extra:.0f} "
+          f"| {paired[(scene, policy)]:.0f} |")
 PY
 fi
 echo "tables in $TABLES" >&2

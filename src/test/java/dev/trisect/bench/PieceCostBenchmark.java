@@ -12,10 +12,14 @@ import dev.trisect.scene.Scene;
 import dev.trisect.tessellate.SplitPolicy;
 import dev.trisect.tessellate.TessellationSettings;
 import dev.trisect.texture.Texture;
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.util.concurrent.TimeUnit;
+import org.openjdk.jmh.annotations.AuxCounters;
 import org.openjdk.jmh.annotations.Benchmark;
 import org.openjdk.jmh.annotations.BenchmarkMode;
 import org.openjdk.jmh.annotations.Fork;
+import org.openjdk.jmh.annotations.Level;
 import org.openjdk.jmh.annotations.Measurement;
 import org.openjdk.jmh.annotations.Mode;
 import org.openjdk.jmh.annotations.OutputTimeUnit;
@@ -33,7 +37,14 @@ import org.openjdk.jmh.annotations.Warmup;
  * per-row overhead of filling many small triangles instead of few large ones. Divided by the
  * difference in pieces (printed by {@code trisect bench --json --threads 1 --size 1280x720}, or the
  * {@code pieces} line this benchmark prints at setup) it gives nanoseconds per extra piece;
- * scripts/performance.sh does the division. Run with
+ * scripts/performance.sh does the division.
+ *
+ * <p>On a shared machine the two averages drift apart by more than the difference itself, so
+ * {@link #paired} measures it directly: each invocation draws the affine frame and then the
+ * tessellated one, timing each by the thread's CPU time, and counts the difference
+ * ({@code paired:extraNanos}) and the extra pieces ({@code paired:extraPieces}); JMH sums each
+ * over the iterations, and their quotient is the cost of one extra piece (scripts/performance.sh
+ * divides). Run with
  * {@code mvn -q test-compile exec:exec@jmh -Djmh.args="PieceCostBenchmark"}.
  */
 @State(Scope.Benchmark)
@@ -90,5 +101,33 @@ public class PieceCostBenchmark {
     @Benchmark
     public FrameStats tessellated() {
         return render(tessellated);
+    }
+
+    /** The paired measurement's counters, per iteration: CPU nanoseconds and pieces the tessellated frames added. */
+    @State(Scope.Thread)
+    @AuxCounters(AuxCounters.Type.EVENTS)
+    public static class PairedCost {
+        private static final ThreadMXBean CPU = ManagementFactory.getThreadMXBean();
+        public long extraNanos;
+        public long extraPieces;
+
+        @Setup(Level.Iteration)
+        public void reset() {
+            extraNanos = 0;
+            extraPieces = 0;
+        }
+    }
+
+    /** The affine and the tessellated frame back to back, their CPU time difference counted per extra piece. */
+    @Benchmark
+    public long paired(PairedCost cost) {
+        long t0 = PairedCost.CPU.getCurrentThreadCpuTime();
+        long a = render(affine).pieces();
+        long t1 = PairedCost.CPU.getCurrentThreadCpuTime();
+        long t = render(tessellated).pieces();
+        long t2 = PairedCost.CPU.getCurrentThreadCpuTime();
+        cost.extraNanos += (t2 - t1) - (t1 - t0);
+        cost.extraPieces += t - a;
+        return t;
     }
 }
