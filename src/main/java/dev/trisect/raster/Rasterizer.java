@@ -536,8 +536,9 @@ public final class Rasterizer {
      * Rows [from, to) of the current triangle, bounded by edges {@code longEdge} and {@code shortEdge}
      * alone (one left, one right; both set up for row {@code from}; see {@link #order}); leaves the long
      * edge's state stepped to row {@code to}. With {@code fill} false it stores each row's span in
-     * {@link #spans}; with {@code fill} true it fills the span at once, without storing it (the loop
-     * unswitches on the flag), with the nearest affine loop set up by {@link #prepareAffine}.
+     * {@link #spans}; with {@code fill} true it fills the span at once, without storing it (the flag
+     * is the same on every row, so its branch is always predicted), with the nearest affine loop set
+     * up by {@link #prepareAffine}.
      *
      * <p>That loop steps texel coordinates in 32.32 fixed point: per pixel an integer add, a shift
      * and a mask instead of two multiply-adds, two floors and two conversions. Each row's values are
