@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# Compares two builds in one JVM: each jar in its own class loader, their frames interleaved (A B,
+# then B A, ...), each timed by the rendering thread's CPU time, one thread. Steadier than timing
+# separate runs on a shared machine, since both builds see the same load at the same moments.
+# Prints per path the median CPU ms per frame of each build and the B/A ratio of each pair (median
+# and range), and with the affine path listed, the CPU time per extra piece of the tessellated
+# paths (their frames fill the affine frame's pixels).
+#
+#   scripts/side-by-side.sh OLD.jar NEW.jar [SCENE] [WxH] [PAIRS] [FRAMES] [PATH...]
+#   scripts/side-by-side.sh /tmp/old.jar target/trisect.jar demo 1920x1080 15 5 affine edge error perspective
+#
+# PATH: perspective, affine, edge (tessellated, 32 px edges), error (tessellated, 0.5 px).
+# Both jars must have the API Frame.java uses (DemoScenes, RenderSettings, FrameRenderer).
+set -euo pipefail
+if [[ $# -lt 2 ]]; then
+  echo "usage: $0 A.jar B.jar [scene] [WxH] [pairs] [frames] [path...]" >&2
+  exit 2
+fi
+a=$1
+b=$2
+for jar in "$a" "$b"; do
+  [[ -f $jar ]] || { echo "$0: no such jar: $jar" >&2; exit 2; }
+done
+scene=${3:-demo}
+size=${4:-1920x1080}
+pairs=${5:-15}
+frames=${6:-5}
+shift $(( $# < 6 ? $# : 6 ))
+paths=("$@")
+[[ ${#paths[@]} -gt 0 ]] || paths=(affine edge error perspective)
+src=$(cd "$(dirname "$0")/side-by-side" && pwd)
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+javac -d "$tmp/a" -cp "$a" "$src/Frame.java"
+javac -d "$tmp/b" -cp "$b" "$src/Frame.java"
+javac -d "$tmp/run" "$src/SideBySide.java"
+java -cp "$tmp/run" SideBySide "$tmp/a" "$tmp/b" "$a" "$b" "$scene" "$size" "$pairs" "$frames" "${paths[@]}"
