@@ -9,7 +9,9 @@
 #   scripts/side-by-side.sh OLD.jar NEW.jar [SCENE] [WxH] [PAIRS] [FRAMES] [PATH...]
 #   scripts/side-by-side.sh /tmp/old.jar target/trisect.jar demo 1920x1080 15 5 affine edge error perspective
 #
-# PATH: perspective, affine, edge (tessellated, 32 px edges), error (tessellated, 0.5 px).
+# PATH: perspective, affine, edge (tessellated, 32 px edges), error (tessellated, 0.5 px); each may
+# end in +borders or +fade to draw the border overlay (plain or faded) with the frame, so that
+# "edge edge+borders" shows what the overlay adds.
 # Both jars must have the API Frame.java uses (DemoScenes, RenderSettings, FrameRenderer).
 set -euo pipefail
 if [[ $# -lt 2 ]]; then

@@ -4,6 +4,7 @@ import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.FrameStats;
 import dev.trisect.pipeline.RenderMode;
 import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.raster.BorderStyle;
 import dev.trisect.raster.Framebuffer;
 import dev.trisect.scene.DemoScenes;
 import dev.trisect.scene.Scene;
@@ -21,14 +22,26 @@ public final class Frame {
     private Frame() {
     }
 
-    /** @param path perspective, affine, edge (tessellated, 32 px edges) or error (tessellated, 0.5 px) */
+    /**
+     * @param path perspective, affine, edge (tessellated, 32 px edges) or error (tessellated, 0.5 px),
+     *             each optionally with +borders or +fade (the border overlay, plain or faded, drawn with the frame)
+     */
     public static LongSupplier make(String scene, String path, int width, int height) {
         Scene s = DemoScenes.byName(scene).orElseThrow(() -> new IllegalArgumentException("no scene " + scene));
         Texture[] textures = s.textureArray();
         Framebuffer frame = new Framebuffer(width, height);
         Mat4 viewProjection = s.camera().viewProjection(new Viewport(width, height));
-        RenderSettings base = RenderSettings.defaults();
-        RenderSettings settings = switch (path) {
+        RenderSettings base = RenderSettings.defaults().withBackground(DemoScenes.background(scene));
+        // "+borders" draws the border overlay with the frame, "+fade" the faded one.
+        String[] parts = path.split("\\+", 2);
+        if (parts.length == 2) {
+            base = base.withBorders(true).withBorderStyle(switch (parts[1]) {
+                case "borders" -> BorderStyle.plain();
+                case "fade" -> new BorderStyle(BorderStyle.Colouring.YELLOW, true);
+                default -> throw new IllegalArgumentException("no overlay " + parts[1]);
+            });
+        }
+        RenderSettings settings = switch (parts[0]) {
             case "perspective" -> base.withMode(RenderMode.PERSPECTIVE);
             case "affine" -> base.withMode(RenderMode.AFFINE);
             case "edge" -> base.withMode(RenderMode.TESSELLATED)
