@@ -161,15 +161,18 @@ class FillRuleTest {
     @Test
     void anyRectangleOfTheFrameCoversExactlyTheDefinitionsCentresInIt() {
         // Small triangles with corners often at pixel-centre heights (the row through a middle corner
-        // is the one where the span solver needs all three edges), filled within random rectangles.
+        // is the one where the span solver needs all three edges), filled within random rectangles;
+        // a few reach far outside the frame, as clipped triangles do (guard band 8192 px).
         Random rnd = new Random(11);
-        for (int round = 0; round < 300; round++) {
+        for (int round = 0; round < 600; round++) {
             ScreenTriangles t = new ScreenTriangles();
             for (int k = 0; k < 6; k++) {
                 double[] p = new double[6];
                 double ox = rnd.nextDouble() * W;
                 double oy = rnd.nextDouble() * H;
-                double scale = rnd.nextInt(3) == 0 ? 120 : 24;
+                // Mostly piece-sized, some larger than the frame, some reaching across the guard band.
+                int kind = rnd.nextInt(8);
+                double scale = kind == 0 ? 36000 : kind < 3 ? 120 : 24;
                 for (int i = 0; i < 6; i++) {
                     double v = (i % 2 == 0 ? ox : oy) + (rnd.nextDouble() - 0.5) * scale;
                     p[i] = rnd.nextBoolean() ? Math.round(v * 2) / 2.0 : v;
