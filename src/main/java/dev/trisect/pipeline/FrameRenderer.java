@@ -162,9 +162,7 @@ public final class FrameRenderer implements AutoCloseable {
             }
             long t1 = System.nanoTime();
             if (borders) {
-                while (prepared.get() < prepTasks) {
-                    Thread.onSpinWait();
-                }
+                awaitPrepared(prepared, prepTasks);
                 outlines.drawBand(w.overlay, frame, b, y0, y1);
                 long t2 = System.nanoTime();
                 w.overlayNanos += t2 - t1;
@@ -227,9 +225,7 @@ public final class FrameRenderer implements AutoCloseable {
             // The frame has long left the cache: fetch the band's rows in order first, which costs
             // less than missing on them at every line pixel.
             w.touched += frame.touchRows(y0, y1);
-            while (prepared.get() < prepTasks) {
-                Thread.onSpinWait();
-            }
+            awaitPrepared(prepared, prepTasks);
             outlines.drawBand(w.overlay, frame, task - prepTasks, y0, y1);
         });
         return System.nanoTime() - start;
@@ -258,6 +254,17 @@ public final class FrameRenderer implements AutoCloseable {
             }
         });
         return counts;
+    }
+
+    /**
+     * Waits until {@code tasks} outline preparations are done. They are all taken before any band
+     * is, by threads that are running them, so this ends; it yields rather than spins, so that on a
+     * busy machine a preparing thread that lost its core gets it back sooner.
+     */
+    private static void awaitPrepared(AtomicInteger prepared, int tasks) {
+        while (prepared.get() < tasks) {
+            Thread.yield();
+        }
     }
 
     private static int bandCount(int height) {
