@@ -43,17 +43,23 @@ public final class FrameRenderer implements AutoCloseable {
     /** Triangles per timing batch inside a chunk. */
     private static final int BATCH = 1024;
     /**
-     * Triangles per chunk (the last may hold fewer), at most {@link #MAX_CHUNKS} chunks. The chunks
-     * depend on the triangle count alone, never on the thread count: the border overlay walks an
-     * edge two triangles of one chunk share once, which makes the faded and coloured outlines depend
-     * on where chunks end. Chunks are many and small because their costs differ widely: in the
-     * tessellated path, the few triangles near the camera make most of the pieces, and a chunk
-     * holding them alone would leave the other threads idle. Measured at 1920x1080 by the tasks'
-     * processor times (before: four chunks per thread of at least 2048 triangles): the largest
-     * geometry task of the floor's tessellated frame went from 1.12 to 0.66 ms of 2.45, of the
-     * 160k-triangle sphere from 1.25 to 0.29 ms of 6.6.
+     * Largest chunk of a mesh of up to {@code SMALL_MESH_CHUNK_CAP * MAX_CHUNKS} (32768) triangles. The chunks
+     * are set by the triangle count n alone (see {@link #chunkCount} and {@link #chunkSize}):
+     * {@code min(MAX_CHUNKS, ceil(n / SMALL_MESH_CHUNK_CAP))} chunks (at least one), each of
+     * {@code ceil(n / chunks)} consecutive triangles but the last, which holds the rest. So 1000
+     * triangles make two chunks of 500, 32768 make 64 of 512, and 100,000 make 64 of 1563 (the last
+     * 1531): past 32768 triangles chunks grow beyond this cap, their count does not.
+     *
+     * <p>The chunks never depend on the thread count: the border overlay walks an edge two triangles
+     * of one chunk share once, which makes the faded and coloured outlines depend on where chunks
+     * end, and they must be the same for any thread count ({@code BorderPassTest}). Chunks are many
+     * and small because their costs differ widely: in the tessellated path, the few triangles near
+     * the camera make most of the pieces, and a chunk holding them alone would leave the other
+     * threads idle. Measured at 1920x1080 by the tasks' processor times (before: four chunks per
+     * thread of at least 2048 triangles): the largest geometry task of the floor's tessellated frame
+     * went from 1.12 to 0.66 ms of 2.45, of the 160k-triangle sphere from 1.25 to 0.29 ms of 6.6.
      */
-    private static final int MIN_CHUNK = 512;
+    private static final int SMALL_MESH_CHUNK_CAP = 512;
     /** Most chunks: enough to balance many threads, few enough that each band's walk over them stays cheap. */
     private static final int MAX_CHUNKS = 64;
     /**
@@ -267,6 +273,16 @@ public final class FrameRenderer implements AutoCloseable {
         }
     }
 
+    /** Chunks a mesh of {@code triangles} triangles is cut into: see {@link #SMALL_MESH_CHUNK_CAP}. */
+    static int chunkCount(int triangles) {
+        return Math.max(1, Math.min(MAX_CHUNKS, (triangles + SMALL_MESH_CHUNK_CAP - 1) / SMALL_MESH_CHUNK_CAP));
+    }
+
+    /** Triangles in each of {@code chunkCount} chunks of {@code triangles} but the last, which holds the rest. */
+    static int chunkSize(int triangles, int chunkCount) {
+        return (triangles + chunkCount - 1) / chunkCount;
+    }
+
     private static int bandCount(int height) {
         return (height + BAND_ROWS - 1) / BAND_ROWS;
     }
@@ -296,9 +312,9 @@ public final class FrameRenderer implements AutoCloseable {
         transformNanos = System.nanoTime() - start;
         int bands = bandCount(height);
         int triangles = mesh.triangleCount();
-        int chunkCount = Math.max(1, Math.min(MAX_CHUNKS, (triangles + MIN_CHUNK - 1) / MIN_CHUNK));
+        int chunkCount = chunkCount(triangles);
         ensureChunks(chunkCount);
-        int perChunk = (triangles + chunkCount - 1) / chunkCount;
+        int perChunk = chunkSize(triangles, chunkCount);
         double gx = 1 + 2.0 * GUARD_PIXELS / width;
         double gy = 1 + 2.0 * GUARD_PIXELS / height;
         boolean split = settings.mode() == RenderMode.TESSELLATED;
