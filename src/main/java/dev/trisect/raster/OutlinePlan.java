@@ -86,16 +86,12 @@ public final class OutlinePlan {
                        int height) {
         double[] sc = triangles.screen();
         double[] at = triangles.attributes();
-        int[] f = triangles.fixed();
         boolean[] perPixel = triangles.perPixel();
         for (int tri = 0; tri < n; tri++) {
             colours[tri] = 0;
-            int o = tri * ScreenTriangles.FIXED_STRIDE;
-            int minY = Math.min(f[o + 1], Math.min(f[o + 3], f[o + 5]));
-            int maxY = Math.max(f[o + 1], Math.max(f[o + 3], f[o + 5]));
-            // The rows whose centres it can cover, as ScreenTriangles.firstRow and endRow.
-            int firstRow = Math.max(0, -Math.floorDiv(FixedPoint.HALF - minY, FixedPoint.ONE));
-            int endRow = Math.min(height, Math.floorDiv(maxY - FixedPoint.HALF, FixedPoint.ONE) + 1);
+            // The frame's rows whose centres it can cover.
+            int firstRow = Math.max(0, triangles.firstRow(tri));
+            int endRow = Math.min(height, triangles.endRow(tri));
             if (firstRow >= endRow || style.onlyFallback() && !perPixel[tri]) {
                 continue;
             }
