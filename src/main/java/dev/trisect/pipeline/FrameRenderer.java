@@ -128,7 +128,7 @@ public final class FrameRenderer implements AutoCloseable {
         int background = settings.background();
         for (Worker w : workers) {
             w.pixels = 0;
-            w.bandNanos = 0;
+            w.fillNanos = 0;
             w.overlayNanos = 0;
         }
         lastChunkCount = chunkCount;
@@ -151,9 +151,7 @@ public final class FrameRenderer implements AutoCloseable {
                 } finally {
                     prepared.incrementAndGet();
                 }
-                long t1 = System.nanoTime();
-                w.bandNanos += t1 - t0;
-                w.overlayNanos += t1 - t0;
+                w.overlayNanos += System.nanoTime() - t0;
                 return;
             }
             int b = task - prepTasks;
@@ -166,28 +164,30 @@ public final class FrameRenderer implements AutoCloseable {
                 w.pixels += w.rasterizer.fill(frame, chunk.out, chunk.binItems, chunk.binStart[b],
                         chunk.binStart[b + 1], textures, perspective, 0, y0, width, y1);
             }
-            long t1 = System.nanoTime();
+            w.fillNanos += System.nanoTime() - t0;
             if (borders) {
+                // The wait is neither filling nor outlining: it is left out of both measures.
                 awaitPrepared(prepared, prepTasks);
-                outlines.drawBand(w.overlay, frame, b, y0, y1);
                 long t2 = System.nanoTime();
-                w.overlayNanos += t2 - t1;
-                t1 = t2;
+                outlines.drawBand(w.overlay, frame, b, y0, y1);
+                w.overlayNanos += System.nanoTime() - t2;
             }
-            w.bandNanos += t1 - t0;
         });
         long end = System.nanoTime();
-        // Filling and outlining run interleaved: their wall time is shared out in proportion to the
-        // time each took on the threads.
-        long bandCpu = 0;
-        long overlayCpu = 0;
+        // Filling and outlining run interleaved on all threads, so neither has a wall time of its
+        // own: the band pass's wall time is shared out in proportion to the time the threads spent
+        // on each, an estimate that FrameStats names as such.
+        long fillTime = 0;
+        long overlayTime = 0;
         for (Worker w : workers) {
-            bandCpu += w.bandNanos;
-            overlayCpu += w.overlayNanos;
+            fillTime += w.fillNanos;
+            overlayTime += w.overlayNanos;
         }
-        long overlay = bandCpu == 0 ? 0 : Math.round((end - geometryDone) * (double) overlayCpu / bandCpu);
+        long work = fillTime + overlayTime;
+        long overlay = !borders || work == 0 ? 0 : Math.round((end - geometryDone) * (double) overlayTime / work);
         long rasterDone = end - overlay;
-        return statistics(mesh.triangleCount(), chunkCount, start, transformed, geometryDone, rasterDone, end);
+        return statistics(mesh.triangleCount(), chunkCount, start, transformed, geometryDone, rasterDone, end,
+                borders);
     }
 
     /**
@@ -386,7 +386,7 @@ public final class FrameRenderer implements AutoCloseable {
     }
 
     private FrameStats statistics(int triangles, int chunkCount, long start, long transformed, long geometryDone,
-                                  long rasterDone, long end) {
+                                  long rasterDone, long end, boolean bandTimesEstimated) {
         long back = 0;
         long frustum = 0;
         long degenerate = 0;
@@ -428,7 +428,7 @@ public final class FrameRenderer implements AutoCloseable {
         return new FrameStats(triangles, back, frustum, degenerate, invalid, clipped, pieces, offScreen, splits,
                 deepest,
                 caps, fallback, frameBudget == Long.MAX_VALUE ? 0 : frameBudget, budgetDepth, pixels, threads, transformed - start, clipWall, geometryWall - clipWall,
-                rasterDone - geometryDone, end - rasterDone, end - start);
+                rasterDone - geometryDone, end - rasterDone, bandTimesEstimated, end - start);
     }
 
     private void transform(Mesh mesh, Mat4 viewProjection) {
@@ -543,8 +543,11 @@ public final class FrameRenderer implements AutoCloseable {
         int[] batchIds = new int[BATCH];
         int[] batchMaterials = new int[BATCH];
         long pixels;
-        /** Nanoseconds this thread spent on bands this frame, and on outlining them. */
-        long bandNanos;
+        /**
+         * Nanoseconds this thread spent this frame clearing and filling bands, and on the border
+         * overlay (preparing chunks' outlines and outlining bands, not waiting for the preparations).
+         */
+        long fillNanos;
         long overlayNanos;
         /** Keeps what {@link Framebuffer#touchRows} read. */
         long touched;

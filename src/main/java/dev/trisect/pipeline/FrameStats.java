@@ -3,7 +3,15 @@ package dev.trisect.pipeline;
 import dev.trisect.base.JsonObject;
 
 /**
- * What one frame did. Times are wall-clock nanoseconds per stage.
+ * What one frame did. Times are wall-clock nanoseconds. The transform and the whole frame are
+ * measured; clipping and tessellation run interleaved on all threads, so the geometry stage's wall
+ * time is shared between them in proportion to the time the threads spent on each. With the borders
+ * on, filling and outlining also run interleaved (each band is outlined right after it is filled),
+ * so {@code rasterNanos} and {@code overlayNanos} are then an estimate of the same kind, flagged by
+ * {@code bandTimesEstimated} and named {@code ..._estimate} in {@link #json()}; with the borders off
+ * the raster time is the measured wall time of the fill and the overlay's is 0. (Callers that measure
+ * the overlay exactly render without borders and time {@code FrameRenderer.drawBorders}, as the demo
+ * does.)
  *
  * @param trianglesIn      input triangles
  * @param culledBackFace   dropped as seen from behind
@@ -26,8 +34,14 @@ import dev.trisect.base.JsonObject;
  * @param transformNanos   vertex transform
  * @param clipNanos        culling and clipping
  * @param tessellateNanos  splitting and projection to screen triangles
- * @param rasterNanos      clearing and filling
- * @param overlayNanos     border overlay (0 when off)
+ * @param rasterNanos      clearing and filling: measured with the borders off, else an estimate (its
+ *                         share of the band pass's wall time)
+ * @param overlayNanos     border overlay, 0 when off; when on, an estimate: the band pass's wall time
+ *                         shared out in proportion to the threads' time preparing the chunks' outlines
+ *                         and outlining bands, over that and their time clearing and filling (the time
+ *                         a band waits for the preparations is in neither)
+ * @param bandTimesEstimated whether {@code rasterNanos} and {@code overlayNanos} are that estimate
+ *                         (borders on) rather than measured
  * @param totalNanos       the whole frame
  */
 public record FrameStats(long trianglesIn, long culledBackFace, long culledFrustum, long culledDegenerate,
@@ -35,7 +49,7 @@ public record FrameStats(long trianglesIn, long culledBackFace, long culledFrust
                          int deepestSplit, long capsReached, long piecesFallback, long pieceBudget,
                          int budgetDepth, long pixelsWritten, int threads,
                          long transformNanos, long clipNanos, long tessellateNanos, long rasterNanos,
-                         long overlayNanos, long totalNanos) {
+                         long overlayNanos, boolean bandTimesEstimated, long totalNanos) {
 
     /** Whether the frame's pieces exceeded its budget, so that its depth cap was lowered. */
     public boolean budgetReached() {
@@ -47,7 +61,12 @@ public record FrameStats(long trianglesIn, long culledBackFace, long culledFrust
         return culledBackFace + culledFrustum + culledDegenerate;
     }
 
-    /** The statistics as a JSON object: snake_case keys in this order, times in milliseconds. */
+    /**
+     * The statistics as a JSON object: snake_case keys in this order, times in milliseconds. The raster
+     * and overlay times are named {@code raster_estimate} and {@code overlay_estimate} when they are
+     * estimated ({@link #bandTimesEstimated}), so that a field called plainly "raster" or "overlay" is
+     * always measured.
+     */
     public JsonObject json() {
         return new JsonObject()
                 .put("triangles_in", trianglesIn)
@@ -72,8 +91,8 @@ public record FrameStats(long trianglesIn, long culledBackFace, long culledFrust
                         .put("transform", transformNanos / 1e6, 3)
                         .put("clip", clipNanos / 1e6, 3)
                         .put("tessellate", tessellateNanos / 1e6, 3)
-                        .put("raster", rasterNanos / 1e6, 3)
-                        .put("overlay", overlayNanos / 1e6, 3)
+                        .put(bandTimesEstimated ? "raster_estimate" : "raster", rasterNanos / 1e6, 3)
+                        .put(bandTimesEstimated ? "overlay_estimate" : "overlay", overlayNanos / 1e6, 3)
                         .put("total", totalNanos / 1e6, 3));
     }
 

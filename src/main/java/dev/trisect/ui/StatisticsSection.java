@@ -19,7 +19,7 @@ final class StatisticsSection implements ToolSection {
             {"ms clip", "Milliseconds culling and clipping triangles"},
             {"ms tessellate", "Milliseconds splitting triangles into pieces and projecting them"},
             {"ms raster", "Milliseconds clearing and filling the frame"},
-            {"ms overlay", "Milliseconds drawing polygon borders"},
+            {"ms overlay", "Milliseconds drawing polygon borders, measured: they are drawn after the frame is filled"},
             {"ms total", "Milliseconds for the whole frame in the engine"},
             {"Triangles in", "Triangles in the scene"},
             {"Culled", "Triangles dropped as facing away, off screen, or without area"},

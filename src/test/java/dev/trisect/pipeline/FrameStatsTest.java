@@ -1,6 +1,7 @@
 package dev.trisect.pipeline;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.math.Vec3;
@@ -74,5 +75,27 @@ class FrameStatsTest {
         assertEquals(2, st.trianglesIn());
         assertTrue(st.clipped() >= 1, st.toJson());
         assertTrue(st.pieces() >= 2, "a cut triangle is fanned into more than one: " + st.toJson());
+    }
+
+    @Test
+    void rasterAndOverlayTimesAreNamedEstimatesWhenTheBordersAreDrawnWithTheFill() {
+        Mesh mesh = TestScenes.floor(13);
+        RenderSettings s = RenderSettings.defaults().withMode(RenderMode.TESSELLATED);
+        FrameStats plain = render(mesh, TestScenes.floorCamera(), s);
+        assertFalse(plain.bandTimesEstimated());
+        assertEquals(0, plain.overlayNanos());
+        assertTrue(plain.toJson().contains("\"raster\":") && plain.toJson().contains("\"overlay\":")
+                && !plain.toJson().contains("estimate"), plain.toJson());
+        FrameStats borders = render(mesh, TestScenes.floorCamera(), s.withBorders(true));
+        assertTrue(borders.bandTimesEstimated());
+        assertTrue(borders.overlayNanos() > 0 && borders.rasterNanos() > 0, borders.toJson());
+        assertTrue(borders.toJson().contains("\"raster_estimate\":") && borders.toJson().contains("\"overlay_estimate\":")
+                && !borders.toJson().contains("\"overlay\":") && !borders.toJson().contains("\"raster\":"),
+                borders.toJson());
+        for (FrameStats st : new FrameStats[] {plain, borders}) {
+            // The stages share out the frame's wall time: they add up to it exactly.
+            assertEquals(st.totalNanos(), st.transformNanos() + st.clipNanos() + st.tessellateNanos()
+                    + st.rasterNanos() + st.overlayNanos(), st.toJson());
+        }
     }
 }
