@@ -15,8 +15,8 @@ import dev.trisect.texture.TextureFilter;
  * <ul>
  * <li>Perspective path: every pixel divides, and trilinear takes its level of detail from the exact
  * derivatives of the perspective map ({@link Lod#lambdaPerspective}) at every {@link #LOD_RUN}th
- * column, interpolated linearly in between (per pixel where that would be off by more than about
- * 0.01 level).</li>
+ * column, interpolated linearly in between where that is provably within 3/256 level of it
+ * ({@link #nearlyLinear}), per pixel elsewhere.</li>
  * <li>Affine and tessellated paths: the texel coordinates are linear on screen, so their derivatives
  * are constant over the piece and trilinear takes one level of detail per piece ({@link Lod#lambda}),
  * computed once; the levels are stepped in 32.32 fixed point like the nearest affine loop.</li>
@@ -37,12 +37,25 @@ final class FilteredSpans {
     static final int LOD_RUN = 1 << LOG2_LOD_RUN;
     /**
      * The largest change, in 1/256, of lambda along x or of lambda along y across a run that is
-     * interpolated: half a level. Along a row, lambda along x is exactly {@code c - 2 log2(Q)} (the
-     * numerator of ds/dx is constant there), whose chord over a run that changes it by D is off by at
-     * most about {@code 0.043 D^2}: 0.011 for half a level. Runs that change more (a surface nearly
-     * edge-on, Q shrinking fast toward its vanishing point) take the exact lambda per pixel.
+     * interpolated: half a level. This keeps every chord within one level of the range of levels, so
+     * the clamping of {@link Lod#fixed} (one level beyond that range) never bends a chord into a value
+     * that selects differently; how close the chord is to lambda is {@link #nearlyLinear}'s test.
      */
     static final int MAX_LOD_STEP = Sampler.ONE / 2;
+    /**
+     * The largest bound, in levels, on how far the chord over an interpolated run may be from the exact
+     * lambda along an axis ({@link #nearlyLinear}): 3/256.
+     */
+    static final double MAX_CHORD_ERROR = 3.0 / Sampler.ONE;
+    /**
+     * The largest bound on the part of that from the numerator of lambda along y that is interpolated
+     * ({@link #nearlyLinear}): 1/256, so that with the two quantizations to 1/256 below the chord (the
+     * ends floored by {@link Lod#fixed}, the step floored) an interpolated lambda is still within 3/256
+     * (0.0117) level of the exact one.
+     */
+    static final double MAX_CHORD_ERROR_Y = 1.0 / Sampler.ONE;
+    /** {@code LOD_RUN^2 / (8 ln 2)}: the chord error over a run per unit of |second derivative| times ln 2. */
+    private static final double CHORD_FACTOR = LOD_RUN * LOD_RUN / (8 * Math.log(2));
     /** {@link #lodAt} where there is no level of detail to interpolate (16 high bits below any lambda). */
     private static final int NO_RUN_LOD = Integer.MIN_VALUE;
 
@@ -75,7 +88,9 @@ final class FilteredSpans {
      * the same level everywhere). Lambda along x and along y come from the exact derivatives at the
      * columns that are multiples of {@link #LOD_RUN} ({@link #lodAt}) and are stepped linearly in
      * between, the larger taken per pixel; a run where either changes by more than
-     * {@link #MAX_LOD_STEP}, or with no positive 1/w at an end, takes the exact lambda per pixel. The
+     * {@link #MAX_LOD_STEP}, or with no positive 1/w at an end, or that is not {@link #nearlyLinear}
+     * (a surface nearly edge-on, or where the texture's derivative along y nearly vanishes), takes the
+     * exact lambda per pixel. The
      * runs are anchored at absolute columns, so a pixel's value never depends on the rectangle being
      * filled.
      *
@@ -153,7 +168,9 @@ final class FilteredSpans {
                             stepX = (lodEnd >> 16) - lambdaX;
                             stepY = (short) lodEnd - lambdaY;
                             interpolate = lodStart != NO_RUN_LOD && lodEnd != NO_RUN_LOD
-                                    && Math.abs(stepX) <= MAX_LOD_STEP && Math.abs(stepY) <= MAX_LOD_STEP;
+                                    && Math.abs(stepX) <= MAX_LOD_STEP && Math.abs(stepY) <= MAX_LOD_STEP
+                                    && nearlyLinear(runStart, qRow, sRow, tRow, qDx, sDx, sDy, tDx, tDy, qDxLod,
+                                    qDyLod, perspective);
                         }
                         int k = x & (LOD_RUN - 1);
                         selection = interpolate
@@ -215,6 +232,65 @@ final class FilteredSpans {
             return NO_RUN_LOD;
         }
         return lx << 16 | ly & 0xFFFF;
+    }
+
+    /**
+     * Whether lambda along x and along y are close enough to linear over the run of columns
+     * [x0, x0 + LOD_RUN] of a row (planes at qRow, sRow, tRow at column 0) to be interpolated within
+     * 3/256 level: {@code E_q + E_n <= }{@link #MAX_CHORD_ERROR} and {@code E_n <= }
+     * {@link #MAX_CHORD_ERROR_Y}, the two bounds below (both 0 for an affine map). Both ends must
+     * have a positive 1/w (Q linear, so positive over the run).
+     *
+     * <p>Why: with s = S/Q, t = T/Q and S, T, Q linear on screen, the numerators of the derivatives
+     * along y, {@code A = S_y Q - S Q_y} and {@code B = T_y Q - T Q_y}, are linear in x along a row
+     * (slopes {@code A_x = S_y Q_x - S_x Q_y}, likewise B_x), and {@code lambda_y = f - 2 log2 Q} with
+     * {@code f = 0.5 log2 N}, {@code N = A^2 + B^2 = a u^2 + m} (u the distance to the column where N
+     * is least, {@code a = A_x^2 + B_x^2}). Along x the numerators are constant along the row, so
+     * {@code lambda_x = c - 2 log2 Q}. The chord of a function over h columns is within
+     * {@code h^2/8 max|g''|} of it, on the side of the chord where g is convex. {@code -2 log2 Q} is
+     * convex, {@code (-2 log2 Q)'' = 2 Q_x^2 / (ln2 Q^2)}, largest at the end with the smaller Q: its
+     * chord is above it by at most {@code E_q = h^2 / (8 ln2) 2 Q_x^2 / Q_min^2}.
+     * {@code f'' = a (m - a u^2) / (ln2 N^2)}, so {@code |f''| <= a / (ln2 N) <= a / (ln2 N_min)}
+     * with N_min the least N over the run (at the column nearest the unconstrained least): its chord
+     * is within {@code E_n = h^2 / (8 ln2) a / N_min} either way. So the chord of lambda along x is
+     * within [0, E_q] above it and that of lambda along y within [-E_n, E_q + E_n]; the larger of the
+     * two (OpenGL's lambda) likewise, since {@code max} moves by at most the larger of its arguments'
+     * moves. The quantizations move the interpolated value down by less than 2/256, so it is within
+     * {@code (-E_n - 2/256, E_q + E_n]} of the exact lambda: within 3/256 with these limits.
+     */
+    static boolean nearlyLinear(int x0, double qRow, double sRow, double tRow, double qDx, double sDx, double sDy,
+                                double tDx, double tDy, double qDxLod, double qDyLod, boolean perspective) {
+        int x1 = x0 + LOD_RUN;
+        double q0 = perspective ? qRow + qDx * x0 : 1.0;
+        double q1 = perspective ? qRow + qDx * x1 : 1.0;
+        double qMin = Math.min(q0, q1);
+        double qMin2 = qMin * qMin;
+        // E_q = CHORD_FACTOR * qCurvature / qMin^2.
+        double qCurvature = 2 * qDxLod * qDxLod;
+        // A and B at column x0 and their slopes along the row.
+        double a0 = sDy * q0 - (sRow + sDx * x0) * qDyLod;
+        double b0 = tDy * q0 - (tRow + tDx * x0) * qDyLod;
+        double ax = sDy * qDxLod - sDx * qDyLod;
+        double bx = tDy * qDxLod - tDx * qDyLod;
+        double a = ax * ax + bx * bx;
+        if (!(a > 0)) {
+            // N constant along the row: E_n = 0.
+            return CHORD_FACTOR * qCurvature <= MAX_CHORD_ERROR * qMin2;
+        }
+        // a * N_min without a division: N(u) = n0 + 2 p u + a u^2 over u in [0, LOD_RUN] is least at
+        // u = -p / a clamped to the run, where a N = a n0 - p^2.
+        double n0 = a0 * a0 + b0 * b0;
+        double p = a0 * ax + b0 * bx;
+        double aNMin = p >= 0 ? a * n0
+                : p <= -a * LOD_RUN ? a * (n0 + LOD_RUN * (2 * p + a * LOD_RUN))
+                : a * n0 - p * p;
+        if (!(aNMin > 0)) {
+            return false;
+        }
+        // E_n = CHORD_FACTOR * a^2 / aNMin; both limits multiplied through by aNMin qMin^2 > 0.
+        double en = CHORD_FACTOR * a * a;
+        return en <= MAX_CHORD_ERROR_Y * aNMin
+                && CHORD_FACTOR * qCurvature * aNMin + en * qMin2 <= MAX_CHORD_ERROR * aNMin * qMin2;
     }
 
     /** The bilinear sample of level {@code d} of any chain at level-0 texel coordinates (s, t). */
