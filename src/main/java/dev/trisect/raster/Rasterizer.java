@@ -8,8 +8,10 @@ import dev.trisect.texture.TextureFilter;
  *
  * <p>Coverage is exact integer arithmetic on snapped corners: a pixel belongs to a triangle when its
  * centre is inside, and a centre exactly on an edge goes to the triangle for which that edge is a top
- * or a left edge (image coordinates, y down). Each row's covered span is solved from the three edge
- * functions instead of testing every pixel of the bounding box: each edge's bound is stepped from row
+ * or a left edge (image coordinates, y down). Each row's covered span is solved from the edge
+ * functions instead of testing every pixel of the bounding box: above the middle corner a row is
+ * bounded by the two edges that leave the top corner, below it by the two that reach the bottom one
+ * (the row through the middle corner looks at all three), and each edge's bound is stepped from row
  * to row with integer additions (an exact DDA, set up per triangle), so the span is exactly the set of
  * centres that a per-pixel test would accept.
  *
