@@ -13,13 +13,7 @@ import dev.trisect.tessellate.PieceSink;
 import dev.trisect.tessellate.TessellationSettings;
 import dev.trisect.tessellate.Tessellator;
 import dev.trisect.texture.Texture;
-import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.List;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
 
 /**
@@ -34,6 +28,13 @@ import java.util.concurrent.atomic.AtomicInteger;
  * <p>All scratch memory is kept from frame to frame: once it has grown to the scene's size, a frame
  * allocates only a few small objects to coordinate threads, nothing per triangle or per pixel.
  * Not thread-safe: one frame at a time. Close it to stop its threads.
+ *
+ * <p>When anything fails on any of its threads while drawing — an exception, or an error such as
+ * {@link OutOfMemoryError} — the frame stops on all threads and the method called rethrows the first
+ * failure unchanged (runtime exceptions and errors as themselves), on the calling thread, after all
+ * threads have stopped working on it; the renderer's own threads never die of it and the renderer can
+ * draw the next frame (see {@link WorkerPool}). A renderer used after {@link #close} throws
+ * {@link IllegalStateException}.
  */
 public final class FrameRenderer implements AutoCloseable {
     /** Rows per band: small enough to balance threads, large enough to amortize per-band setup. */
@@ -73,7 +74,7 @@ public final class FrameRenderer implements AutoCloseable {
     static final int TRIM_FLOOR = 16384;
 
     private final int threads;
-    private final ExecutorService pool;
+    private final WorkerPool pool;
     private final Worker[] workers;
     private Chunk[] chunks = new Chunk[0];
     private double[] clip = new double[0];
@@ -94,12 +95,7 @@ public final class FrameRenderer implements AutoCloseable {
         for (int i = 0; i < threads; i++) {
             workers[i] = new Worker();
         }
-        AtomicInteger serial = new AtomicInteger();
-        this.pool = threads == 1 ? null : Executors.newFixedThreadPool(threads - 1, r -> {
-            Thread t = new Thread(r, "trisect-render-" + serial.incrementAndGet());
-            t.setDaemon(true);
-            return t;
-        });
+        this.pool = new WorkerPool(threads, "trisect-render");
     }
 
     /** Threads this renderer fills frames with. */
@@ -167,7 +163,9 @@ public final class FrameRenderer implements AutoCloseable {
             w.fillNanos += System.nanoTime() - t0;
             if (borders) {
                 // The wait is neither filling nor outlining: it is left out of both measures.
-                awaitPrepared(prepared, prepTasks);
+                if (!awaitPrepared(prepared, prepTasks)) {
+                    return;
+                }
                 long t2 = System.nanoTime();
                 outlines.drawBand(w.overlay, frame, b, y0, y1);
                 w.overlayNanos += System.nanoTime() - t2;
@@ -231,7 +229,9 @@ public final class FrameRenderer implements AutoCloseable {
             // The frame has long left the cache: fetch the band's rows in order first, which costs
             // less than missing on them at every line pixel.
             w.touched += frame.touchRows(y0, y1);
-            awaitPrepared(prepared, prepTasks);
+            if (!awaitPrepared(prepared, prepTasks)) {
+                return;
+            }
             outlines.drawBand(w.overlay, frame, task - prepTasks, y0, y1);
         });
         return System.nanoTime() - start;
@@ -266,11 +266,17 @@ public final class FrameRenderer implements AutoCloseable {
      * Waits until {@code tasks} outline preparations are done. They are all taken before any band
      * is, by threads that are running them, so this ends; it yields rather than spins, so that on a
      * busy machine a preparing thread that lost its core gets it back sooner.
+     *
+     * @return true when they are done; false when a task of the pass has failed (the frame is lost)
      */
-    private static void awaitPrepared(AtomicInteger prepared, int tasks) {
+    private boolean awaitPrepared(AtomicInteger prepared, int tasks) {
         while (prepared.get() < tasks) {
+            if (pool.failed()) {
+                return false;
+            }
             Thread.yield();
         }
+        return true;
     }
 
     /** Chunks a mesh of {@code triangles} triangles is cut into: see {@link #SMALL_MESH_CHUNK_CAP}. */
@@ -475,59 +481,14 @@ public final class FrameRenderer implements AutoCloseable {
         void run(Worker worker, int index);
     }
 
-    /** Runs {@code job} for indices 0..count-1 on all threads, each index once; returns when all are done. */
+    /** Runs {@code job} for indices 0..count-1 on all threads, each index once; see {@link WorkerPool#run}. */
     private void parallel(int count, Job job) {
-        if (pool == null || count == 1) {
-            for (int i = 0; i < count; i++) {
-                job.run(workers[0], i);
-            }
-            return;
-        }
-        AtomicInteger next = new AtomicInteger();
-        int helpers = Math.min(threads, count) - 1;
-        List<Future<?>> futures = new ArrayList<>(helpers);
-        for (int t = 1; t <= helpers; t++) {
-            Worker w = workers[t];
-            futures.add(pool.submit(() -> drain(next, count, job, w)));
-        }
-        Throwable failure = null;
-        try {
-            drain(next, count, job, workers[0]);
-        } catch (RuntimeException | Error e) {
-            failure = e;
-        }
-        for (Future<?> f : futures) {
-            try {
-                f.get();
-            } catch (ExecutionException e) {
-                failure = failure == null ? e.getCause() : failure;
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                failure = failure == null ? e : failure;
-            }
-        }
-        if (failure instanceof RuntimeException re) {
-            throw re;
-        }
-        if (failure instanceof Error err) {
-            throw err;
-        }
-        if (failure != null) {
-            throw new IllegalStateException("render interrupted", failure);
-        }
-    }
-
-    private static void drain(AtomicInteger next, int count, Job job, Worker worker) {
-        for (int i = next.getAndIncrement(); i < count; i = next.getAndIncrement()) {
-            job.run(worker, i);
-        }
+        pool.run(count, (thread, index) -> job.run(workers[thread], index));
     }
 
     @Override
     public void close() {
-        if (pool != null) {
-            pool.shutdownNow();
-        }
+        pool.close();
     }
 
     /** Per-thread scratch. */

@@ -1,0 +1,221 @@
+package dev.trisect.pipeline;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trisect.math.Viewport;
+import dev.trisect.raster.Framebuffer;
+import dev.trisect.scene.DemoScenes;
+import dev.trisect.scene.Scene;
+import dev.trisect.texture.Texture;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicIntegerArray;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+/**
+ * The worker pool's contract (issue 14, item 1): every index once; a failure of any task on any
+ * thread — an out-of-memory error included — ends the run on all threads and is rethrown on the
+ * calling thread, which always returns; the helper threads survive it, parked, and the pool draws the
+ * next run; a closed pool says so. Timeouts guard against the hang this replaces.
+ */
+@Timeout(value = 60, unit = TimeUnit.SECONDS)
+class WorkerPoolTest {
+    /** The pool's helper threads, found by name. */
+    private static List<Thread> helpers(String name) {
+        List<Thread> found = new ArrayList<>();
+        for (Thread t : Thread.getAllStackTraces().keySet()) {
+            if (t.getName().startsWith(name + "-")) {
+                found.add(t);
+            }
+        }
+        return found;
+    }
+
+    /** Waits until every helper of the pool is parked between runs (alive, waiting, not running a task). */
+    private static void assertHelpersParked(String name, int count) throws InterruptedException {
+        List<Thread> hs = helpers(name);
+        assertEquals(count, hs.size(), "helper threads of " + name);
+        for (Thread t : hs) {
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+            while (t.getState() != Thread.State.WAITING && System.nanoTime() < deadline) {
+                Thread.sleep(1);
+            }
+            assertTrue(t.isAlive(), t.getName() + " is alive");
+            assertEquals(Thread.State.WAITING, t.getState(), t.getName() + " parked between runs");
+        }
+    }
+
+    @Test
+    void everyIndexRunsOnceOnAnyThreadCount() {
+        for (int threads = 1; threads <= 4; threads++) {
+            try (WorkerPool pool = new WorkerPool(threads, "pool-test-count")) {
+                for (int count : new int[] {0, 1, 2, 3, 7, 1000}) {
+                    AtomicIntegerArray runs = new AtomicIntegerArray(Math.max(1, count));
+                    pool.run(count, (thread, index) -> runs.incrementAndGet(index));
+                    for (int i = 0; i < count; i++) {
+                        assertEquals(1, runs.get(i), "index " + i + " of " + count + " on " + threads + " threads");
+                    }
+                }
+            }
+        }
+    }
+
+    @Test
+    void anOutOfMemoryErrorOnAHelperEndsTheRunAndIsRethrownAsItself() throws InterruptedException {
+        String name = "pool-test-oom";
+        try (WorkerPool pool = new WorkerPool(3, name)) {
+            OutOfMemoryError oom = new OutOfMemoryError("Java heap space (thrown by the test)");
+            AtomicInteger started = new AtomicInteger();
+            AtomicInteger startedAfterFailure = new AtomicInteger();
+            AtomicInteger failedAt = new AtomicInteger(-1);
+            OutOfMemoryError thrown = assertThrows(OutOfMemoryError.class, () -> pool.run(10_000, (thread, index) -> {
+                started.incrementAndGet();
+                if (failedAt.get() >= 0) {
+                    startedAfterFailure.incrementAndGet();
+                }
+                sleep();
+                if (thread != 0 && failedAt.compareAndSet(-1, index)) {
+                    throw oom;
+                }
+            }));
+            assertSame(oom, thrown, "the failure itself, not a wrapper");
+            assertTrue(failedAt.get() >= 0, "a helper threw");
+            // Tasks that had already looked for a failure before it was recorded may still start:
+            // at most one per other thread.
+            assertTrue(startedAfterFailure.get() <= 2, "tasks taken after the failure: " + startedAfterFailure);
+            assertTrue(started.get() < 10_000, "the run stopped early: " + started);
+            assertHelpersParked(name, 2);
+            assertNextRunIsWhole(pool);
+        }
+    }
+
+    @Test
+    void aRuntimeExceptionOnTheCallingThreadIsRethrownAfterTheHelpersStop() throws InterruptedException {
+        String name = "pool-test-caller";
+        try (WorkerPool pool = new WorkerPool(2, name)) {
+            IllegalArgumentException boom = new IllegalArgumentException("boom");
+            AtomicInteger active = new AtomicInteger();
+            AtomicInteger activeAtReturn = new AtomicInteger(-1);
+            RuntimeException thrown = assertThrows(RuntimeException.class, () -> {
+                try {
+                    pool.run(1000, (thread, index) -> {
+                        active.incrementAndGet();
+                        try {
+                            sleep();
+                            if (thread == 0) {
+                                throw boom;
+                            }
+                        } finally {
+                            active.decrementAndGet();
+                        }
+                    });
+                } finally {
+                    activeAtReturn.set(active.get());
+                }
+            });
+            assertSame(boom, thrown);
+            assertEquals(0, activeAtReturn.get(), "no task still running when run returns");
+            assertHelpersParked(name, 1);
+            assertNextRunIsWhole(pool);
+        }
+    }
+
+    @Test
+    void errorsStayErrorsAndTheFirstFailureWins() {
+        try (WorkerPool pool = new WorkerPool(3, "pool-test-errors")) {
+            StackOverflowError deep = new StackOverflowError("thrown by the test");
+            assertSame(deep, assertThrows(StackOverflowError.class, () -> pool.run(100, (thread, index) -> {
+                throw deep;
+            })));
+            // Every thread fails: one of their failures is rethrown, the others are dropped.
+            RuntimeException e = assertThrows(RuntimeException.class, () -> pool.run(100, (thread, index) -> {
+                sleep();
+                throw new IllegalStateException("from thread " + thread);
+            }));
+            assertTrue(e.getMessage().startsWith("from thread "), e.getMessage());
+            assertNextRunIsWhole(pool);
+        }
+    }
+
+    @Test
+    void anInterruptedCallerStillWaitsForItsHelpersAndKeepsTheInterrupt() {
+        try (WorkerPool pool = new WorkerPool(3, "pool-test-interrupt")) {
+            AtomicInteger done = new AtomicInteger();
+            Thread.currentThread().interrupt();
+            try {
+                pool.run(30, (thread, index) -> {
+                    sleep();
+                    done.incrementAndGet();
+                });
+                assertTrue(Thread.currentThread().isInterrupted(), "the interrupt is kept");
+            } finally {
+                Thread.interrupted();
+            }
+            assertEquals(30, done.get());
+        }
+    }
+
+    @Test
+    void aClosedPoolSaysSo() {
+        for (int threads : new int[] {1, 2}) {
+            WorkerPool pool = new WorkerPool(threads, "pool-test-closed");
+            pool.run(3, (thread, index) -> {
+            });
+            pool.close();
+            pool.close();
+            IllegalStateException e = assertThrows(IllegalStateException.class, () -> pool.run(3, (thread, index) -> {
+            }));
+            assertTrue(e.getMessage().contains("closed"), e.getMessage());
+        }
+    }
+
+    @Test
+    void aRendererRecoversFromAFailedFrameAndRefusesWorkAfterClose() {
+        Scene scene = DemoScenes.boxes();
+        Texture[] good = scene.textureArray();
+        // A missing texture fails inside the frame's tasks (clipping reads its size).
+        Texture[] broken = good.clone();
+        broken[broken.length - 1] = null;
+        var vp = scene.camera().viewProjection(new Viewport(160, 120));
+        RenderSettings s = RenderSettings.defaults().withBorders(true);
+        Framebuffer expected = new Framebuffer(160, 120);
+        try (FrameRenderer fresh = new FrameRenderer(1)) {
+            fresh.render(scene.mesh(), good, vp, s, expected);
+        }
+        FrameRenderer r = new FrameRenderer(3);
+        for (int i = 0; i < 3; i++) {
+            assertThrows(NullPointerException.class,
+                    () -> r.render(scene.mesh(), broken, vp, s, new Framebuffer(160, 120)));
+            Framebuffer after = new Framebuffer(160, 120);
+            r.render(scene.mesh(), good, vp, s, after);
+            assertArrayEquals(expected.color(), after.color(), "the frame after a failed one is right");
+        }
+        r.close();
+        IllegalStateException e = assertThrows(IllegalStateException.class,
+                () -> r.render(scene.mesh(), good, vp, s, new Framebuffer(160, 120)));
+        assertTrue(e.getMessage().contains("closed"), e.getMessage());
+    }
+
+    private static void assertNextRunIsWhole(WorkerPool pool) {
+        AtomicIntegerArray runs = new AtomicIntegerArray(500);
+        pool.run(500, (thread, index) -> runs.incrementAndGet(index));
+        for (int i = 0; i < 500; i++) {
+            assertEquals(1, runs.get(i), "index " + i + " of the next run");
+        }
+    }
+
+    private static void sleep() {
+        try {
+            Thread.sleep(1);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+}
