@@ -111,6 +111,52 @@ public final class Lod {
         return (int) Math.floor(Math.max(-1, Math.min(maxLevel + 1, lambda)) * Sampler.ONE);
     }
 
+    /** Mantissa bits indexing {@link #LOG2_Q16}: 64 segments. */
+    private static final int FAST_BITS = 6;
+    /** {@code round(65536 log2(1 + i / 64))} for i = 0..64: log2 of a float's mantissa, in 1/65536. */
+    private static final int[] LOG2_Q16 = new int[(1 << FAST_BITS) + 1];
+
+    static {
+        for (int i = 0; i < LOG2_Q16.length; i++) {
+            LOG2_Q16[i] = (int) Math.round(Math.log1p(i / (double) (1 << FAST_BITS)) / Math.log(2) * 65536);
+        }
+    }
+
+    /**
+     * {@link #fixed}{@code (}{@link #lambdaOf}{@code (rhoSquared), maxLevel)} from the bits of a float,
+     * without a logarithm: {@code floor(256 * 0.5 log2(rhoSquared))} in 1/256 level, clamped to
+     * {@code [-256, 256 (maxLevel + 1)]}, {@link #NO_LAMBDA} for NaN. log2 is the float's exponent plus
+     * log2 of its mantissa interpolated linearly in a 65-entry table, all in integers (the idea of
+     * SwiftShader's and llvmpipe's fast log2, which take the mantissa as the fraction, made exact to
+     * 5e-5: the chord of log2(1 + x) over 1/64 is within {@code (1/64)^2 / (8 ln 2)} of it, below it as
+     * log2 is concave, plus the table's rounding of 2^-17; the float rounding of {@code rhoSquared},
+     * relative 2^-24, adds 1e-7). So lambda is within 3e-5 of the exact one, and the floored value is
+     * the exact floor except where lambda is that close to a multiple of 1/256, where it may be the
+     * step next to it (0.19 % of random values, {@code LodTest}).
+     *
+     * @param rhoSquared {@code (ds/dx)^2 + (dt/dx)^2} or the same along y, level-0 texels per pixel, squared
+     * @param maxLevel   q, the last level's index
+     */
+    public static int fixedOfSquared(double rhoSquared, int maxLevel) {
+        int bits = Float.floatToRawIntBits((float) rhoSquared);
+        int exponent = bits >>> 23;
+        if (exponent - 1 >= 254) {
+            // Zero or subnormal, infinity or NaN, or a negative value (the sign bit makes exponent >= 256).
+            if (rhoSquared != rhoSquared) {
+                return NO_LAMBDA;
+            }
+            return exponent == 255 ? (maxLevel + 1) * Sampler.ONE : -Sampler.ONE;
+        }
+        int mantissa = bits & 0x7FFFFF;
+        int index = mantissa >>> (23 - FAST_BITS);
+        int fraction = mantissa & (1 << 23 - FAST_BITS) - 1;
+        int a = LOG2_Q16[index];
+        int log2Q16 = (exponent - 127 << 16) + a + ((LOG2_Q16[index + 1] - a) * fraction >> 23 - FAST_BITS);
+        // 256 * 0.5 * log2 = log2Q16 / 512, floored by the arithmetic shift.
+        int lambda256 = log2Q16 >> 9;
+        return Math.max(-Sampler.ONE, Math.min((maxLevel + 1) * Sampler.ONE, lambda256));
+    }
+
     /**
      * {@link #select(double, int)} for a lambda given in 1/256 steps ({@link #fixed}): the same level and
      * weight, since {@code floor(256 lambda) = 256 level + weight} for lambda in (0, maxLevel).

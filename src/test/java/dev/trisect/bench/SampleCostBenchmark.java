@@ -3,10 +3,12 @@ package dev.trisect.bench;
 import dev.trisect.raster.Framebuffer;
 import dev.trisect.raster.Rasterizer;
 import dev.trisect.raster.ScreenTriangles;
+import dev.trisect.texture.LaneSampler;
 import dev.trisect.texture.Lod;
 import dev.trisect.texture.MipChain;
 import dev.trisect.texture.ProceduralTextures;
 import dev.trisect.texture.Sampler;
+import dev.trisect.texture.TexelLanes;
 import dev.trisect.texture.Texture;
 import dev.trisect.texture.TextureFilter;
 import java.util.concurrent.TimeUnit;
@@ -52,6 +54,7 @@ public class SampleCostBenchmark {
     private final int[] order = {0, 1};
     private Texture[] textures;
     private MipChain mips;
+    private TexelLanes lanes;
     private final Rasterizer nearest = new Rasterizer();
     private final Rasterizer bilinear = new Rasterizer();
     private final Rasterizer trilinear = new Rasterizer();
@@ -75,6 +78,7 @@ public class SampleCostBenchmark {
         Texture grid = ProceduralTextures.uvGrid(512);
         textures = new Texture[] {grid};
         mips = grid.mipChain();
+        lanes = mips.lanes();
         // A floor 1 unit below a camera looking along it, focal length 1000 px, horizon 200 px above the
         // frame, 1024 texels a unit: over pixel centres 1/w = Q = (y + 200) / 1000, s/w = S = 1.024 (x - 960)
         // and t/w = T = 1024 (t = 1024 z), the planes the rasterizer interpolates.
@@ -203,6 +207,49 @@ public class SampleCostBenchmark {
                 c = Sampler.lerp(c, sample(d + 1, sFixed[i], tFixed[i]), weight);
             }
             out[i] = c;
+        }
+        return out;
+    }
+
+    /**
+     * The level of detail from the float's bits ({@link Lod#fixedOfSquared}) instead of the double table's
+     * logarithm: the same derivatives and division as {@link #lod}, both axes, and the split.
+     */
+    @Benchmark
+    @OperationsPerInvocation(SAMPLES)
+    public int lodFloatBits() {
+        int maxLevel = mips.maxLevel();
+        int acc = 0;
+        for (int i = 0; i < SAMPLES; i++) {
+            double r = rq[i];
+            int lx = Lod.fixedOfSquared(Lod.rhoSquared(s[i], t[i], r, sDx, tDx, qDx), maxLevel);
+            int ly = Lod.fixedOfSquared(Lod.rhoSquared(s[i], t[i], r, sDy, tDy, qDy), maxLevel);
+            acc += Lod.select(Math.max(lx, ly), maxLevel);
+        }
+        return acc;
+    }
+
+    /** {@link #sampleBilinear} with {@link LaneSampler} on the padded lanes: 8-bit weights, one pass. */
+    @Benchmark
+    @OperationsPerInvocation(SAMPLES)
+    public int[] sampleBilinearLanes() {
+        long[] l = lanes.lanes();
+        int stride = lanes.stride(0);
+        for (int i = 0; i < SAMPLES; i++) {
+            out[i] = TexelLanes.argb(LaneSampler.bilinearPowerOfTwo(l, 0, stride, 511, 511,
+                    sFixed[i] - Sampler.ONE / 2, tFixed[i] - Sampler.ONE / 2));
+        }
+        return out;
+    }
+
+    /** {@link #sampleTrilinear} with {@link LaneSampler#trilinearPowerOfTwo}. */
+    @Benchmark
+    @OperationsPerInvocation(SAMPLES)
+    public int[] sampleTrilinearLanes() {
+        long[] l = lanes.lanes();
+        int[] levels = lanes.levels();
+        for (int i = 0; i < SAMPLES; i++) {
+            out[i] = LaneSampler.trilinearPowerOfTwo(l, levels, selection[i], sFixed[i], tFixed[i]);
         }
         return out;
     }

@@ -1,6 +1,7 @@
 package dev.trisect.texture;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
 
@@ -98,5 +99,39 @@ class LodTest {
         assertEquals(3.0, Lod.log2(8), 0.0, "powers of two are exact");
         assertEquals(-1.0, Lod.log2(0.5), 0.0);
         assertEquals(Double.NEGATIVE_INFINITY, Lod.log2(0));
+    }
+
+    @Test
+    void floatBitsLambdaIsTheExactFloorOrOneStepBelow() {
+        // fixedOfSquared (float exponent and a 65-entry table) against floor(256 * 0.5 log2) from Math.log:
+        // within 5e-5 of log2, so the same step or a neighbouring one, and the same in nearly all cases.
+        java.util.Random rnd = new java.util.Random(19);
+        int maxLevel = 14;
+        int off = 0;
+        int n = 200_000;
+        for (int i = 0; i < n; i++) {
+            double x = Math.pow(2, rnd.nextDouble() * 34 - 3);
+            int exact = Math.max(-256, Math.min(256 * (maxLevel + 1), (int) Math.floor(128 * Math.log(x) / Math.log(2))));
+            int got = Lod.fixedOfSquared(x, maxLevel);
+            assertTrue(Math.abs(got - exact) <= 1, "rho^2 " + x + ": " + got + " vs " + exact);
+            if (got != exact) {
+                off++;
+            }
+            assertEquals(Lod.fixed(Lod.lambdaOf(x), maxLevel) >> 1, got >> 1, 1, "rho^2 " + x);
+        }
+        assertTrue(off < n / 200, off + " of " + n + " one step off");
+        // Powers of two are exact: rho = 2^k is lambda k.
+        for (int k = -1; k <= 15; k++) {
+            assertEquals(256 * k, Lod.fixedOfSquared(Math.pow(4, k), 15), "rho 2^" + k);
+        }
+        assertEquals(Lod.NO_LAMBDA, Lod.fixedOfSquared(Double.NaN, 8));
+        assertEquals(-256, Lod.fixedOfSquared(0, 8), "zero derivatives: clamped below");
+        assertEquals(-256, Lod.fixedOfSquared(-0.0, 8));
+        assertEquals(-256, Lod.fixedOfSquared(1e-300, 8), "a float underflow");
+        assertEquals(-256, Lod.fixedOfSquared(1e-40, 8), "a subnormal float");
+        assertEquals(9 * 256, Lod.fixedOfSquared(1e300, 8), "a float overflow: clamped above");
+        assertEquals(9 * 256, Lod.fixedOfSquared(Double.POSITIVE_INFINITY, 8));
+        assertEquals(-256, Lod.fixedOfSquared(0.01, 8), "lambda -3.3, clamped to -1");
+        assertEquals(0, Lod.select(Lod.fixedOfSquared(0.9, 8), 8), "magnification");
     }
 }
