@@ -15,7 +15,7 @@ import dev.trisect.perf.FrameTimes;
 import dev.trisect.perf.Sweep;
 import dev.trisect.perf.SweepChart;
 import dev.trisect.scene.Camera;
-import dev.trisect.scene.Scene;
+import dev.trisect.content.SceneAsset;
 import dev.trisect.texture.Texture;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -123,7 +123,7 @@ final class BenchCommand extends SceneCommand {
     }
 
     @Override
-    int run(Scene scene, Camera camera) throws IOException, InterruptedException {
+    int run(SceneAsset scene, Camera camera) throws IOException, InterruptedException {
         Texture[] textures = scene.textureArray();
         if (glref != null) {
             Arrays.fill(textures, textures[0]);
@@ -210,7 +210,7 @@ final class BenchCommand extends SceneCommand {
     private static final Pattern GLREF_OUT = Pattern.compile("ms_per_frame\\s+([0-9.]+)");
 
     /** Exports the scene, runs glref with LP_NUM_THREADS set, and reports its mean frame time. */
-    private String glrefRow(Scene scene, Texture texture, Camera camera, int threads)
+    private String glrefRow(SceneAsset scene, Texture texture, Camera camera, int threads)
             throws IOException, InterruptedException {
         if (!camera.up().normalize().equals(Vec3.UP)) {
             common.note("glref always uses up = 0,1,0; its frame differs from ours for --up " + camera.up());

@@ -14,7 +14,7 @@ import dev.trisect.pipeline.RenderMode;
 import dev.trisect.pipeline.RenderSettings;
 import dev.trisect.raster.Framebuffer;
 import dev.trisect.scene.Camera;
-import dev.trisect.scene.Scene;
+import dev.trisect.content.SceneAsset;
 import java.nio.file.Path;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -67,7 +67,7 @@ final class CompareCommand extends SceneCommand {
     }
 
     @Override
-    int run(Scene scene, Camera camera) {
+    int run(SceneAsset scene, Camera camera) {
         RenderSettings settings = path.settings(frame);
         Framebuffer test = Frames.allocate(frame.size);
         Framebuffer reference = Frames.allocate(frame.size);

@@ -1,7 +1,7 @@
 package dev.trisect.cli;
 
 import dev.trisect.io.ObjWriter;
-import dev.trisect.scene.Scene;
+import dev.trisect.content.SceneAsset;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.Callable;
@@ -30,7 +30,7 @@ final class ExportCommand implements Callable<Integer> {
             return 0;
         }
         Outputs.checkObj("--to", to);
-        Scene scene = frame.loadScene(common::note);
+        SceneAsset scene = frame.loadScene(common::note);
         var camera = frame.camera(scene);
         Outputs.createParent("--to", to);
         List<Path> maps = ObjWriter.write(to, scene.mesh(), scene.textures());

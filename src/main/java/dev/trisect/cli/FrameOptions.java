@@ -4,9 +4,9 @@ import dev.trisect.base.InputException;
 import dev.trisect.math.Vec3;
 import dev.trisect.pipeline.CullMode;
 import dev.trisect.scene.Camera;
-import dev.trisect.scene.DemoScenes;
-import dev.trisect.scene.Scene;
-import dev.trisect.scene.SceneLoader;
+import dev.trisect.content.DemoScenes;
+import dev.trisect.content.SceneAsset;
+import dev.trisect.content.SceneLoader;
 import java.nio.file.Path;
 import java.util.function.Consumer;
 import picocli.CommandLine.Option;
@@ -86,7 +86,7 @@ final class FrameOptions {
     }
 
     /** Loads the scene the options name; notes for the user go to {@code notes}. */
-    Scene loadScene(Consumer<String> notes) {
+    SceneAsset loadScene(Consumer<String> notes) {
         if (obj != null) {
             return SceneLoader.load(obj, texture, notes);
         }
@@ -98,7 +98,7 @@ final class FrameOptions {
     }
 
     /** The camera: the scene's, with whatever the options set in its place. */
-    Camera camera(Scene s) {
+    Camera camera(SceneAsset s) {
         Camera own = s.camera();
         double n = near != null ? near : own.near();
         double f = far != null ? far : own.far();

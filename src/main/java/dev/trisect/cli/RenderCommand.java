@@ -8,7 +8,7 @@ import dev.trisect.pipeline.FrameStats;
 import dev.trisect.pipeline.RenderSettings;
 import dev.trisect.raster.Framebuffer;
 import dev.trisect.scene.Camera;
-import dev.trisect.scene.Scene;
+import dev.trisect.content.SceneAsset;
 import java.nio.file.Path;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -42,7 +42,7 @@ final class RenderCommand extends SceneCommand {
     }
 
     @Override
-    int run(Scene scene, Camera camera) {
+    int run(SceneAsset scene, Camera camera) {
         RenderSettings settings = path.settings(frame);
         Framebuffer fb = Frames.allocate(frame.size);
         fb.recordUv(uvOut != null);

@@ -1,7 +1,7 @@
 package dev.trisect.cli;
 
 import dev.trisect.scene.Camera;
-import dev.trisect.scene.Scene;
+import dev.trisect.content.SceneAsset;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Mixin;
 
@@ -24,7 +24,7 @@ abstract class SceneCommand implements Callable<Integer> {
     }
 
     /** Does the work; returns the exit status. */
-    abstract int run(Scene scene, Camera camera) throws Exception;
+    abstract int run(SceneAsset scene, Camera camera) throws Exception;
 
     @Override
     public final Integer call() throws Exception {
@@ -33,7 +33,7 @@ abstract class SceneCommand implements Callable<Integer> {
             return 0;
         }
         checkOutputs();
-        Scene scene = frame.loadScene(common::note);
+        SceneAsset scene = frame.loadScene(common::note);
         return run(scene, frame.camera(scene));
     }
 }

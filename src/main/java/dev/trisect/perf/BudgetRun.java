@@ -8,7 +8,7 @@ import dev.trisect.pipeline.RenderMode;
 import dev.trisect.pipeline.RenderSettings;
 import dev.trisect.raster.Framebuffer;
 import dev.trisect.scene.Camera;
-import dev.trisect.scene.Scene;
+import dev.trisect.content.SceneAsset;
 import dev.trisect.tessellate.SplitPolicy;
 import dev.trisect.tessellate.TessellationSettings;
 import dev.trisect.texture.Texture;
@@ -37,7 +37,7 @@ public final class BudgetRun {
      * @param settings tessellated settings; their policy's threshold is the ceiling and the start
      * @param orbit    whether the camera circles its target (about the up axis) once over the frames
      */
-    public static Trace run(FrameRenderer renderer, Scene scene, Texture[] textures, Camera camera, int width,
+    public static Trace run(FrameRenderer renderer, SceneAsset scene, Texture[] textures, Camera camera, int width,
                             int height, RenderSettings settings, double targetMs, boolean orbit, int warmup,
                             int frames, FrameBench.Progress progress) {
         RenderSettings base = settings.withMode(RenderMode.TESSELLATED);

@@ -5,7 +5,7 @@ import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.FrameStats;
 import dev.trisect.pipeline.RenderSettings;
 import dev.trisect.raster.Framebuffer;
-import dev.trisect.scene.Scene;
+import dev.trisect.content.SceneAsset;
 import dev.trisect.texture.Texture;
 
 /**
@@ -27,7 +27,7 @@ public final class FrameBench {
     }
 
     private final FrameRenderer renderer;
-    private final Scene scene;
+    private final SceneAsset scene;
     private final Texture[] textures;
     private final Mat4 viewProjection;
     private final Framebuffer frame;
@@ -37,7 +37,7 @@ public final class FrameBench {
      * @param viewProjection world space to clip space
      * @param frame          the frame to draw into, whose size is the benchmark's
      */
-    public FrameBench(FrameRenderer renderer, Scene scene, Texture[] textures, Mat4 viewProjection,
+    public FrameBench(FrameRenderer renderer, SceneAsset scene, Texture[] textures, Mat4 viewProjection,
                       Framebuffer frame) {
         this.renderer = renderer;
         this.scene = scene;

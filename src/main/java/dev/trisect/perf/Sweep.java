@@ -9,7 +9,7 @@ import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.RenderMode;
 import dev.trisect.pipeline.RenderSettings;
 import dev.trisect.raster.Framebuffer;
-import dev.trisect.scene.Scene;
+import dev.trisect.content.SceneAsset;
 import dev.trisect.tessellate.SplitPolicy;
 import dev.trisect.tessellate.TessellationSettings;
 import dev.trisect.texture.Texture;
@@ -85,7 +85,7 @@ public final class Sweep {
      * @param errors   error-policy thresholds, pixels, each &gt; 0 (sorted here)
      * @param progress told after every frame of the whole sweep
      */
-    public static Result run(FrameRenderer renderer, Scene scene, Texture[] textures, Mat4 viewProjection,
+    public static Result run(FrameRenderer renderer, SceneAsset scene, Texture[] textures, Mat4 viewProjection,
                              int width, int height, RenderSettings base, List<Double> edges, List<Double> errors,
                              int warmup, int frames, FrameBench.Progress progress) {
         List<Double> e = sortedPositive(edges, "edge");

@@ -2,7 +2,7 @@ package dev.trisect.ui;
 
 import dev.trisect.pipeline.RenderSettings;
 import dev.trisect.scene.Camera;
-import dev.trisect.scene.Scene;
+import dev.trisect.content.SceneAsset;
 import dev.trisect.tessellate.TessellationSettings;
 import java.util.ArrayList;
 import java.util.List;
@@ -14,7 +14,7 @@ final class CliArgs {
     }
 
     /** {@code compare} arguments for the measured frame: same scene, size, camera and path settings. */
-    static List<String> compare(Scene scene, DemoState.Measurement m) {
+    static List<String> compare(SceneAsset scene, DemoState.Measurement m) {
         List<String> a = new ArrayList<>();
         a.add("compare");
         if (scene.source() != null) {
@@ -60,7 +60,7 @@ final class CliArgs {
     static final String LAUNCHER = "java -jar target/trisect.jar";
 
     /** The whole {@code compare} command line for a shell, each argument quoted where it needs it. */
-    static String compareCommand(Scene scene, DemoState.Measurement m) {
+    static String compareCommand(SceneAsset scene, DemoState.Measurement m) {
         StringBuilder b = new StringBuilder(LAUNCHER);
         for (String arg : compare(scene, m)) {
             b.append(' ').append(shellQuote(arg));

@@ -3,9 +3,9 @@ package dev.trisect.ui;
 import com.formdev.flatlaf.FlatDarkLaf;
 import dev.trisect.base.InputException;
 import dev.trisect.pipeline.RenderMode;
-import dev.trisect.scene.DemoScenes;
-import dev.trisect.scene.Scene;
-import dev.trisect.scene.SceneLoader;
+import dev.trisect.content.DemoScenes;
+import dev.trisect.content.SceneAsset;
+import dev.trisect.content.SceneLoader;
 import java.awt.AWTError;
 import java.awt.GraphicsEnvironment;
 import java.awt.HeadlessException;
@@ -131,7 +131,7 @@ public final class DemoApp implements Callable<Integer> {
             return 1;
         }
 
-        Scene s = obj != null ? SceneLoader.load(obj, null, note -> System.err.println("trisect: note: " + note))
+        SceneAsset s = obj != null ? SceneLoader.load(obj, null, note -> System.err.println("trisect: note: " + note))
                 : DemoScenes.byName(scene).orElseThrow(() -> InputException.usage("unknown scene '" + scene
                         + "' (built-in scenes: " + String.join(", ", DemoScenes.names()) + ")"));
         DemoState state = new DemoState(s);
@@ -169,7 +169,7 @@ public final class DemoApp implements Callable<Integer> {
     }
 
     /** Opens the demo on the event thread for tests: the window, built and shown. */
-    static DemoWindow openForTest(Scene scene, ViewSettings settings, int threads) throws Exception {
+    static DemoWindow openForTest(SceneAsset scene, ViewSettings settings, int threads) throws Exception {
         DemoState state = new DemoState(scene);
         state.settings(settings);
         AtomicReference<DemoWindow> window = new AtomicReference<>();

@@ -2,7 +2,7 @@ package dev.trisect.ui;
 
 import dev.trisect.metrics.Comparison;
 import dev.trisect.scene.Camera;
-import dev.trisect.scene.Scene;
+import dev.trisect.content.SceneAsset;
 
 /**
  * What the event thread and the render thread share. Each field is an immutable value behind a
@@ -16,7 +16,7 @@ final class DemoState {
     /** Freeze and step: set by the event thread, obeyed by the render loop. */
     final FreezeGate freeze = new FreezeGate();
     private volatile ViewSettings settings = ViewSettings.defaults();
-    private volatile Scene scene;
+    private volatile SceneAsset scene;
     private volatile long sceneSerial;
     /** View size in device pixels, width in the high half; 0 when hidden or minimized. */
     private volatile long viewSize;
@@ -57,7 +57,7 @@ final class DemoState {
     record Progress(long frames, double fps, double compareMs) {
     }
 
-    DemoState(Scene scene) {
+    DemoState(SceneAsset scene) {
         this.scene = scene;
     }
 
@@ -69,7 +69,7 @@ final class DemoState {
         settings = s;
     }
 
-    Scene scene() {
+    SceneAsset scene() {
         return scene;
     }
 
@@ -78,7 +78,7 @@ final class DemoState {
     }
 
     /** Shows another scene from the next frame on; the camera goes to the scene's own. */
-    void scene(Scene s) {
+    void scene(SceneAsset s) {
         scene = s;
         sceneSerial++;
     }

@@ -7,8 +7,8 @@ import dev.trisect.texture.TextureFilter;
 import dev.trisect.pipeline.RenderSettings;
 import dev.trisect.raster.BorderStyle;
 import dev.trisect.tessellate.SplitPolicy;
-import dev.trisect.scene.Scene;
-import dev.trisect.scene.SceneLoader;
+import dev.trisect.content.SceneAsset;
+import dev.trisect.content.SceneLoader;
 import java.awt.BorderLayout;
 import java.awt.Frame;
 import java.awt.event.ActionEvent;
@@ -213,7 +213,7 @@ final class DemoWindow {
         refresh = new Timer(250, e -> refreshReadouts());
     }
 
-    private static String title(Scene scene) {
+    private static String title(SceneAsset scene) {
         return "Trisect \u2014 " + scene.name();
     }
 
@@ -496,16 +496,16 @@ final class DemoWindow {
     void loadObj(Path file) {
         status("Loading " + file + " \u2026");
         List<String> notes = new ArrayList<>();
-        new SwingWorker<Scene, Void>() {
+        new SwingWorker<SceneAsset, Void>() {
             @Override
-            protected Scene doInBackground() {
+            protected SceneAsset doInBackground() {
                 return SceneLoader.load(file, null, notes::add);
             }
 
             @Override
             protected void done() {
                 try {
-                    Scene s = get();
+                    SceneAsset s = get();
                     state.scene(s);
                     frame.setTitle(title(s));
                     orbitCommand.show(false);

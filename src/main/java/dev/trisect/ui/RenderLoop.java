@@ -13,7 +13,7 @@ import dev.trisect.pipeline.RenderSettings;
 import dev.trisect.raster.BorderStyle;
 import dev.trisect.raster.Framebuffer;
 import dev.trisect.scene.Camera;
-import dev.trisect.scene.Scene;
+import dev.trisect.content.SceneAsset;
 
 /**
  * The render thread: draws frames continuously into the engine's framebuffers and hands them to the
@@ -151,7 +151,7 @@ final class RenderLoop implements Runnable {
     }
 
     private void drawFrame(ViewSettings settings, int fw, int fh, FreezeGate.Action action, double dt) {
-        Scene scene = state.scene();
+        SceneAsset scene = state.scene();
         if (state.sceneSerial() != sceneSerial || rig == null) {
             sceneSerial = state.sceneSerial();
             rig = new CameraRig(scene.camera());

@@ -3,7 +3,7 @@ package dev.trisect.ui;
 import dev.trisect.metrics.HeatScale;
 import dev.trisect.pipeline.RenderSettings;
 import dev.trisect.raster.BorderStyle;
-import dev.trisect.scene.DemoScenes;
+import dev.trisect.content.DemoScenes;
 import dev.trisect.texture.TextureFilter;
 
 /**

@@ -7,8 +7,8 @@ import dev.trisect.pipeline.FrameStats;
 import dev.trisect.pipeline.RenderMode;
 import dev.trisect.pipeline.RenderSettings;
 import dev.trisect.raster.Framebuffer;
-import dev.trisect.scene.DemoScenes;
-import dev.trisect.scene.Scene;
+import dev.trisect.content.DemoScenes;
+import dev.trisect.content.SceneAsset;
 import dev.trisect.tessellate.SplitPolicy;
 import dev.trisect.tessellate.TessellationSettings;
 import dev.trisect.texture.Texture;
@@ -49,7 +49,7 @@ public class FrameBenchmark {
 
     private FrameRenderer renderer;
     private Framebuffer frame;
-    private Scene s;
+    private SceneAsset s;
     private Texture[] textures;
     private Mat4 viewProjection;
     private RenderSettings settings;

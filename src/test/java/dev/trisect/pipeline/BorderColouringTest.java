@@ -7,8 +7,8 @@ import dev.trisect.math.Viewport;
 import dev.trisect.raster.BorderStyle;
 import dev.trisect.raster.Framebuffer;
 import dev.trisect.raster.OverlayColours;
-import dev.trisect.scene.DemoScenes;
-import dev.trisect.scene.Scene;
+import dev.trisect.content.DemoScenes;
+import dev.trisect.content.SceneAsset;
 import dev.trisect.tessellate.SplitPolicy;
 import dev.trisect.tessellate.TessellationSettings;
 import java.util.HashMap;
@@ -23,7 +23,7 @@ class BorderColouringTest {
     private record Frame(int[] colour, FrameStats stats) {
     }
 
-    private static Frame render(Scene scene, TessellationSettings t, BorderStyle style) {
+    private static Frame render(SceneAsset scene, TessellationSettings t, BorderStyle style) {
         Framebuffer fb = new Framebuffer(W, H);
         RenderSettings r = RenderSettings.defaults().withTessellation(t).withBorders(true).withBorderStyle(style);
         try (FrameRenderer renderer = new FrameRenderer(2)) {
@@ -73,7 +73,7 @@ class BorderColouringTest {
 
     @Test
     void boundColouringIsNeverRedUnderTheErrorPolicyAndIsUnderTheEdgePolicy() {
-        Scene floor = DemoScenes.floor();
+        SceneAsset floor = DemoScenes.floor();
         BorderStyle bound = new BorderStyle(BorderStyle.Colouring.BOUND, false);
         Frame error = render(floor, TessellationSettings.defaults().withPolicy(SplitPolicy.ERROR).withMaxError(0.5), bound);
         assertEquals(0, count(error.colour(), OverlayColours.OVER_BOUND), "every piece meets the bound");

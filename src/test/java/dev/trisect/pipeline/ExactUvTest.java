@@ -7,8 +7,8 @@ import dev.trisect.math.Viewport;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.raster.Framebuffer;
 import dev.trisect.scene.Camera;
-import dev.trisect.scene.DemoScenes;
-import dev.trisect.scene.Scene;
+import dev.trisect.content.DemoScenes;
+import dev.trisect.content.SceneAsset;
 import dev.trisect.texture.Texture;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -32,7 +32,7 @@ class ExactUvTest {
     @ParameterizedTest
     @ValueSource(strings = {"floor", "boxes", "demo"})
     void everyPixelShowsTheTexelItsRayHits(String name) {
-        Scene scene = DemoScenes.byName(name).orElseThrow();
+        SceneAsset scene = DemoScenes.byName(name).orElseThrow();
         Camera cam = scene.camera();
         Framebuffer fb = new Framebuffer(W, H);
         fb.recordUv(true);
@@ -67,7 +67,7 @@ class ExactUvTest {
     }
 
     /** Texel coordinates where the ray eye + k * dir meets the plane of triangle {@code t}. */
-    private static double[] texelOnTriangle(Scene scene, int t, Vec3 eye, Vec3 dir) {
+    private static double[] texelOnTriangle(SceneAsset scene, int t, Vec3 eye, Vec3 dir) {
         Mesh m = scene.mesh();
         Vec3[] p = new Vec3[3];
         double[][] st = new double[3][2];

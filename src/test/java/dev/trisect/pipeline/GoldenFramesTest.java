@@ -3,14 +3,14 @@ package dev.trisect.pipeline;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import dev.trisect.content.DemoScenes;
+import dev.trisect.content.SceneAsset;
 import dev.trisect.math.Mat4;
 import dev.trisect.math.Vec3;
 import dev.trisect.math.Viewport;
 import dev.trisect.raster.BorderStyle;
 import dev.trisect.raster.Framebuffer;
 import dev.trisect.scene.Camera;
-import dev.trisect.scene.DemoScenes;
-import dev.trisect.scene.Scene;
 import dev.trisect.tessellate.SplitPolicy;
 import dev.trisect.tessellate.TessellationSettings;
 import dev.trisect.texture.Texture;
@@ -88,7 +88,7 @@ class GoldenFramesTest {
     }
 
     /** One scene's view, shared by its cases. */
-    private record View(String name, Scene scene, Texture[] textures, Mat4 viewProjection, RenderSettings base) {
+    private record View(String name, SceneAsset scene, Texture[] textures, Mat4 viewProjection, RenderSettings base) {
     }
 
     /** One case: a name and what one renderer makes of it, as a line of hashes and counts. */
@@ -148,7 +148,7 @@ class GoldenFramesTest {
     private static List<View> views() {
         List<View> views = new ArrayList<>();
         for (String name : SCENES) {
-            Scene scene = DemoScenes.byName(name).orElseThrow();
+            SceneAsset scene = DemoScenes.byName(name).orElseThrow();
             views.add(view(name, scene, scene.camera()));
         }
         Vec3 eye = new Vec3(5, 0.05, 0.13);
@@ -157,7 +157,7 @@ class GoldenFramesTest {
         return views;
     }
 
-    private static View view(String name, Scene scene, Camera camera) {
+    private static View view(String name, SceneAsset scene, Camera camera) {
         return new View(name, scene, scene.textureArray(), camera.viewProjection(new Viewport(W, H)),
                 RenderSettings.defaults().withBackground(DemoScenes.background(scene.name())));
     }

@@ -6,8 +6,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import dev.trisect.math.Mat4;
 import dev.trisect.math.Viewport;
 import dev.trisect.raster.Framebuffer;
-import dev.trisect.scene.DemoScenes;
-import dev.trisect.scene.Scene;
+import dev.trisect.content.DemoScenes;
+import dev.trisect.content.SceneAsset;
 import dev.trisect.tessellate.TessellationSettings;
 import org.junit.jupiter.api.Test;
 
@@ -15,7 +15,7 @@ import org.junit.jupiter.api.Test;
 class ScratchTrimTest {
     @Test
     void oneExtremeFrameDoesNotKeepItsMemoryForever() {
-        Scene scene = DemoScenes.demo();
+        SceneAsset scene = DemoScenes.demo();
         Framebuffer fb = new Framebuffer(400, 240);
         Mat4 vp = scene.camera().viewProjection(new Viewport(400, 240));
         RenderSettings normal = RenderSettings.defaults();

@@ -6,10 +6,10 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import dev.trisect.content.DemoScenes;
+import dev.trisect.content.SceneAsset;
 import dev.trisect.math.Viewport;
 import dev.trisect.raster.Framebuffer;
-import dev.trisect.scene.DemoScenes;
-import dev.trisect.scene.Scene;
 import dev.trisect.texture.Texture;
 import java.util.ArrayList;
 import java.util.List;
@@ -178,7 +178,7 @@ class WorkerPoolTest {
 
     @Test
     void aRendererRecoversFromAFailedFrameAndRefusesWorkAfterClose() {
-        Scene scene = DemoScenes.boxes();
+        SceneAsset scene = DemoScenes.boxes();
         Texture[] good = scene.textureArray();
         // A missing texture fails inside the frame's tasks (clipping reads its size).
         Texture[] broken = good.clone();

@@ -9,8 +9,8 @@ import dev.trisect.math.Vec3;
 import dev.trisect.metrics.Comparison;
 import dev.trisect.texture.TextureFilter;
 import dev.trisect.scene.Camera;
-import dev.trisect.scene.DemoScenes;
-import dev.trisect.scene.Scene;
+import dev.trisect.content.DemoScenes;
+import dev.trisect.content.SceneAsset;
 import java.awt.Dimension;
 import java.awt.Rectangle;
 import java.nio.file.Files;
@@ -107,8 +107,8 @@ class DevToolsLogicTest {
 
     @Test
     void theCopiedCommandRunsFromTheRepositoryRootWithEverySetting() {
-        Scene demo = DemoScenes.demo();
-        Scene obj = new Scene("it's here", "", demo.mesh(), demo.textures(), demo.camera(),
+        SceneAsset demo = DemoScenes.demo();
+        SceneAsset obj = new SceneAsset("it's here", "", demo.mesh(), demo.textures(), demo.camera(),
                 Path.of("my models/it's.obj"));
         ViewSettings v = ViewSettings.defaults().withRender(ViewSettings.defaults().render().withBorders(true)
                 .withFilter(TextureFilter.BILINEAR));

@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import dev.trisect.scene.DemoScenes;
+import dev.trisect.content.DemoScenes;
 import org.junit.jupiter.api.Test;
 
 /** The frame-time graph's data: stages that add up to the whole frame, the last five seconds, every path's time. */

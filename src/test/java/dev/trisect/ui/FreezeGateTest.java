@@ -5,7 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.cli.Cli;
-import dev.trisect.scene.DemoScenes;
+import dev.trisect.content.DemoScenes;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.nio.file.Path;

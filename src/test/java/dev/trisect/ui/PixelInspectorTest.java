@@ -10,8 +10,8 @@ import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.PieceInfo;
 import dev.trisect.pipeline.RenderMode;
 import dev.trisect.raster.Framebuffer;
-import dev.trisect.scene.DemoScenes;
-import dev.trisect.scene.Scene;
+import dev.trisect.content.DemoScenes;
+import dev.trisect.content.SceneAsset;
 import dev.trisect.tessellate.SplitPolicy;
 import org.junit.jupiter.api.Test;
 
@@ -46,7 +46,7 @@ class PixelInspectorTest {
 
     @Test
     void everyNumberIsTheRenderersOwn() throws Exception {
-        Scene floor = DemoScenes.floor();
+        SceneAsset floor = DemoScenes.floor();
         DemoState state = new DemoState(floor);
         ViewSettings v = ViewSettings.defaults().withRender(ViewSettings.defaults().render()
                 .withTessellation(ViewSettings.defaults().render().tessellation().withPolicy(SplitPolicy.ERROR)

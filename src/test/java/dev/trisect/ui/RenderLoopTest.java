@@ -7,7 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import dev.trisect.cli.Cli;
 import dev.trisect.metrics.Comparison;
 import dev.trisect.pipeline.RenderMode;
-import dev.trisect.scene.DemoScenes;
+import dev.trisect.content.DemoScenes;
 import dev.trisect.tessellate.SplitPolicy;
 import java.io.PrintWriter;
 import java.io.StringWriter;

@@ -8,8 +8,8 @@ import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.FrameStats;
 import dev.trisect.pipeline.RenderSettings;
 import dev.trisect.raster.Framebuffer;
-import dev.trisect.scene.DemoScenes;
-import dev.trisect.scene.Scene;
+import dev.trisect.content.DemoScenes;
+import dev.trisect.content.SceneAsset;
 import dev.trisect.tessellate.SplitPolicy;
 import dev.trisect.tessellate.TessellationSettings;
 import org.junit.jupiter.api.Test;
@@ -17,7 +17,7 @@ import org.junit.jupiter.api.Test;
 /** The status bar's warnings, from a real frame's statistics. */
 class WarningsTest {
     private static FrameStats frame(TessellationSettings t) {
-        Scene floor = DemoScenes.floor();
+        SceneAsset floor = DemoScenes.floor();
         try (FrameRenderer r = new FrameRenderer(1)) {
             return r.render(floor.mesh(), floor.textureArray(), floor.camera().viewProjection(new Viewport(320, 180)),
                     RenderSettings.defaults().withTessellation(t), new Framebuffer(320, 180));

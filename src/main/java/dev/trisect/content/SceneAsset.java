@@ -1,6 +1,7 @@
-package dev.trisect.scene;
+package dev.trisect.content;
 
 import dev.trisect.mesh.Mesh;
+import dev.trisect.scene.Camera;
 import dev.trisect.texture.Texture;
 import java.util.List;
 
@@ -15,15 +16,15 @@ import java.util.List;
  * @param camera      the scene's own camera, used when the user gives none
  * @param source      the OBJ file it was read from, or null for a built-in scene
  */
-public record Scene(String name, String description, Mesh mesh, List<Texture> textures, Camera camera,
+public record SceneAsset(String name, String description, Mesh mesh, List<Texture> textures, Camera camera,
                     java.nio.file.Path source) {
 
     /** A built-in scene (no source file). */
-    public Scene(String name, String description, Mesh mesh, List<Texture> textures, Camera camera) {
+    public SceneAsset(String name, String description, Mesh mesh, List<Texture> textures, Camera camera) {
         this(name, description, mesh, textures, camera, null);
     }
 
-    public Scene {
+    public SceneAsset {
         textures = List.copyOf(textures);
         if (textures.size() != mesh.materialCount()) {
             throw new IllegalArgumentException(name + ": " + mesh.materialCount() + " materials but "

@@ -1,10 +1,11 @@
-package dev.trisect.scene;
+package dev.trisect.content;
 
 import dev.trisect.base.InputException;
 import dev.trisect.math.Vec3;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.mesh.ObjModel;
 import dev.trisect.mesh.ObjReader;
+import dev.trisect.scene.Camera;
 import dev.trisect.texture.ProceduralTextures;
 import dev.trisect.texture.Texture;
 import dev.trisect.texture.TextureReader;
@@ -15,7 +16,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.Consumer;
 
-/** Makes a {@link Scene} from a user's Wavefront OBJ file. */
+/** Makes a {@link SceneAsset} from a user's Wavefront OBJ file. */
 public final class SceneLoader {
     private SceneLoader() {
     }
@@ -29,7 +30,7 @@ public final class SceneLoader {
      * @param notes   receives one-line remarks for the user (never errors; those are thrown)
      * @throws dev.trisect.base.InputException for anything unreadable, with a one-line message
      */
-    public static Scene load(Path obj, Path texture, Consumer<String> notes) {
+    public static SceneAsset load(Path obj, Path texture, Consumer<String> notes) {
         ObjModel model = ObjReader.read(obj, texture == null);
         Mesh mesh = model.mesh();
         List<Texture> textures = new ArrayList<>();
@@ -60,7 +61,7 @@ public final class SceneLoader {
                         + String.join(", ", untextured) + " (no --texture and no map_Kd); using the built-in UV grid");
             }
         }
-        return new Scene(String.valueOf(obj.getFileName()), "OBJ file " + obj, mesh, textures, frame(mesh),
+        return new SceneAsset(String.valueOf(obj.getFileName()), "OBJ file " + obj, mesh, textures, frame(mesh),
                 obj.toAbsolutePath());
     }
 

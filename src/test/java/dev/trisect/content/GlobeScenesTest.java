@@ -1,4 +1,4 @@
-package dev.trisect.scene;
+package dev.trisect.content;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 

@@ -1,8 +1,9 @@
-package dev.trisect.scene;
+package dev.trisect.content;
 
 import dev.trisect.math.Vec3;
 import dev.trisect.mesh.MeshBuilder;
 import dev.trisect.mesh.Primitives;
+import dev.trisect.scene.Camera;
 import dev.trisect.texture.ProceduralTextures;
 import dev.trisect.texture.Texture;
 import java.util.ArrayList;
@@ -30,7 +31,7 @@ public final class DemoScenes {
 
     private static final Map<String, Entry> SCENES = new LinkedHashMap<>();
 
-    private record Entry(String description, Supplier<Scene> build) {
+    private record Entry(String description, Supplier<SceneAsset> build) {
     }
 
     static {
@@ -76,34 +77,34 @@ public final class DemoScenes {
     }
 
     /** Builds the named scene, or empty if there is none by that name (case-insensitive). */
-    public static Optional<Scene> byName(String name) {
+    public static Optional<SceneAsset> byName(String name) {
         Entry e = SCENES.get(name.toLowerCase(Locale.ROOT));
         return e == null ? Optional.empty() : Optional.of(e.build().get());
     }
 
     /** The floor alone, camera low and looking toward the horizon. */
-    public static Scene floor() {
+    public static SceneAsset floor() {
         MeshBuilder b = new MeshBuilder();
         List<Texture> textures = new ArrayList<>();
         addFloor(b, textures, ProceduralTextures.uvGrid(512));
         Camera camera = new Camera(new Vec3(1.3, 1.7, 6.2), new Vec3(0.4, 0, -2), Vec3.UP,
                 Camera.DEFAULT_FOV, Camera.DEFAULT_NEAR, Camera.DEFAULT_FAR);
-        return new Scene("floor", describe("floor"), b.build(), textures, camera);
+        return new SceneAsset("floor", describe("floor"), b.build(), textures, camera);
     }
 
     /** A few crates on a checkered floor. */
-    public static Scene boxes() {
+    public static SceneAsset boxes() {
         MeshBuilder b = new MeshBuilder();
         List<Texture> textures = new ArrayList<>();
         addFloor(b, textures, ProceduralTextures.checker(256, 8, 0xFFD8D2C4, 0xFF5A6E8C));
         addCrates(b, textures);
         Camera camera = new Camera(new Vec3(3.5, 3.2, 7), new Vec3(-0.5, 0.8, -6), Vec3.UP,
                 Camera.DEFAULT_FOV, Camera.DEFAULT_NEAR, Camera.DEFAULT_FAR);
-        return new Scene("boxes", describe("boxes"), b.build(), textures, camera);
+        return new SceneAsset("boxes", describe("boxes"), b.build(), textures, camera);
     }
 
     /** Floor, crates, a long brick wall along the view direction, and a globe. */
-    public static Scene demo() {
+    public static SceneAsset demo() {
         MeshBuilder b = new MeshBuilder();
         List<Texture> textures = new ArrayList<>();
         addFloor(b, textures, ProceduralTextures.uvGrid(512));
@@ -118,11 +119,11 @@ public final class DemoScenes {
         Primitives.sphere(b, new Vec3(-3.5, 1.6, -9), 1.6, 32, 16);
         Camera camera = new Camera(new Vec3(0.5, 1.8, 6), new Vec3(0, 1.0, -10), Vec3.UP,
                 Camera.DEFAULT_FOV, Camera.DEFAULT_NEAR, Camera.DEFAULT_FAR);
-        return new Scene("demo", describe("demo"), b.build(), textures, camera);
+        return new SceneAsset("demo", describe("demo"), b.build(), textures, camera);
     }
 
     /** A globe of 4 n^2 triangles (2n slices, n + 1 stacks) filling most of the view. */
-    static Scene sphere(String name, int n) {
+    static SceneAsset sphere(String name, int n) {
         MeshBuilder b = new MeshBuilder();
         List<Texture> textures = new ArrayList<>();
         b.material("globe");
@@ -130,7 +131,7 @@ public final class DemoScenes {
         Primitives.sphere(b, Vec3.ZERO, 1.6, 2 * n, n + 1);
         Camera camera = new Camera(new Vec3(0.6, 0.9, 3.6), Vec3.ZERO, Vec3.UP,
                 Camera.DEFAULT_FOV, Camera.DEFAULT_NEAR, Camera.DEFAULT_FAR);
-        return new Scene(name, describe(name), b.build(), textures, camera);
+        return new SceneAsset(name, describe(name), b.build(), textures, camera);
     }
 
     private static void addFloor(MeshBuilder b, List<Texture> textures, Texture texture) {
