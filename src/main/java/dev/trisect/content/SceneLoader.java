@@ -1,19 +1,16 @@
 package dev.trisect.content;
 
-import dev.trisect.base.InputException;
 import dev.trisect.math.Vec3;
 import dev.trisect.mesh.Mesh;
-import dev.trisect.mesh.ObjModel;
 import dev.trisect.mesh.ObjReader;
 import dev.trisect.scene.Camera;
-import dev.trisect.texture.ProceduralTextures;
+import dev.trisect.scene.Material;
+import dev.trisect.scene.SceneObject;
 import dev.trisect.texture.Texture;
 import dev.trisect.texture.TextureReader;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
 import java.util.function.Consumer;
 
 /** Makes a {@link SceneAsset} from a user's Wavefront OBJ file. */
@@ -31,47 +28,23 @@ public final class SceneLoader {
      * @throws dev.trisect.base.InputException for anything unreadable, with a one-line message
      */
     public static SceneAsset load(Path obj, Path texture, Consumer<String> notes) {
-        ObjModel model = ObjReader.read(obj, texture == null);
-        Mesh mesh = model.mesh();
+        Mesh mesh;
         List<Texture> textures = new ArrayList<>();
         if (texture != null) {
+            mesh = ObjReader.read(obj, false).mesh();
             Texture t = TextureReader.read(texture);
             for (int i = 0; i < mesh.materialCount(); i++) {
                 textures.add(t);
             }
         } else {
-            Map<Path, Texture> loaded = new HashMap<>();
-            Texture fallback = null;
-            List<String> untextured = new ArrayList<>();
-            for (int i = 0; i < mesh.materialCount(); i++) {
-                Path map = model.materialTextures().get(i);
-                if (map == null) {
-                    if (fallback == null) {
-                        fallback = ProceduralTextures.uvGrid(512);
-                    }
-                    textures.add(fallback);
-                    untextured.add(mesh.materialNames().get(i));
-                } else {
-                    String source = model.textureSources().get(i);
-                    textures.add(loaded.computeIfAbsent(map, file -> readMapKd(file, source)));
-                }
-            }
-            if (!untextured.isEmpty()) {
-                notes.accept(obj.getFileName() + ": no texture for material" + (untextured.size() > 1 ? "s " : " ")
-                        + String.join(", ", untextured) + " (no --texture and no map_Kd); using the built-in UV grid");
+            SceneObject object = SceneObject.load(obj, notes);
+            mesh = object.mesh();
+            for (Material m : object.materials()) {
+                textures.add(m.texture());
             }
         }
         return new SceneAsset(String.valueOf(obj.getFileName()), "OBJ file " + obj, mesh, textures, frame(mesh),
                 obj.toAbsolutePath());
-    }
-
-    /** Reads a material's texture; a failure names the MTL file and line that gave it. */
-    private static Texture readMapKd(Path file, String source) {
-        try {
-            return TextureReader.read(file);
-        } catch (InputException e) {
-            throw source == null ? e : new InputException(source + ": map_Kd: " + e.getMessage(), e);
-        }
     }
 
     /**

@@ -3,11 +3,70 @@ package dev.trisect.mesh;
 import dev.trisect.math.Vec3;
 
 /**
- * Procedural meshes appended to a {@link MeshBuilder}, in world space, front faces outward
- * (counter-clockwise seen from outside).
+ * Built-in shapes, front faces outward (counter-clockwise seen from outside).
+ *
+ * <p>Two forms: {@link #box(double, double, double)}, {@link #plane(double, double, int, int)} and
+ * {@link #sphere(double, int, int)} return a finished {@link Mesh} centred on the origin of its object
+ * space, ready for a {@code dev.trisect.scene.SceneObject}; the forms taking a {@link MeshBuilder}
+ * append to it at a given place (to build one mesh of several shapes).
  */
 public final class Primitives {
     private Primitives() {
+    }
+
+    /**
+     * A box centred on the origin, each face a quad with UVs (0, 0) to (1, 1), upright on the side faces.
+     *
+     * @param sizeX edge length along x, object units, &gt; 0
+     * @param sizeY edge length along y, object units, &gt; 0
+     * @param sizeZ edge length along z, object units, &gt; 0
+     * @return a mesh of 12 triangles, one material
+     */
+    public static Mesh box(double sizeX, double sizeY, double sizeZ) {
+        checkSize(sizeX, sizeY, sizeZ);
+        MeshBuilder b = new MeshBuilder();
+        box(b, Vec3.ZERO, new Vec3(sizeX, sizeY, sizeZ));
+        return b.build();
+    }
+
+    /**
+     * A horizontal rectangle on the plane y = 0 facing +y, centred on the origin, cut into
+     * {@code cellsX x cellsZ} quads; the texture repeats once per cell (u along +x, v along -z).
+     *
+     * @param width  extent along x, object units, &gt; 0
+     * @param depth  extent along z, object units, &gt; 0
+     * @param cellsX quads along x, &gt;= 1
+     * @param cellsZ quads along z, &gt;= 1
+     * @return a mesh of {@code 2 * cellsX * cellsZ} triangles, one material
+     */
+    public static Mesh plane(double width, double depth, int cellsX, int cellsZ) {
+        checkSize(width, 1, depth);
+        MeshBuilder b = new MeshBuilder();
+        grid(b, new Vec3(-width / 2, 0, depth / 2), new Vec3(width, 0, 0), new Vec3(0, 0, -depth), cellsX, cellsZ,
+                0, 0, cellsX, cellsZ);
+        return b.build();
+    }
+
+    /**
+     * A UV sphere centred on the origin: u runs once around, v from 0 at the bottom pole to 1 at the top.
+     *
+     * @param radius radius, object units, &gt; 0
+     * @param slices divisions around, &gt;= 3
+     * @param stacks divisions from pole to pole, &gt;= 2
+     * @return a mesh of {@code 2 * slices * (stacks - 1)} triangles, one material
+     */
+    public static Mesh sphere(double radius, int slices, int stacks) {
+        checkSize(radius, 1, 1);
+        MeshBuilder b = new MeshBuilder();
+        sphere(b, Vec3.ZERO, radius, slices, stacks);
+        return b.build();
+    }
+
+    private static void checkSize(double x, double y, double z) {
+        if (!(x > 0 && y > 0 && z > 0) || !Double.isFinite(x) || !Double.isFinite(y) || !Double.isFinite(z)) {
+            throw new IllegalArgumentException("shape sizes must be positive finite numbers, got " + x + ", " + y
+                    + ", " + z);
+        }
     }
 
     /**

@@ -1,5 +1,8 @@
 package dev.trisect.texture;
 
+import java.awt.image.BufferedImage;
+import java.util.Objects;
+
 /**
  * A texture image: {@code width x height} ARGB texels in an {@code int[]}, row-major with image row 0
  * at the top (as image files store it). UV (0, 0) is the bottom-left texel's corner and (1, 1) the
@@ -42,6 +45,24 @@ public final class Texture {
         this.height = height;
         this.argb = argb;
         this.mipChain = new MipChain(width, height, argb);
+    }
+
+    /**
+     * A texture holding a copy of {@code image}'s pixels, as non-premultiplied ARGB (grey images as
+     * stored: see {@link TextureReader}). Image row 0 is the top row, so UV (0, 0) is the image's
+     * bottom-left corner, as in OpenGL and OBJ files.
+     *
+     * @param image any {@code BufferedImage}, 1..{@link #MAX_SIDE} pixels a side
+     * @throws NullPointerException     when {@code image} is null
+     * @throws IllegalArgumentException when it is larger than {@link #MAX_SIDE} a side
+     */
+    public static Texture of(BufferedImage image) {
+        Objects.requireNonNull(image, "image is null");
+        String name = "image " + image.getWidth() + "x" + image.getHeight();
+        if (image.getWidth() > MAX_SIDE || image.getHeight() > MAX_SIDE) {
+            throw new IllegalArgumentException(name + " is larger than " + MAX_SIDE + " pixels a side");
+        }
+        return new Texture(name, image.getWidth(), image.getHeight(), ImageConversion.toArgb(image));
     }
 
     /** A texture of one colour, for meshes without one. */

@@ -1,0 +1,118 @@
+package dev.trisect.math;
+
+/**
+ * A rotation as a unit quaternion {@code w + xi + yj + zk}, immutable. Rotations are right-handed: a
+ * positive angle about an axis turns counter-clockwise when the axis points at the viewer (as
+ * {@code glRotate}).
+ *
+ * <p>The factories return unit quaternions; {@link #of} normalizes what it is given. Composition
+ * follows matrices: {@code a.mul(b)} rotates by {@code b} first, then by {@code a}.
+ *
+ * @param x the i component
+ * @param y the j component
+ * @param z the k component
+ * @param w the real component
+ */
+public record Quaternion(double x, double y, double z, double w) {
+
+    /** No rotation. */
+    public static final Quaternion IDENTITY = new Quaternion(0, 0, 0, 1);
+
+    /**
+     * Checks that the components are finite and not all zero.
+     *
+     * @throws IllegalArgumentException otherwise
+     */
+    public Quaternion {
+        if (!(Double.isFinite(x) && Double.isFinite(y) && Double.isFinite(z) && Double.isFinite(w))) {
+            throw new IllegalArgumentException("quaternion components must be finite, got " + x + ", " + y + ", "
+                    + z + ", " + w);
+        }
+        if (x == 0 && y == 0 && z == 0 && w == 0) {
+            throw new IllegalArgumentException("the zero quaternion is not a rotation");
+        }
+    }
+
+    /** The quaternion (x, y, z, w) scaled to unit length. */
+    public static Quaternion of(double x, double y, double z, double w) {
+        double n = Math.sqrt(x * x + y * y + z * z + w * w);
+        return new Quaternion(x / n, y / n, z / n, w / n);
+    }
+
+    /**
+     * A rotation by {@code degrees} about {@code axis}.
+     *
+     * @param axis    the axis, any non-zero length
+     * @param degrees the angle, degrees, counter-clockwise looking down the axis toward the origin
+     */
+    public static Quaternion axisAngle(Vec3 axis, double degrees) {
+        double len = axis.length();
+        if (!(len > 0) || !Double.isFinite(len)) {
+            throw new IllegalArgumentException("rotation axis must be a finite non-zero vector, got " + axis);
+        }
+        if (!Double.isFinite(degrees)) {
+            throw new IllegalArgumentException("rotation angle must be finite, got " + degrees);
+        }
+        double half = Math.toRadians(degrees) / 2;
+        double s = Math.sin(half) / len;
+        return of(axis.x() * s, axis.y() * s, axis.z() * s, Math.cos(half));
+    }
+
+    /** A rotation by {@code degrees} about +x. */
+    public static Quaternion ofX(double degrees) {
+        return axisAngle(new Vec3(1, 0, 0), degrees);
+    }
+
+    /** A rotation by {@code degrees} about +y. */
+    public static Quaternion ofY(double degrees) {
+        return axisAngle(new Vec3(0, 1, 0), degrees);
+    }
+
+    /** A rotation by {@code degrees} about +z. */
+    public static Quaternion ofZ(double degrees) {
+        return axisAngle(new Vec3(0, 0, 1), degrees);
+    }
+
+    /** {@code this * o}: the rotation {@code o} followed by this one (Hamilton product, renormalized). */
+    public Quaternion mul(Quaternion o) {
+        return of(w * o.x + x * o.w + y * o.z - z * o.y,
+                w * o.y - x * o.z + y * o.w + z * o.x,
+                w * o.z + x * o.y - y * o.x + z * o.w,
+                w * o.w - x * o.x - y * o.y - z * o.z);
+    }
+
+    /** The inverse rotation. */
+    public Quaternion inverse() {
+        return of(-x, -y, -z, w);
+    }
+
+    /** {@code v} rotated. */
+    public Vec3 rotate(Vec3 v) {
+        Mat4 m = matrix();
+        return new Vec3(m.get(0, 0) * v.x() + m.get(0, 1) * v.y() + m.get(0, 2) * v.z(),
+                m.get(1, 0) * v.x() + m.get(1, 1) * v.y() + m.get(1, 2) * v.z(),
+                m.get(2, 0) * v.x() + m.get(2, 1) * v.y() + m.get(2, 2) * v.z());
+    }
+
+    /** The rotation as a matrix (the upper-left 3x3 of a 4x4 with no translation). */
+    public Mat4 matrix() {
+        // The standard unit-quaternion rotation matrix (Shoemake, "Animating rotation with quaternion
+        // curves", SIGGRAPH 1985), normalized here so that a slightly off-unit value still rotates.
+        double n = x * x + y * y + z * z + w * w;
+        double s = 2 / n;
+        double xx = x * x * s;
+        double yy = y * y * s;
+        double zz = z * z * s;
+        double xy = x * y * s;
+        double xz = x * z * s;
+        double yz = y * z * s;
+        double wx = w * x * s;
+        double wy = w * y * s;
+        double wz = w * z * s;
+        return Mat4.ofRows(
+                1 - yy - zz, xy - wz, xz + wy, 0,
+                xy + wz, 1 - xx - zz, yz - wx, 0,
+                xz - wy, yz + wx, 1 - xx - yy, 0,
+                0, 0, 0, 1);
+    }
+}

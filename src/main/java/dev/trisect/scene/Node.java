@@ -1,0 +1,115 @@
+package dev.trisect.scene;
+
+import dev.trisect.math.Mat4;
+import dev.trisect.math.Transform;
+import java.util.Objects;
+import java.util.concurrent.locks.ReentrantLock;
+
+/**
+ * Something in a {@link Scene}: a {@link Group} or a {@link SceneObject}. A node has a
+ * {@link Transform} (its place in its parent's space), can be hidden, and belongs to at most one
+ * group at a time.
+ *
+ * <p>Every method may be called from any thread, also while a renderer draws the scene: see
+ * {@link Scene} for what a frame sees.
+ */
+public abstract sealed class Node permits Group, SceneObject {
+    /**
+     * Guards every change to a scene graph and every {@link Scene#snapshot()}. One lock for all scenes:
+     * a change holds it for microseconds, a snapshot for a walk over the visible nodes, and a node can
+     * move between scenes without two locks to order.
+     */
+    static final ReentrantLock LOCK = new ReentrantLock();
+
+    private volatile Transform transform = Transform.IDENTITY;
+    /** {@code transform.matrix()}, kept with it. */
+    private volatile Mat4 matrix = Transform.IDENTITY.matrix();
+    private volatile boolean visible = true;
+    private volatile String name;
+    /** The group holding this node, or null. Written under {@link #LOCK}. */
+    volatile Group parent;
+
+    Node(String name) {
+        this.name = name;
+    }
+
+    /** The node's place in its parent's space (in world space for a node at the top of a scene). */
+    public Transform transform() {
+        return transform;
+    }
+
+    /**
+     * Places the node; takes effect from the next frame drawn. The node's points go through
+     * {@code transform} and then through each enclosing group's transform.
+     *
+     * @throws NullPointerException when {@code transform} is null
+     */
+    public void setTransform(Transform transform) {
+        Objects.requireNonNull(transform, "transform is null: use Transform.IDENTITY for none");
+        Mat4 m = transform.matrix();
+        LOCK.lock();
+        try {
+            this.transform = transform;
+            this.matrix = m;
+        } finally {
+            LOCK.unlock();
+        }
+    }
+
+    /** Whether the node is drawn (when its groups are too). */
+    public boolean isVisible() {
+        return visible;
+    }
+
+    /** Shows or hides the node, and for a group everything in it. */
+    public void setVisible(boolean visible) {
+        LOCK.lock();
+        try {
+            this.visible = visible;
+        } finally {
+            LOCK.unlock();
+        }
+    }
+
+    /** The node's name, for the application's own use; may be null. */
+    public String name() {
+        return name;
+    }
+
+    /** Names the node (any string, or null). */
+    public void setName(String name) {
+        this.name = name;
+    }
+
+    /** The group this node is in, or null when it is in none. */
+    public Group parent() {
+        return parent;
+    }
+
+    /**
+     * Object space to world space as of now: the transforms of the node and of every enclosing group,
+     * innermost applied first.
+     */
+    public Mat4 worldMatrix() {
+        LOCK.lock();
+        try {
+            Mat4 m = matrix;
+            for (Group g = parent; g != null; g = g.parent) {
+                m = g.matrix().mul(m);
+            }
+            return m;
+        } finally {
+            LOCK.unlock();
+        }
+    }
+
+    /** The transform's matrix; read under {@link #LOCK} for a consistent frame. */
+    Mat4 matrix() {
+        return matrix;
+    }
+
+    @Override
+    public String toString() {
+        return getClass().getSimpleName() + (name == null ? "" : " " + name);
+    }
+}

@@ -1,0 +1,113 @@
+package dev.trisect.scene;
+
+import dev.trisect.math.Mat4;
+import dev.trisect.mesh.Mesh;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Everything to draw: the top group of a tree of {@link Group}s and {@link SceneObject}s.
+ *
+ * <pre>{@code
+ * Scene scene = new Scene();
+ * scene.add(new SceneObject(Primitives.plane(20, 20, 20, 20), Material.of(ProceduralTextures.uvGrid(512))));
+ * SceneObject cube = new SceneObject(Primitives.box(1, 1, 1), Material.of(ProceduralTextures.crate(256)),
+ *         Transform.translation(0, 0.5, 0));
+ * scene.add(cube);
+ * BufferedImage image = SceneRenderer.renderImage(scene, Camera.looking(new Vec3(3, 2, 4), Vec3.ZERO), 800, 600);
+ * }</pre>
+ *
+ * <h2>Threads</h2>
+ * Objects and groups may be added, removed, moved, hidden and given other materials from any thread
+ * while a view or a {@link SceneRenderer} draws the scene. A frame draws one {@link #snapshot()} of
+ * the scene, taken at one instant: it never shows half of a change to one node, nor loses a node
+ * added while it was drawn (it is in the next frame). Changes made in separate calls may land in
+ * different frames; to make several changes appear together, make them inside
+ * {@link #update(Runnable)}. A change to one object never rebuilds another: the renderer keeps each
+ * object's mesh as it is and applies the object's transform as it draws.
+ */
+public final class Scene extends Group {
+
+    /**
+     * One visible object as a frame draws it.
+     *
+     * @param object    the object
+     * @param mesh      its mesh, object space
+     * @param materials its materials, one per mesh material
+     * @param world     object space to world space at the snapshot's instant
+     */
+    public record Placed(SceneObject object, Mesh mesh, List<Material> materials, Mat4 world) {
+    }
+
+    /** An empty scene. */
+    public Scene() {
+        super("scene");
+    }
+
+    /**
+     * Runs {@code changes} so that no frame shows some of them without the others: snapshots wait
+     * until it returns. Keep it short (a view's next frame waits for it); the calls inside may be any
+     * of the graph's methods, on any scene.
+     */
+    public void update(Runnable changes) {
+        LOCK.lock();
+        try {
+            changes.run();
+        } finally {
+            LOCK.unlock();
+        }
+    }
+
+    /**
+     * The visible objects as of now with their world matrices, in drawing order (depth-first, groups'
+     * children in order). Hidden nodes and everything in hidden groups are left out.
+     */
+    public List<Placed> snapshot() {
+        List<Placed> out = new ArrayList<>();
+        LOCK.lock();
+        try {
+            if (isVisible()) {
+                collect(this, matrix(), out);
+            }
+        } finally {
+            LOCK.unlock();
+        }
+        return out;
+    }
+
+    private static void collect(Group group, Mat4 world, List<Placed> out) {
+        for (Node n : group.children()) {
+            if (!n.isVisible()) {
+                continue;
+            }
+            Mat4 m = world.mul(n.matrix());
+            if (n instanceof SceneObject o) {
+                out.add(new Placed(o, o.lookMesh(), o.lookMaterials(), m));
+            } else {
+                collect((Group) n, m, out);
+            }
+        }
+    }
+
+    /** Every object in the scene, visible or not, depth-first. */
+    public List<SceneObject> objects() {
+        List<SceneObject> out = new ArrayList<>();
+        LOCK.lock();
+        try {
+            gather(this, out);
+        } finally {
+            LOCK.unlock();
+        }
+        return out;
+    }
+
+    private static void gather(Group group, List<SceneObject> out) {
+        for (Node n : group.children()) {
+            if (n instanceof SceneObject o) {
+                out.add(o);
+            } else {
+                gather((Group) n, out);
+            }
+        }
+    }
+}

@@ -1,0 +1,170 @@
+package dev.trisect.scene;
+
+import dev.trisect.base.InputException;
+import dev.trisect.math.Transform;
+import dev.trisect.mesh.Mesh;
+import dev.trisect.mesh.ObjModel;
+import dev.trisect.mesh.ObjReader;
+import dev.trisect.texture.ProceduralTextures;
+import dev.trisect.texture.Texture;
+import dev.trisect.texture.TextureReader;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.function.Consumer;
+
+/**
+ * A mesh drawn with its materials at a place in the scene (as JavaFX's {@code MeshView},
+ * jMonkeyEngine's {@code Geometry}).
+ *
+ * <pre>{@code
+ * SceneObject cube = new SceneObject(Primitives.box(1, 1, 1), Material.of(crate));
+ * cube.setTransform(Transform.translation(0, 0.5, 0).withRotation(Quaternion.ofY(30)));
+ * scene.add(cube);
+ * }</pre>
+ *
+ * <p>The mesh is immutable and may be shared by many objects; moving, hiding or re-materialling an
+ * object changes nothing of any other. Every method may be called from any thread.
+ */
+public final class SceneObject extends Node {
+    /** Mesh and materials together, swapped as one value. */
+    private record Look(Mesh mesh, List<Material> materials) {
+    }
+
+    private volatile Look look;
+
+    /**
+     * An object drawing every material of {@code mesh} with {@code material}.
+     *
+     * @throws NullPointerException when either is null
+     */
+    public SceneObject(Mesh mesh, Material material) {
+        this(mesh, Collections.nCopies(Objects.requireNonNull(mesh, "mesh is null").materialCount(),
+                Objects.requireNonNull(material, "material is null: use Material.of(texture) or Material.colour(rgb)")));
+    }
+
+    /**
+     * An object drawing {@code mesh} with one material per mesh material, in the mesh's material order
+     * ({@link Mesh#materialNames()}).
+     *
+     * @throws NullPointerException     when the mesh, the list or one of its materials is null
+     * @throws IllegalArgumentException when the list's size is not the mesh's material count
+     */
+    public SceneObject(Mesh mesh, List<Material> materials) {
+        super(null);
+        this.look = look(mesh, materials);
+    }
+
+    /** An object drawing {@code mesh} with {@code material}, placed by {@code transform}. */
+    public SceneObject(Mesh mesh, Material material, Transform transform) {
+        this(mesh, material);
+        setTransform(transform);
+    }
+
+    /** The mesh, in object space. */
+    public Mesh mesh() {
+        return look.mesh();
+    }
+
+    /** The materials, one per mesh material: an unmodifiable list. */
+    public List<Material> materials() {
+        return look.materials();
+    }
+
+    /** Draws every material of the mesh with {@code material} from the next frame on. */
+    public void setMaterial(Material material) {
+        Objects.requireNonNull(material, "material is null: use Material.of(texture) or Material.colour(rgb)");
+        setMaterials(Collections.nCopies(look.mesh().materialCount(), material));
+    }
+
+    /** Replaces the materials (one per mesh material) from the next frame on. */
+    public void setMaterials(List<Material> materials) {
+        Look next = look(look.mesh(), materials);
+        LOCK.lock();
+        try {
+            look = next;
+        } finally {
+            LOCK.unlock();
+        }
+    }
+
+    /** Mesh and materials as one value, read under the lock by {@link Scene#snapshot()}. */
+    Mesh lookMesh() {
+        return look.mesh();
+    }
+
+    List<Material> lookMaterials() {
+        return look.materials();
+    }
+
+    private static Look look(Mesh mesh, List<Material> materials) {
+        Objects.requireNonNull(mesh, "mesh is null");
+        Objects.requireNonNull(materials, "materials list is null");
+        List<Material> copy = new ArrayList<>(materials.size());
+        for (int i = 0; i < materials.size(); i++) {
+            copy.add(Objects.requireNonNull(materials.get(i), "material " + i + " (" + (i < mesh.materialCount()
+                    ? mesh.materialNames().get(i) : "beyond the mesh's") + ") is null: use Material.of(texture) "
+                    + "or Material.colour(rgb)"));
+        }
+        if (copy.size() != mesh.materialCount()) {
+            throw new IllegalArgumentException("the mesh has " + mesh.materialCount() + " materials "
+                    + mesh.materialNames() + " but " + copy.size() + " were given");
+        }
+        return new Look(mesh, List.copyOf(copy));
+    }
+
+    /** {@link #load(Path, Consumer)} without remarks. */
+    public static SceneObject load(Path obj) {
+        return load(obj, note -> { });
+    }
+
+    /**
+     * An object from a Wavefront OBJ file and the textures its MTL files name ({@code map_Kd}). A
+     * material without a texture gets the built-in UV grid (as the command line and the demo show such
+     * files), and {@code notes} hears of it. The object is named after the file.
+     *
+     * @param notes receives one-line remarks for the user (never errors; those are thrown)
+     * @throws InputException for anything unreadable, with a one-line message naming the file and line
+     */
+    public static SceneObject load(Path obj, Consumer<String> notes) {
+        ObjModel model = ObjReader.read(obj, true);
+        Mesh mesh = model.mesh();
+        List<Material> materials = new ArrayList<>();
+        Map<Path, Material> loaded = new HashMap<>();
+        Material grid = null;
+        List<String> untextured = new ArrayList<>();
+        for (int i = 0; i < mesh.materialCount(); i++) {
+            Path map = model.materialTextures().get(i);
+            if (map == null) {
+                if (grid == null) {
+                    grid = Material.of(ProceduralTextures.uvGrid(512));
+                }
+                materials.add(grid);
+                untextured.add(mesh.materialNames().get(i));
+            } else {
+                String source = model.textureSources().get(i);
+                materials.add(loaded.computeIfAbsent(map, file -> Material.of(readMapKd(file, source))));
+            }
+        }
+        if (!untextured.isEmpty()) {
+            notes.accept(obj.getFileName() + ": no texture for material" + (untextured.size() > 1 ? "s " : " ")
+                    + String.join(", ", untextured) + " (no --texture and no map_Kd); using the built-in UV grid");
+        }
+        SceneObject o = new SceneObject(mesh, materials);
+        o.setName(String.valueOf(obj.getFileName()));
+        return o;
+    }
+
+    /** Reads a material's texture; a failure names the MTL file and line that gave it. */
+    private static Texture readMapKd(Path file, String source) {
+        try {
+            return TextureReader.read(file);
+        } catch (InputException e) {
+            throw source == null ? e : new InputException(source + ": map_Kd: " + e.getMessage(), e);
+        }
+    }
+}

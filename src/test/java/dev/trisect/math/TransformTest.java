@@ -1,0 +1,44 @@
+package dev.trisect.math;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+
+import org.junit.jupiter.api.Test;
+
+/** Rotations and transforms against values worked out by hand. */
+class TransformTest {
+    private static void near(Vec3 expected, Vec3 actual) {
+        assertEquals(expected.x(), actual.x(), 1e-12, "x of " + actual);
+        assertEquals(expected.y(), actual.y(), 1e-12, "y of " + actual);
+        assertEquals(expected.z(), actual.z(), 1e-12, "z of " + actual);
+    }
+
+    @Test
+    void rotationsTurnCounterClockwiseAboutTheirAxis() {
+        near(new Vec3(0, 0, -1), Quaternion.ofY(90).rotate(new Vec3(1, 0, 0)));
+        near(new Vec3(0, 1, 0), Quaternion.ofZ(90).rotate(new Vec3(1, 0, 0)));
+        near(new Vec3(0, 0, 1), Quaternion.ofX(90).rotate(new Vec3(0, 1, 0)));
+        // b first, then a: x -> (about z) y -> (about x) z
+        near(new Vec3(0, 0, 1), Quaternion.ofX(90).mul(Quaternion.ofZ(90)).rotate(new Vec3(1, 0, 0)));
+        near(new Vec3(1, 0, 0), Quaternion.ofY(37).inverse().mul(Quaternion.ofY(37)).rotate(new Vec3(1, 0, 0)));
+        near(new Vec3(0, 1, 0), Quaternion.axisAngle(new Vec3(1, 1, 1), 120).rotate(new Vec3(1, 0, 0)));
+    }
+
+    @Test
+    void transformScalesThenRotatesThenMoves() {
+        Transform t = Transform.translation(10, 20, 30).withRotation(Quaternion.ofZ(90)).withScale(new Vec3(2, 3, 4));
+        // (1, 1, 1) -> scaled (2, 3, 4) -> rotated about z (-3, 2, 4) -> moved (7, 22, 34)
+        near(new Vec3(7, 22, 34), t.apply(new Vec3(1, 1, 1)));
+        near(new Vec3(7, 22, 34), t.matrix().transformProject(new Vec3(1, 1, 1)));
+        near(new Vec3(11, 21, 31), Transform.IDENTITY.movedBy(11, 21, 31).apply(Vec3.ZERO));
+    }
+
+    @Test
+    void badValuesAreRefusedWithTheirValue() {
+        assertThrows(IllegalArgumentException.class, () -> Transform.scale(0));
+        assertThrows(IllegalArgumentException.class, () -> Transform.translation(Double.NaN, 0, 0));
+        assertThrows(IllegalArgumentException.class, () -> Quaternion.axisAngle(Vec3.ZERO, 10));
+        assertEquals("transform rotation is null",
+                assertThrows(NullPointerException.class, () -> Transform.IDENTITY.withRotation(null)).getMessage());
+    }
+}
