@@ -1,8 +1,6 @@
 package dev.trisect.pipeline;
 
 import java.util.concurrent.atomic.AtomicInteger;
-import java.util.concurrent.atomic.AtomicIntegerArray;
-import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.locks.LockSupport;
 
 /**
@@ -21,10 +19,13 @@ import java.util.concurrent.locks.LockSupport;
  *     finished its part of the run: no task of a run is still running when it returns, so the next
  *     run may reuse all scratch memory. The pool stays usable after a failed run.</li>
  * <li>No helper thread ever ends with an uncaught throwable, and the failure path allocates nothing:
- *     a helper catches every throwable of its tasks, records it in a preallocated reference, counts
- *     itself done with an atomic decrement and wakes the caller with
- *     {@link LockSupport#unpark}, so an out-of-memory error cannot stop the handshake (the cause of
- *     the hang issue 14 reports, when the pool was an {@code ExecutorService} and the caller waited in
+ *     a helper catches every throwable of its tasks, claims the first-failure slot with a
+ *     compare-and-set on an {@link AtomicInteger} and stores the throwable in a volatile field, counts
+ *     itself done with an atomic decrement and wakes the caller with {@link LockSupport#unpark}. None
+ *     of that allocates or links anything on first use (no {@code VarHandle}: {@code AtomicReference}
+ *     and {@code AtomicIntegerArray} would link one, which allocates, the first time a failure took
+ *     that path), so an out-of-memory error cannot stop the handshake (the cause of the hang issue 14
+ *     reports, when the pool was an {@code ExecutorService} and the caller waited in
  *     {@code FutureTask.get()}).</li>
  * <li>An interrupt of the calling thread does not cut a run short (the helpers are using the
  *     frame's scratch); it is kept, set again when {@link #run} returns.</li>
@@ -43,19 +44,25 @@ final class WorkerPool implements AutoCloseable {
 
     private static final AtomicInteger POOLS = new AtomicInteger();
 
+    /** A helper thread and the number of the last run it was asked to join. */
+    private static final class Helper {
+        Thread thread;
+        volatile int started;
+    }
+
     private final int threads;
-    private final Thread[] helpers;
-    /** Per helper: the number of the last run it was asked to join. */
-    private final AtomicIntegerArray started;
+    private final Helper[] helpers;
     /** The next index to hand out. */
     private final AtomicInteger next = new AtomicInteger();
     /** Helpers still in the current run. */
     private final AtomicInteger running = new AtomicInteger();
-    /** The first failure of the current run, or null. */
-    private final AtomicReference<Throwable> failure = new AtomicReference<>();
+    /** 1 once a task of the current run has failed: the first failing thread claims {@link #failure}. */
+    private final AtomicInteger failed = new AtomicInteger();
+    /** The first failure of the current run, written once by the thread that claimed it. */
+    private volatile Throwable failure;
     private volatile boolean closed;
     private volatile Thread caller;
-    /** The current run's job and its index count; published to the helpers by {@link #started}. */
+    /** The current run's job and its index count; published to the helpers by {@link Helper#started}. */
     private Task task;
     private int count;
     private int runs;
@@ -70,17 +77,17 @@ final class WorkerPool implements AutoCloseable {
             throw new IllegalArgumentException("threads must be at least 1, got " + threads);
         }
         this.threads = threads;
-        this.helpers = new Thread[threads - 1];
-        this.started = new AtomicIntegerArray(Math.max(1, threads - 1));
+        this.helpers = new Helper[threads - 1];
         int pool = POOLS.incrementAndGet();
         for (int h = 0; h < helpers.length; h++) {
             int thread = h + 1;
-            Thread t = new Thread(() -> serve(thread), name + "-" + pool + "-" + thread);
-            t.setDaemon(true);
-            helpers[h] = t;
+            Helper helper = new Helper();
+            helper.thread = new Thread(() -> serve(thread, helper), name + "-" + pool + "-" + thread);
+            helper.thread.setDaemon(true);
+            helpers[h] = helper;
         }
-        for (Thread t : helpers) {
-            t.start();
+        for (Helper h : helpers) {
+            h.thread.start();
         }
     }
 
@@ -91,7 +98,7 @@ final class WorkerPool implements AutoCloseable {
 
     /** Whether a task of the current run has failed: long waits inside tasks should give up then. */
     boolean failed() {
-        return failure.get() != null;
+        return failed.get() != 0;
     }
 
     /**
@@ -107,9 +114,10 @@ final class WorkerPool implements AutoCloseable {
         }
         busy = true;
         try {
+            failure = null;
+            failed.set(0);
             int helping = Math.min(helpers.length, count - 1);
             if (helping <= 0) {
-                failure.set(null);
                 for (int i = 0; i < count; i++) {
                     task.run(0, i);
                 }
@@ -118,14 +126,13 @@ final class WorkerPool implements AutoCloseable {
             this.task = task;
             this.count = count;
             next.set(0);
-            failure.set(null);
             caller = Thread.currentThread();
             running.set(helping);
             int run = ++runs;
             for (int h = 0; h < helping; h++) {
                 // A volatile write: publishes task and count to the helper that reads it.
-                started.set(h, run);
-                LockSupport.unpark(helpers[h]);
+                helpers[h].started = run;
+                LockSupport.unpark(helpers[h].thread);
             }
             drain(0);
             boolean interrupted = false;
@@ -139,7 +146,8 @@ final class WorkerPool implements AutoCloseable {
             if (interrupted) {
                 Thread.currentThread().interrupt();
             }
-            Throwable first = failure.getAndSet(null);
+            Throwable first = failure;
+            failure = null;
             if (first instanceof RuntimeException e) {
                 throw e;
             }
@@ -159,33 +167,43 @@ final class WorkerPool implements AutoCloseable {
         Task job = task;
         int n = count;
         try {
-            for (int i = next.getAndIncrement(); i < n && failure.get() == null; i = next.getAndIncrement()) {
+            for (int i = next.getAndIncrement(); i < n && failed.get() == 0; i = next.getAndIncrement()) {
                 job.run(thread, i);
             }
         } catch (Throwable e) {
-            failure.compareAndSet(null, e);
+            fail(e);
+        }
+    }
+
+    /** Records {@code e} if it is the run's first failure; allocates nothing. */
+    private void fail(Throwable e) {
+        if (failed.compareAndSet(0, 1)) {
+            failure = e;
         }
     }
 
     /** A helper's life: wait for a run, take its indices, count itself done; never throws. */
-    private void serve(int thread) {
+    private void serve(int thread, Helper helper) {
         int seen = 0;
         while (!closed) {
-            int run = started.get(thread - 1);
-            if (run == seen) {
-                LockSupport.park(this);
-                continue;
-            }
-            seen = run;
             try {
-                drain(thread);
-            } catch (Throwable e) {
-                // drain records its tasks' failures; this is only a guard for the handshake below.
-                failure.compareAndSet(null, e);
-            } finally {
-                if (running.decrementAndGet() == 0) {
-                    LockSupport.unpark(caller);
+                int run = helper.started;
+                if (run == seen) {
+                    LockSupport.park(this);
+                    continue;
                 }
+                seen = run;
+                try {
+                    drain(thread);
+                } finally {
+                    if (running.decrementAndGet() == 0) {
+                        LockSupport.unpark(caller);
+                    }
+                }
+            } catch (Throwable e) {
+                // drain records its tasks' failures: nothing should reach here, and if anything
+                // does, the thread keeps serving rather than die.
+                fail(e);
             }
         }
     }
@@ -194,8 +212,8 @@ final class WorkerPool implements AutoCloseable {
     @Override
     public void close() {
         closed = true;
-        for (Thread t : helpers) {
-            LockSupport.unpark(t);
+        for (Helper h : helpers) {
+            LockSupport.unpark(h.thread);
         }
     }
 }
