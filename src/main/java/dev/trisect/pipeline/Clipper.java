@@ -1,5 +1,13 @@
 package dev.trisect.pipeline;
 
+import static dev.trisect.tessellate.VertexLayout.CLIP_STRIDE;
+import static dev.trisect.tessellate.VertexLayout.W;
+import static dev.trisect.tessellate.VertexLayout.X;
+import static dev.trisect.tessellate.VertexLayout.Y;
+import static dev.trisect.tessellate.VertexLayout.Z;
+
+import dev.trisect.tessellate.VertexLayout;
+
 /**
  * Clips a triangle in homogeneous clip space (Sutherland-Hodgman), before the divide by w.
  *
@@ -11,10 +19,10 @@ package dev.trisect.pipeline;
  *
  * <p>An intersection is always computed from the edge's inside end toward its outside end, so the two
  * triangles that share an edge get bit-identical new vertices and the clipped mesh keeps no cracks.
- * Vertices are {@link #STRIDE} doubles: clip x, y, z, w and texel s, t.
+ * Vertices are {@link VertexLayout#CLIP_STRIDE} doubles in {@link VertexLayout}: clip x, y, z, w and
+ * texel s, t, the tessellator's input.
  */
 final class Clipper {
-    static final int STRIDE = 6;
     static final int NEAR = 1;
     static final int FAR = 2;
     static final int LEFT = 4;
@@ -24,8 +32,8 @@ final class Clipper {
     /** At most 3 + one vertex per plane. */
     private static final int MAX_VERTICES = 9;
 
-    private double[] current = new double[STRIDE * MAX_VERTICES];
-    private double[] next = new double[STRIDE * MAX_VERTICES];
+    private double[] current = new double[CLIP_STRIDE * MAX_VERTICES];
+    private double[] next = new double[CLIP_STRIDE * MAX_VERTICES];
     private double guardX = 1;
     private double guardY = 1;
 
@@ -93,9 +101,9 @@ final class Clipper {
      */
     int clip(double[] src, int a, int b, int c, int planes) {
         double[] in = current;
-        System.arraycopy(src, a, in, 0, STRIDE);
-        System.arraycopy(src, b, in, STRIDE, STRIDE);
-        System.arraycopy(src, c, in, 2 * STRIDE, STRIDE);
+        System.arraycopy(src, a, in, 0, CLIP_STRIDE);
+        System.arraycopy(src, b, in, CLIP_STRIDE, CLIP_STRIDE);
+        System.arraycopy(src, c, in, 2 * CLIP_STRIDE, CLIP_STRIDE);
         int n = 3;
         for (int plane = NEAR; plane <= TOP && n > 0; plane <<= 1) {
             if ((planes & plane) != 0) {
@@ -115,13 +123,13 @@ final class Clipper {
         double[] out = next;
         int m = 0;
         for (int i = 0; i < n; i++) {
-            int p = i * STRIDE;
-            int q = ((i + 1) % n) * STRIDE;
+            int p = i * CLIP_STRIDE;
+            int q = ((i + 1) % n) * CLIP_STRIDE;
             double dp = distance(in, p, plane);
             double dq = distance(in, q, plane);
             boolean pInside = dp >= 0;
             if (pInside) {
-                System.arraycopy(in, p, out, m * STRIDE, STRIDE);
+                System.arraycopy(in, p, out, m * CLIP_STRIDE, CLIP_STRIDE);
                 m++;
             }
             if (pInside != (dq >= 0)) {
@@ -130,8 +138,8 @@ final class Clipper {
                 double dIn = pInside ? dp : dq;
                 double dOut = pInside ? dq : dp;
                 double t = dIn / (dIn - dOut);
-                int o = m * STRIDE;
-                for (int k = 0; k < STRIDE; k++) {
+                int o = m * CLIP_STRIDE;
+                for (int k = 0; k < CLIP_STRIDE; k++) {
                     out[o + k] = in[inside + k] + t * (in[outside + k] - in[inside + k]);
                 }
                 m++;
@@ -144,10 +152,10 @@ final class Clipper {
 
     /** Signed distance to a plane in clip space; inside when &gt;= 0. */
     private double distance(double[] v, int o, int plane) {
-        double x = v[o];
-        double y = v[o + 1];
-        double z = v[o + 2];
-        double w = v[o + 3];
+        double x = v[o + X];
+        double y = v[o + Y];
+        double z = v[o + Z];
+        double w = v[o + W];
         switch (plane) {
             case NEAR:
                 return z + w;

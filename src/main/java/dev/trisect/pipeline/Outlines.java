@@ -1,5 +1,6 @@
 package dev.trisect.pipeline;
 
+import dev.trisect.raster.BandBins;
 import dev.trisect.raster.BorderOverlay;
 import dev.trisect.raster.BorderStyle;
 import dev.trisect.raster.Framebuffer;
@@ -7,18 +8,43 @@ import dev.trisect.raster.OutlinePlan;
 import dev.trisect.raster.ScreenTriangles;
 import dev.trisect.tessellate.TessellationSettings;
 import java.util.Arrays;
+import java.util.concurrent.atomic.AtomicInteger;
 
 /**
  * The border overlay of a frame: one {@link OutlinePlan} per chunk of screen triangles, prepared per
  * chunk (on any thread), then drawn band by band in chunk order, so that every pixel sees the
  * outlines in the order of the triangles, whatever the number of threads.
+ *
+ * <p>A pass of the overlay is tasks on a {@link WorkerPool}: first the {@link #preparations()}
+ * (tasks 0..chunks-1, {@link #prepare}), then the bands, each of which {@link #awaitPrepared waits}
+ * for all preparations before {@link #drawBand drawing}. The pool hands out indices in order, so all
+ * preparations are taken before any band is, and the wait ends. {@link BandPass} interleaves such a
+ * pass with the fill; {@link #drawAll} is one on its own.
  */
 final class Outlines {
+    /** Per-thread scratch. */
+    private static final class Lane {
+        final BorderOverlay overlay = new BorderOverlay();
+        /** Keeps what {@link Framebuffer#touchRows} read. */
+        long touched;
+    }
+
+    private final Lane[] lanes;
     private OutlinePlan[] plans = new OutlinePlan[0];
     private int count;
+    /** Preparations of the current pass that are done (or failed). */
+    private final AtomicInteger prepared = new AtomicInteger();
 
-    /** Makes room for {@code chunks} plans; call before {@link #prepare}, on one thread. */
-    void resize(int chunks) {
+    /** @param threads the threads of the pool that will run its passes */
+    Outlines(int threads) {
+        lanes = new Lane[threads];
+        for (int i = 0; i < threads; i++) {
+            lanes[i] = new Lane();
+        }
+    }
+
+    /** Starts a pass over {@code chunks} chunks: makes room for their plans; call on one thread, before the pass. */
+    void begin(int chunks) {
         if (plans.length < chunks) {
             OutlinePlan[] grown = Arrays.copyOf(plans, chunks);
             for (int i = plans.length; i < chunks; i++) {
@@ -27,19 +53,72 @@ final class Outlines {
             plans = grown;
         }
         count = chunks;
+        prepared.set(0);
     }
 
-    /** Prepares chunk {@code c}'s outlines for a frame {@code height} pixels high. */
-    void prepare(int c, ScreenTriangles triangles, BorderStyle style, TessellationSettings tessellation,
-                 int height) {
-        plans[c].prepare(triangles, style, tessellation.maxDepth(), tessellation.maxError(), height,
-                FrameRenderer.BAND_ROWS);
+    /** The preparation tasks of the pass: one per chunk. */
+    int preparations() {
+        return count;
     }
 
-    /** Draws every chunk's outlines within band {@code band}, rows [y0, y1), with a thread's overlay. */
-    void drawBand(BorderOverlay overlay, Framebuffer frame, int band, int y0, int y1) {
+    /** Prepares chunk {@code c}'s outlines for a frame {@code height} pixels high; counted done even if it fails. */
+    void prepare(int c, ScreenTriangles triangles, BorderStyle style, TessellationSettings tessellation, int height) {
+        try {
+            plans[c].prepare(triangles, style, tessellation.maxDepth(), tessellation.maxError(), height,
+                    FrameRenderer.BAND_ROWS);
+        } finally {
+            prepared.incrementAndGet();
+        }
+    }
+
+    /**
+     * Waits until every preparation of the pass is done. They are all taken before any band is, by
+     * threads that are running them, so this ends; it yields rather than spins, so that on a busy
+     * machine a preparing thread that lost its core gets it back sooner.
+     *
+     * @return true when they are done; false when a task of the pass has failed (the frame is lost)
+     */
+    boolean awaitPrepared(WorkerPool pool) {
+        while (prepared.get() < count) {
+            if (pool.failed()) {
+                return false;
+            }
+            Thread.yield();
+        }
+        return true;
+    }
+
+    /** Draws every chunk's outlines within band {@code band}, rows [y0, y1), on thread {@code thread}. */
+    void drawBand(int thread, Framebuffer frame, int band, int y0, int y1) {
+        BorderOverlay overlay = lanes[thread].overlay;
         for (int c = 0; c < count; c++) {
             overlay.draw(frame, plans[c], band, 0, y0, frame.width(), y1);
         }
+    }
+
+    /**
+     * Outlines the screen triangles of chunks 0..chunkCount-1 into {@code frame}, a pass of its own
+     * (the frame's fill long done).
+     */
+    void drawAll(Framebuffer frame, Chunks chunks, int chunkCount, BorderStyle style,
+                 TessellationSettings tessellation, WorkerPool pool) {
+        int height = frame.height();
+        begin(chunkCount);
+        int bands = BandBins.bandCount(height, FrameRenderer.BAND_ROWS);
+        pool.run(chunkCount + bands, (thread, task) -> {
+            if (task < chunkCount) {
+                prepare(task, chunks.get(task).out, style, tessellation, height);
+                return;
+            }
+            int band = task - chunkCount;
+            int y0 = band * FrameRenderer.BAND_ROWS;
+            int y1 = Math.min(height, y0 + FrameRenderer.BAND_ROWS);
+            // The frame has long left the cache: fetch the band's rows in order first, which costs
+            // less than missing on them at every line pixel.
+            lanes[thread].touched += frame.touchRows(y0, y1);
+            if (awaitPrepared(pool)) {
+                drawBand(thread, frame, band, y0, y1);
+            }
+        });
     }
 }

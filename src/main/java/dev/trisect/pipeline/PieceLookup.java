@@ -20,14 +20,14 @@ final class PieceLookup {
      *
      * @return the piece, or null when none holds the pixel
      */
-    static PieceInfo find(FrameRenderer.Chunk[] chunks, int chunkCount, int x, int y, int triangle, double depth) {
+    static PieceInfo find(Chunks chunks, int chunkCount, int x, int y, int triangle, double depth) {
         double cx = x + 0.5;
         double cy = y + 0.5;
         PieceInfo best = null;
         double bestGap = Double.POSITIVE_INFINITY;
         int index = 0;
         for (int c = 0; c < chunkCount; c++) {
-            ScreenTriangles t = chunks[c].out;
+            ScreenTriangles t = chunks.get(c).out;
             double[] sc = t.screen();
             double[] at = t.attributes();
             for (int i = 0; i < t.count(); i++, index++) {

@@ -44,12 +44,12 @@ public final class BorderOverlay {
         double[] planes = plan.planes;
         int[] colours = plan.colours;
         double[] alphas = plan.alphas;
-        int[] items = plan.binItems;
+        int[] items = plan.bins.items();
         double[] lines = plan.edgeLine;
         int[] spans = plan.edgeSpan;
         int[] cross = plan.edgeCross;
         long painted = 0;
-        for (int n = plan.binStart[band], end = plan.binStart[band + 1]; n < end; n++) {
+        for (int n = plan.bins.start(band), end = plan.bins.start(band + 1); n < end; n++) {
             int edge = items[n];
             int tri = plan.edgeOwner[edge];
             qBase = planes[3 * tri];

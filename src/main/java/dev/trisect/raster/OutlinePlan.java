@@ -54,13 +54,10 @@ public final class OutlinePlan {
     int[] edgeCross = new int[0];
     /** Per edge: whether it is mostly horizontal (walked by column). */
     boolean[] edgeByColumn = new boolean[0];
-    private int[] edgeFirstBand = new int[0];
-    private int[] edgeLastBand = new int[0];
     private int edgeCount;
 
-    /** Band b's edges are {@code binItems[binStart[b] .. binStart[b + 1])}, in drawing order. */
-    int[] binStart = new int[1];
-    int[] binItems = new int[0];
+    /** The edges of each band, in drawing order. */
+    final BandBins bins = new BandBins();
     private int[] table = new int[0];
     private final Plane depth = new Plane();
 
@@ -79,7 +76,7 @@ public final class OutlinePlan {
         setUp(triangles, style, maxLevel, maxError, n, height);
         matchEdges(triangles.fixed(), n);
         edges(triangles.fixed(), n, height, bandRows);
-        bin((height + bandRows - 1) / bandRows);
+        bins.build(edgeCount, BandBins.bandCount(height, bandRows));
     }
 
     private void setUp(ScreenTriangles triangles, BorderStyle style, int maxLevel, double maxError, int n,
@@ -265,8 +262,7 @@ public final class OutlinePlan {
                 edgeCross[2 * count] = crossFirst;
                 edgeCross[2 * count + 1] = crossLast;
                 edgeByColumn[count] = byColumn;
-                edgeFirstBand[count] = rowFirst / bandRows;
-                edgeLastBand[count] = rowLast / bandRows;
+                bins.rows(count, rowFirst, rowLast, bandRows);
                 count++;
             }
         }
@@ -280,37 +276,6 @@ public final class OutlinePlan {
      */
     private static int cellBelow(long low) {
         return (int) Math.floorDiv(low, FixedPoint.ONE) - (low % FixedPoint.ONE == 0 ? 1 : 0);
-    }
-
-    /** Sorts the edges into bands, keeping their order within a band. */
-    private void bin(int bands) {
-        if (binStart.length < bands + 1) {
-            binStart = new int[bands + 1];
-        }
-        Arrays.fill(binStart, 0, bands + 1, 0);
-        int total = 0;
-        for (int i = 0; i < edgeCount; i++) {
-            for (int b = edgeFirstBand[i]; b <= edgeLastBand[i]; b++) {
-                binStart[b + 1]++;
-            }
-            total += edgeLastBand[i] - edgeFirstBand[i] + 1;
-        }
-        for (int b = 0; b < bands; b++) {
-            binStart[b + 1] += binStart[b];
-        }
-        if (binItems.length < total) {
-            binItems = new int[Math.max(total, 2 * binItems.length)];
-        }
-        // Fill each band's list in edge order, using binStart as moving cursors, then restore.
-        for (int i = 0; i < edgeCount; i++) {
-            for (int b = edgeFirstBand[i]; b <= edgeLastBand[i]; b++) {
-                binItems[binStart[b]++] = i;
-            }
-        }
-        for (int b = bands; b > 0; b--) {
-            binStart[b] = binStart[b - 1];
-        }
-        binStart[0] = 0;
     }
 
     /** Makes room for {@code n} triangles; gives storage back when it has become far larger than needed. */
@@ -340,9 +305,8 @@ public final class OutlinePlan {
             edgeSpan = new int[2 * size];
             edgeCross = new int[2 * size];
             edgeByColumn = new boolean[size];
-            edgeFirstBand = new int[size];
-            edgeLastBand = new int[size];
-            binItems = new int[Math.min(binItems.length, 4 * size)];
+            bins.shrink(size, 4 * size);
+            bins.prepare(size);
         }
     }
 }

@@ -103,17 +103,20 @@ public final class ScreenTriangles {
         return levels;
     }
 
-    /** Records the split level of the triangle added last (0 unless set), clamped to 0..127. */
-    public void levelOfLast(int level) {
-        levels[count - 1] = (byte) Math.max(0, Math.min(127, level));
-    }
-
-    /** Appends a triangle that follows the frame's path (not a per-pixel fallback); see the full form. */
+    /** Appends an unsplit triangle that follows the frame's path (not a per-pixel fallback); see the full form. */
     public void add(double x0, double y0, double q0, double s0, double t0,
                     double x1, double y1, double q1, double s1, double t1,
                     double x2, double y2, double q2, double s2, double t2,
                     int id, int material) {
-        add(x0, y0, q0, s0, t0, x1, y1, q1, s1, t1, x2, y2, q2, s2, t2, id, material, false);
+        add(x0, y0, q0, s0, t0, x1, y1, q1, s1, t1, x2, y2, q2, s2, t2, id, material, false, 0);
+    }
+
+    /** Appends an unsplit triangle (split level 0); see the full form. */
+    public void add(double x0, double y0, double q0, double s0, double t0,
+                    double x1, double y1, double q1, double s1, double t1,
+                    double x2, double y2, double q2, double s2, double t2,
+                    int id, int material, boolean fallback) {
+        add(x0, y0, q0, s0, t0, x1, y1, q1, s1, t1, x2, y2, q2, s2, t2, id, material, fallback, 0);
     }
 
     /**
@@ -124,11 +127,12 @@ public final class ScreenTriangles {
      * @param s0 texel s of corner 0
      * @param t0 texel t of corner 0
      * @param fallback fill this triangle per pixel (perspective-correct) whatever the frame's path
+     * @param level    its split level (see {@link #levels()}), stored clamped to 0..127
      */
     public void add(double x0, double y0, double q0, double s0, double t0,
                     double x1, double y1, double q1, double s1, double t1,
                     double x2, double y2, double q2, double s2, double t2,
-                    int id, int material, boolean fallback) {
+                    int id, int material, boolean fallback, int level) {
         if (count == ids.length) {
             grow();
         }
@@ -159,7 +163,7 @@ public final class ScreenTriangles {
         ids[count] = id;
         materials[count] = material;
         perPixel[count] = fallback;
-        levels[count] = 0;
+        levels[count] = (byte) Math.max(0, Math.min(127, level));
         count++;
     }
 

@@ -1,5 +1,13 @@
 package dev.trisect.tessellate;
 
+import static dev.trisect.tessellate.VertexLayout.CLIP_STRIDE;
+import static dev.trisect.tessellate.VertexLayout.PROJECTED_STRIDE;
+import static dev.trisect.tessellate.VertexLayout.SCREEN_X;
+import static dev.trisect.tessellate.VertexLayout.SCREEN_Y;
+import static dev.trisect.tessellate.VertexLayout.W;
+import static dev.trisect.tessellate.VertexLayout.X;
+import static dev.trisect.tessellate.VertexLayout.Y;
+
 import dev.trisect.math.Viewport;
 import java.util.Arrays;
 
@@ -27,17 +35,11 @@ import java.util.Arrays;
  * size. One instance per thread.
  */
 public final class Tessellator {
-    /** Doubles per vertex: clip x, y, z, w; texel s, t; screen x, y. */
-    public static final int STRIDE = 8;
-    /** Doubles per input vertex: clip x, y, z, w; texel s, t. */
-    public static final int INPUT_STRIDE = 6;
-
-    private static final int SX = 6;
-    private static final int SY = 7;
     /** Ints per stacked piece: three vertex offsets and the levels of edges v0-v1, v1-v2, v2-v0. */
     private static final int PIECE = 6;
 
-    private double[] vertices = new double[STRIDE * 256];
+    /** Vertices in {@link VertexLayout}, {@link VertexLayout#PROJECTED_STRIDE} doubles each. */
+    private double[] vertices = new double[PROJECTED_STRIDE * 256];
     private int vertexCount;
     private int[] stack = new int[PIECE * 64];
 
@@ -57,8 +59,6 @@ public final class Tessellator {
     private int deepestLevel;
     private int capsReached;
     private long fallbackPieces;
-    /** Split level of the piece being handed to the sink. */
-    private int pieceLevel;
 
     /** Sets the frame's viewport and split settings for the triangles that follow. */
     public void configure(Viewport viewport, TessellationSettings settings) {
@@ -112,14 +112,6 @@ public final class Tessellator {
     }
 
     /**
-     * The split level of the piece being handed to the {@link PieceSink} (its most-halved edge's
-     * level); valid during {@link PieceSink#piece}, for the overlay's depth colouring.
-     */
-    public int pieceLevel() {
-        return pieceLevel;
-    }
-
-    /**
      * Pieces emitted since the last reset flagged to be filled per pixel: a cap stopped them while
      * they still failed the policy, or they are slivers (see {@link #SLIVER_PIXELS}).
      */
@@ -135,8 +127,8 @@ public final class Tessellator {
     /**
      * Processes one triangle.
      *
-     * @param input  input vertices, {@link #INPUT_STRIDE} doubles each (clip x, y, z, w with w &gt; 0,
-     *               texel s, t)
+     * @param input  input vertices, {@link VertexLayout#CLIP_STRIDE} doubles each in {@link VertexLayout}
+     *               (clip x, y, z, w with w &gt; 0, texel s, t)
      * @param i0     offset of the first corner in {@code input}
      * @param i1     offset of the second corner
      * @param i2     offset of the third corner
@@ -150,8 +142,7 @@ public final class Tessellator {
         int c = load(input, i2);
         if (!split) {
             pieces++;
-            pieceLevel = 0;
-            sink.piece(vertices, a, b, c, false);
+            sink.piece(vertices, a, b, c, 0, false);
             return;
         }
         long allowance = Long.MAX_VALUE;
@@ -234,8 +225,7 @@ public final class Tessellator {
                 if (perPixel) {
                     fallbackPieces++;
                 }
-                pieceLevel = level;
-                sink.piece(vertices, v0, v1, v2, perPixel);
+                sink.piece(vertices, v0, v1, v2, level, perPixel);
                 continue;
             }
             if (splitsHere + 2L > allowance) {
@@ -291,12 +281,12 @@ public final class Tessellator {
      */
     private boolean thin(int a, int b, int c) {
         double[] v = vertices;
-        double ex1 = v[b + SX] - v[a + SX];
-        double ey1 = v[b + SY] - v[a + SY];
-        double ex2 = v[c + SX] - v[a + SX];
-        double ey2 = v[c + SY] - v[a + SY];
-        double ex3 = v[c + SX] - v[b + SX];
-        double ey3 = v[c + SY] - v[b + SY];
+        double ex1 = v[b + SCREEN_X] - v[a + SCREEN_X];
+        double ey1 = v[b + SCREEN_Y] - v[a + SCREEN_Y];
+        double ex2 = v[c + SCREEN_X] - v[a + SCREEN_X];
+        double ey2 = v[c + SCREEN_Y] - v[a + SCREEN_Y];
+        double ex3 = v[c + SCREEN_X] - v[b + SCREEN_X];
+        double ey3 = v[c + SCREEN_Y] - v[b + SCREEN_Y];
         double area2 = Math.abs(ex1 * ey2 - ex2 * ey1);
         double l2 = Math.max(ex1 * ex1 + ey1 * ey1, Math.max(ex2 * ex2 + ey2 * ey2, ex3 * ex3 + ey3 * ey3));
         // altitude = area2 / longest edge, compared squared to spare a square root: below the limit,
@@ -308,12 +298,12 @@ public final class Tessellator {
     /** Whether the piece's screen bounding box misses the viewport entirely. */
     private boolean offScreen(int a, int b, int c) {
         double[] v = vertices;
-        double xa = v[a + SX];
-        double xb = v[b + SX];
-        double xc = v[c + SX];
-        double ya = v[a + SY];
-        double yb = v[b + SY];
-        double yc = v[c + SY];
+        double xa = v[a + SCREEN_X];
+        double xb = v[b + SCREEN_X];
+        double xc = v[c + SCREEN_X];
+        double ya = v[a + SCREEN_Y];
+        double yb = v[b + SCREEN_Y];
+        double yc = v[c + SCREEN_Y];
         return (xa < 0 && xb < 0 && xc < 0) || (ya < 0 && yb < 0 && yc < 0)
                 || (xa > width && xb > width && xc > width) || (ya > height && yb > height && yc > height);
     }
@@ -321,19 +311,19 @@ public final class Tessellator {
     /** Edge measure: squared screen length (edge policy) or the affine error bound in pixels. */
     private double measure(int a, int b) {
         double[] v = vertices;
-        double dx = v[a + SX] - v[b + SX];
-        double dy = v[a + SY] - v[b + SY];
+        double dx = v[a + SCREEN_X] - v[b + SCREEN_X];
+        double dy = v[a + SCREEN_Y] - v[b + SCREEN_Y];
         double lengthSquared = dx * dx + dy * dy;
         if (!errorPolicy) {
             return lengthSquared;
         }
-        return EdgeBound.affineError(Math.sqrt(lengthSquared), v[a + 3], v[b + 3]);
+        return EdgeBound.affineError(Math.sqrt(lengthSquared), v[a + W], v[b + W]);
     }
 
     private int load(double[] input, int offset) {
         int o = reserveVertex();
         double[] v = vertices;
-        System.arraycopy(input, offset, v, o, INPUT_STRIDE);
+        System.arraycopy(input, offset, v, o, CLIP_STRIDE);
         project(o);
         return o;
     }
@@ -350,12 +340,12 @@ public final class Tessellator {
         double kb;
         switch (splitPoint) {
             case SCREEN -> {
-                ka = v[b + 3];
-                kb = v[a + 3];
+                ka = v[b + W];
+                kb = v[a + W];
             }
             case GEOMETRIC -> {
-                ka = Math.sqrt(v[b + 3]);
-                kb = Math.sqrt(v[a + 3]);
+                ka = Math.sqrt(v[b + W]);
+                kb = Math.sqrt(v[a + W]);
             }
             default -> {
                 ka = 1;
@@ -363,7 +353,7 @@ public final class Tessellator {
             }
         }
         double sum = ka + kb;
-        for (int k = 0; k < INPUT_STRIDE; k++) {
+        for (int k = 0; k < CLIP_STRIDE; k++) {
             v[o + k] = (v[a + k] * ka + v[b + k] * kb) / sum;
         }
         project(o);
@@ -372,13 +362,13 @@ public final class Tessellator {
 
     private void project(int o) {
         double[] v = vertices;
-        v[o + SX] = viewport.screenX(v[o], v[o + 3]);
-        v[o + SY] = viewport.screenY(v[o + 1], v[o + 3]);
+        v[o + SCREEN_X] = viewport.screenX(v[o + X], v[o + W]);
+        v[o + SCREEN_Y] = viewport.screenY(v[o + Y], v[o + W]);
     }
 
     private int reserveVertex() {
-        int o = vertexCount * STRIDE;
-        if (o + STRIDE > vertices.length) {
+        int o = vertexCount * PROJECTED_STRIDE;
+        if (o + PROJECTED_STRIDE > vertices.length) {
             vertices = Arrays.copyOf(vertices, vertices.length * 2);
         }
         vertexCount++;

@@ -71,18 +71,18 @@ class BorderPassTest {
     @Test
     void chunksAreSetByTheTriangleCountAsDocumented() {
         // The examples of FrameRenderer.SMALL_MESH_CHUNK_CAP and docs/conventions.md.
-        assertEquals(1, FrameRenderer.chunkCount(0));
-        assertEquals(1, FrameRenderer.chunkCount(512));
-        assertEquals(2, FrameRenderer.chunkCount(1000));
-        assertEquals(500, FrameRenderer.chunkSize(1000, 2));
-        assertEquals(64, FrameRenderer.chunkCount(32768));
-        assertEquals(512, FrameRenderer.chunkSize(32768, 64));
-        assertEquals(64, FrameRenderer.chunkCount(100_000));
-        assertEquals(1563, FrameRenderer.chunkSize(100_000, 64));
+        assertEquals(1, Chunks.count(0));
+        assertEquals(1, Chunks.count(512));
+        assertEquals(2, Chunks.count(1000));
+        assertEquals(500, Chunks.size(1000, 2));
+        assertEquals(64, Chunks.count(32768));
+        assertEquals(512, Chunks.size(32768, 64));
+        assertEquals(64, Chunks.count(100_000));
+        assertEquals(1563, Chunks.size(100_000, 64));
         // Every chunk holds a triangle, the last no more than the others, and up to 32768 triangles none more than 512.
         for (int n = 1; n <= 200_000; n += n < 40_000 ? 1 : 97) {
-            int count = FrameRenderer.chunkCount(n);
-            int size = FrameRenderer.chunkSize(n, count);
+            int count = Chunks.count(n);
+            int size = Chunks.size(n, count);
             int last = n - (count - 1) * size;
             assertTrue(last >= 1 && last <= size, n + " triangles: last chunk " + last + " of " + size);
             assertTrue(n > 32768 || size <= 512, n + " triangles: chunks of " + size);

@@ -6,18 +6,22 @@ import java.util.List;
 
 /** Test support: builds tessellator input from screen positions and collects the pieces. */
 final class Pieces implements PieceSink {
-    /** Each piece: 3 vertices of {@link Tessellator#STRIDE} doubles, copied. */
+    private static final int STRIDE = VertexLayout.PROJECTED_STRIDE;
+    /** Each piece: 3 vertices of {@link VertexLayout#PROJECTED_STRIDE} doubles, copied. */
     final List<double[]> pieces = new ArrayList<>();
     /** Whether each piece was flagged for the per-pixel fallback. */
     final List<Boolean> fallback = new ArrayList<>();
+    /** The split level handed on with each piece. */
+    final List<Integer> levels = new ArrayList<>();
 
     @Override
-    public void piece(double[] v, int a, int b, int c, boolean perPixel) {
+    public void piece(double[] v, int a, int b, int c, int level, boolean perPixel) {
         fallback.add(perPixel);
-        double[] p = new double[3 * Tessellator.STRIDE];
-        System.arraycopy(v, a, p, 0, Tessellator.STRIDE);
-        System.arraycopy(v, b, p, Tessellator.STRIDE, Tessellator.STRIDE);
-        System.arraycopy(v, c, p, 2 * Tessellator.STRIDE, Tessellator.STRIDE);
+        levels.add(level);
+        double[] p = new double[3 * STRIDE];
+        System.arraycopy(v, a, p, 0, STRIDE);
+        System.arraycopy(v, b, p, STRIDE, STRIDE);
+        System.arraycopy(v, c, p, 2 * STRIDE, STRIDE);
         pieces.add(p);
     }
 
@@ -33,18 +37,21 @@ final class Pieces implements PieceSink {
 
     /** Three input vertices in one array, offsets 0, 6, 12. */
     static double[] triangle(double[] a, double[] b, double[] c) {
-        double[] t = new double[3 * Tessellator.INPUT_STRIDE];
-        System.arraycopy(a, 0, t, 0, 6);
-        System.arraycopy(b, 0, t, 6, 6);
-        System.arraycopy(c, 0, t, 12, 6);
+        int n = VertexLayout.CLIP_STRIDE;
+        double[] t = new double[3 * n];
+        System.arraycopy(a, 0, t, 0, n);
+        System.arraycopy(b, 0, t, n, n);
+        System.arraycopy(c, 0, t, 2 * n, n);
         return t;
     }
 
     /** Twice the signed screen area of piece p (from the screen x, y of its vertices). */
     static double area2(double[] p) {
-        int s = Tessellator.STRIDE;
-        double x0 = p[6];
-        double y0 = p[7];
-        return (p[s + 6] - x0) * (p[2 * s + 7] - y0) - (p[2 * s + 6] - x0) * (p[s + 7] - y0);
+        int s = STRIDE;
+        int x = VertexLayout.SCREEN_X;
+        int y = VertexLayout.SCREEN_Y;
+        double x0 = p[x];
+        double y0 = p[y];
+        return (p[s + x] - x0) * (p[2 * s + y] - y0) - (p[2 * s + x] - x0) * (p[s + y] - y0);
     }
 }

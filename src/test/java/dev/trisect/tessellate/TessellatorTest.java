@@ -13,7 +13,7 @@ import org.junit.jupiter.params.provider.MethodSource;
 
 class TessellatorTest {
     private static final Viewport VP = new Viewport(256, 256);
-    private static final int S = Tessellator.STRIDE;
+    private static final int S = VertexLayout.PROJECTED_STRIDE;
 
     private static Pieces run(Tessellator t, double[] tri, TessellationSettings settings) {
         t.configure(VP, settings);
@@ -21,6 +21,14 @@ class TessellatorTest {
         Pieces out = new Pieces();
         t.process(tri, 0, 6, 12, true, out);
         return out;
+    }
+
+    /** A(0,0) B(128,0) C(64,64) on screen, all at depth 1: a right isosceles triangle, hypotenuse 128. */
+    private static double[] rightTriangle() {
+        return Pieces.triangle(
+                Pieces.vertex(VP, 0, 0, 1, 0, 0),
+                Pieces.vertex(VP, 128, 0, 1, 1, 0),
+                Pieces.vertex(VP, 64, 64, 1, 0, 1));
     }
 
     private static TessellationSettings edge(double maxEdge) {
@@ -37,10 +45,7 @@ class TessellatorTest {
         // right isosceles triangles; the hypotenuse shrinks by sqrt(2) per level: 128, 90.5, 64, 45.3,
         // 32. Four levels of splits: 1 + 2 + 4 + 8 = 15 splits, 16 pieces with hypotenuse exactly 32,
         // which is not longer than maxEdge. The legs of the root are halved once, its hypotenuse twice.
-        double[] tri = Pieces.triangle(
-                Pieces.vertex(VP, 0, 0, 1, 0, 0),
-                Pieces.vertex(VP, 128, 0, 1, 1, 0),
-                Pieces.vertex(VP, 64, 64, 1, 0, 1));
+        double[] tri = rightTriangle();
         Tessellator t = new Tessellator();
         Pieces out = run(t, tri, edge(32));
         assertEquals(16, out.pieces.size());
@@ -53,11 +58,27 @@ class TessellatorTest {
     }
 
     @Test
+    void eachPieceComesWithItsSplitLevel() {
+        double[] tri = rightTriangle();
+        Tessellator t = new Tessellator();
+        Pieces out = run(t, tri, edge(32));
+        // The level of a piece is that of its most-halved edge: the root's hypotenuse is halved twice
+        // (see above), and every piece has an edge cut from it or from a leg (halved once).
+        assertEquals(16, out.levels.size());
+        assertEquals(t.deepestLevel(), out.levels.stream().mapToInt(Integer::intValue).max().orElseThrow());
+        assertTrue(out.levels.stream().allMatch(l -> l >= 1 && l <= 2), out.levels.toString());
+        // 4 pieces per quarter of the triangle: the 8 pieces along the hypotenuse are at level 2.
+        assertTrue(out.levels.stream().filter(l -> l == 2).count() >= 8, out.levels.toString());
+        // Passed on whole, a triangle is at level 0.
+        t.configure(VP, edge(32));
+        Pieces whole = new Pieces();
+        t.process(tri, 0, VertexLayout.CLIP_STRIDE, 2 * VertexLayout.CLIP_STRIDE, false, whole);
+        assertEquals(java.util.List.of(0), whole.levels);
+    }
+
+    @Test
     void thresholdJustBelowAPieceEdgeAddsALevel() {
-        double[] tri = Pieces.triangle(
-                Pieces.vertex(VP, 0, 0, 1, 0, 0),
-                Pieces.vertex(VP, 128, 0, 1, 1, 0),
-                Pieces.vertex(VP, 64, 64, 1, 0, 1));
+        double[] tri = rightTriangle();
         Tessellator t = new Tessellator();
         // Hypotenuse 32 now fails: one more level, 32 pieces with hypotenuse 22.6.
         assertEquals(32, run(t, tri, edge(31.99)).pieces.size());
@@ -338,7 +359,7 @@ class TessellatorTest {
             assertEquals(expectedW, m[3], 1e-12 * expectedW, point + ": view depth of the cut");
             // On the 3D edge: the same convex combination for clip x, y, z, w and the texel coordinates.
             double k = (m[3] - wp) / (wq - wp);
-            for (int c = 0; c < Tessellator.INPUT_STRIDE; c++) {
+            for (int c = 0; c < VertexLayout.CLIP_STRIDE; c++) {
                 assertEquals(p[c] + k * (q[c] - p[c]), m[c], 1e-9 * (1 + Math.abs(m[c])), point + ": attribute " + c);
             }
             double screenFraction = (m[6] - 10) / (246 - 10);

@@ -1,0 +1,76 @@
+package dev.trisect.pipeline;
+
+import dev.trisect.raster.BandBins;
+import dev.trisect.raster.ScreenTriangles;
+
+/**
+ * One contiguous range of input triangles as the geometry stage leaves it for the fill: its screen
+ * triangles in input order, their bands of rows, and what its geometry counted. Written by one
+ * thread at a time ({@link ChunkGeometry}, then {@link #bin}), read by any number afterwards.
+ */
+final class Chunk {
+    /**
+     * Scratch that has been more than this many times larger than a frame needed, for
+     * {@link FrameRenderer#TRIM_FRAMES} frames in a row, shrinks to twice the need: memory taken by one
+     * extreme frame goes back to the collector within about a second, while steady frames allocate
+     * nothing.
+     */
+    static final int TRIM_FACTOR = 4;
+    /** Storage below this many triangles is never worth trimming. */
+    static final int TRIM_FLOOR = 16384;
+
+    final ScreenTriangles out = new ScreenTriangles();
+    /** The screen triangles of each band of {@link FrameRenderer#BAND_ROWS} rows. */
+    final BandBins bins = new BandBins();
+    // What the last geometry attempt counted (see FrameStats for their meaning).
+    long culledBack;
+    long culledFrustum;
+    long culledDegenerate;
+    long invalid;
+    long clipped;
+    long pieces;
+    long offScreen;
+    long splits;
+    int deepest;
+    long caps;
+    long fallback;
+    /** Processor time the last attempt spent culling and clipping, and tessellating or projecting. */
+    long clipNanos;
+    long tessellateNanos;
+    private int oversizedFrames;
+
+    /** Empties the screen triangles and zeroes the counters, for a new attempt at the geometry. */
+    void clear() {
+        out.clear();
+        culledBack = culledFrustum = culledDegenerate = invalid = clipped = 0;
+        clipNanos = tessellateNanos = 0;
+    }
+
+    /** Sorts the screen triangles into bands of rows of a frame {@code height} rows high, in order. */
+    void bin(int bands, int height) {
+        int n = out.count();
+        bins.prepare(n);
+        for (int i = 0; i < n; i++) {
+            int r0 = Math.max(0, out.firstRow(i));
+            int r1 = Math.min(height, out.endRow(i));
+            if (r0 >= r1) {
+                bins.none(i);
+            } else {
+                bins.rows(i, r0, r1 - 1, FrameRenderer.BAND_ROWS);
+            }
+        }
+        bins.build(n, bands);
+    }
+
+    /** Gives back storage that has long been far larger than frames need (see {@link #TRIM_FACTOR}). */
+    void trimIfOversized() {
+        int need = Math.max(out.count(), TRIM_FLOOR / TRIM_FACTOR);
+        boolean oversized = out.capacity() > TRIM_FLOOR && out.capacity() > TRIM_FACTOR * need;
+        oversizedFrames = oversized ? oversizedFrames + 1 : 0;
+        if (oversizedFrames >= FrameRenderer.TRIM_FRAMES) {
+            oversizedFrames = 0;
+            out.shrinkTo(2 * need);
+            bins.shrink(2 * need, Math.max(2 * bins.entries(), 2 * need));
+        }
+    }
+}

@@ -1,0 +1,231 @@
+package dev.trisect.pipeline;
+
+import static dev.trisect.tessellate.VertexLayout.CLIP_STRIDE;
+import static dev.trisect.tessellate.VertexLayout.S;
+import static dev.trisect.tessellate.VertexLayout.T;
+import static dev.trisect.tessellate.VertexLayout.W;
+import static dev.trisect.tessellate.VertexLayout.X;
+import static dev.trisect.tessellate.VertexLayout.Y;
+import static dev.trisect.tessellate.VertexLayout.Z;
+
+import dev.trisect.math.Viewport;
+import dev.trisect.mesh.Mesh;
+import dev.trisect.tessellate.PieceBudget;
+import dev.trisect.tessellate.Tessellator;
+import dev.trisect.texture.Texture;
+import java.util.Arrays;
+
+/**
+ * The geometry of one chunk of input triangles: cull, clip and fan them in clip space, then split
+ * them (tessellated path) or pass them whole through the {@link Tessellator}, whose pieces a
+ * {@link ScreenPieceSink} appends to the chunk's screen triangles in input order.
+ *
+ * <p>A triangle with a flagged corner or a non-finite UV is skipped and counted. One wholly outside
+ * a plane of the view volume is culled. Facing comes from the sign of the homogeneous determinant of
+ * the corners' (x, y, w), right even for triangles that cross the eye plane; zero is degenerate.
+ * Triangles that cross the near or far plane, or the guard band {@link #GUARD_PIXELS} beyond the
+ * screen's sides, are clipped ({@link Clipper}) and fanned. Vertices are in {@link
+ * dev.trisect.tessellate.VertexLayout}. Each thread has its own scratch; any thread may take any chunk.
+ */
+final class ChunkGeometry {
+    /** Guard band beyond each side of the viewport, pixels. */
+    static final int GUARD_PIXELS = 8192;
+    /** Triangles per timing batch inside a chunk. */
+    private static final int BATCH = 1024;
+
+    /**
+     * What every chunk of one attempt at a frame's geometry works from.
+     *
+     * @param clip            clip-space positions of the mesh, 4 doubles each (see {@link ClipSpace})
+     * @param invalidPosition per position: not finite in clip space
+     * @param guardX          the guard band as a multiple of the view volume's half-width
+     * @param guardY          likewise of its half-height
+     * @param split           tessellate (else pass triangles whole)
+     * @param budget          the frame's piece budget, shared by all threads' tessellators
+     */
+    record Input(Mesh mesh, Texture[] textures, double[] clip, boolean[] invalidPosition, RenderSettings settings,
+                 Viewport viewport, double guardX, double guardY, boolean split, PieceBudget budget) {
+    }
+
+    /** Per-thread scratch. */
+    private static final class Scratch {
+        final Clipper clipper = new Clipper();
+        final Tessellator tessellator = new Tessellator();
+        final ScreenPieceSink sink = new ScreenPieceSink();
+        /** The three corners of the triangle being culled and clipped. */
+        final double[] corners = new double[3 * CLIP_STRIDE];
+        /** Clipped triangles of the current batch: 3 vertices of CLIP_STRIDE doubles each. */
+        double[] batch = new double[3 * CLIP_STRIDE * BATCH];
+        int[] batchIds = new int[BATCH];
+        int[] batchMaterials = new int[BATCH];
+    }
+
+    private final Scratch[] scratch;
+
+    /** @param threads threads that may call {@link #run}, numbered as {@link WorkerPool} numbers them */
+    ChunkGeometry(int threads) {
+        scratch = new Scratch[threads];
+        for (int i = 0; i < threads; i++) {
+            scratch[i] = new Scratch();
+        }
+    }
+
+    /**
+     * Replaces {@code chunk}'s screen triangles and counters with those of input triangles
+     * [from, to), on thread {@code thread}. Stops early once the frame's piece budget is exceeded
+     * (the attempt is then thrown away).
+     */
+    void run(int thread, Chunk chunk, Input in, int from, int to) {
+        Scratch w = scratch[thread];
+        chunk.clear();
+        Tessellator tess = w.tessellator;
+        PieceBudget budget = in.budget();
+        tess.configure(in.viewport(), in.settings().tessellation());
+        tess.budget(budget);
+        tess.resetStatistics();
+        w.clipper.guardBand(in.guardX(), in.guardY());
+        w.sink.target(chunk.out);
+        boolean cullBack = in.settings().cull() == CullMode.BACK;
+        boolean split = in.split();
+        for (int batchStart = from; batchStart < to && !budget.exceeded(); batchStart += BATCH) {
+            int batchEnd = Math.min(to, batchStart + BATCH);
+            long t0 = System.nanoTime();
+            int n = cullAndClip(w, chunk, in, batchStart, batchEnd, cullBack);
+            long t1 = System.nanoTime();
+            double[] b = w.batch;
+            int stride = 3 * CLIP_STRIDE;
+            for (int i = 0; i < n; i++) {
+                w.sink.triangle(w.batchIds[i], w.batchMaterials[i]);
+                int o = i * stride;
+                tess.process(b, o, o + CLIP_STRIDE, o + 2 * CLIP_STRIDE, split, w.sink);
+            }
+            long t2 = System.nanoTime();
+            chunk.clipNanos += t1 - t0;
+            chunk.tessellateNanos += t2 - t1;
+        }
+        chunk.pieces = tess.pieces();
+        chunk.offScreen = tess.culledOffScreen();
+        chunk.splits = tess.splits();
+        chunk.deepest = tess.deepestLevel();
+        chunk.caps = tess.capsReached();
+        chunk.fallback = tess.fallbackPieces();
+    }
+
+    /**
+     * Culls and clips input triangles [from, to) into the thread's batch as triangles in clip space
+     * with texel coordinates, counting what it drops in {@code chunk}; returns how many.
+     */
+    private static int cullAndClip(Scratch w, Chunk chunk, Input in, int from, int to, boolean cullBack) {
+        Mesh mesh = in.mesh();
+        Texture[] textures = in.textures();
+        double[] clip = in.clip();
+        boolean[] invalidPosition = in.invalidPosition();
+        int[] corners = mesh.cornerPositions();
+        int[] cornerUvs = mesh.cornerUvs();
+        int[] materials = mesh.triangleMaterials();
+        float[] uvs = mesh.uvs();
+        Clipper clipper = w.clipper;
+        int count = 0;
+        double[] corner = w.corners;
+        int c1 = CLIP_STRIDE;
+        int c2 = 2 * CLIP_STRIDE;
+        for (int t = from; t < to; t++) {
+            int c = 3 * t;
+            int p0 = corners[c];
+            int p1 = corners[c + 1];
+            int p2 = corners[c + 2];
+            int material = materials[t];
+            Texture tex = textures[material];
+            if (invalidPosition[p0] || invalidPosition[p1] || invalidPosition[p2]
+                    || !loadCorner(corner, 0, clip, p0, uvs, cornerUvs[c], tex)
+                    || !loadCorner(corner, c1, clip, p1, uvs, cornerUvs[c + 1], tex)
+                    || !loadCorner(corner, c2, clip, p2, uvs, cornerUvs[c + 2], tex)) {
+                chunk.invalid++;
+                continue;
+            }
+            int f0 = Clipper.frustumCode(corner[X], corner[Y], corner[Z], corner[W]);
+            int f1 = Clipper.frustumCode(corner[c1 + X], corner[c1 + Y], corner[c1 + Z], corner[c1 + W]);
+            int f2 = Clipper.frustumCode(corner[c2 + X], corner[c2 + Y], corner[c2 + Z], corner[c2 + W]);
+            if ((f0 & f1 & f2) != 0) {
+                chunk.culledFrustum++;
+                continue;
+            }
+            // Facing from the homogeneous determinant of (x, y, w): its sign is the projected
+            // winding for w > 0 and stays right for triangles crossing the eye plane.
+            double det = determinant(corner);
+            if (det == 0) {
+                chunk.culledDegenerate++;
+                continue;
+            }
+            if (cullBack && det < 0) {
+                chunk.culledBack++;
+                continue;
+            }
+            int g = clipper.clipCode(corner[X], corner[Y], corner[Z], corner[W])
+                    | clipper.clipCode(corner[c1 + X], corner[c1 + Y], corner[c1 + Z], corner[c1 + W])
+                    | clipper.clipCode(corner[c2 + X], corner[c2 + Y], corner[c2 + Z], corner[c2 + W]);
+            if (g == 0) {
+                count = append(w, count, corner, 0, c1, c2, t, material);
+                continue;
+            }
+            chunk.clipped++;
+            int n = clipper.clip(corner, 0, c1, c2, g);
+            if (n == 0) {
+                chunk.culledFrustum++;
+                continue;
+            }
+            double[] poly = clipper.vertices();
+            for (int k = 1; k + 1 < n; k++) {
+                count = append(w, count, poly, 0, k * CLIP_STRIDE, (k + 1) * CLIP_STRIDE, t, material);
+            }
+        }
+        return count;
+    }
+
+    /** Loads corner {@code o} from clip-space position {@code p} and its UV; false if a texel coordinate is not finite. */
+    private static boolean loadCorner(double[] dst, int o, double[] clip, int p, float[] uvs, int uvIndex,
+                                      Texture tex) {
+        System.arraycopy(clip, 4 * p, dst, o + X, 4);
+        double u = 0;
+        double v = 0;
+        if (uvIndex >= 0) {
+            u = uvs[2 * uvIndex];
+            v = uvs[2 * uvIndex + 1];
+        }
+        dst[o + S] = u * tex.width();
+        dst[o + T] = v * tex.height();
+        return Double.isFinite(dst[o + S]) && Double.isFinite(dst[o + T]);
+    }
+
+    /** The determinant of the three corners' clip-space (x, y, w). */
+    private static double determinant(double[] c) {
+        int c1 = CLIP_STRIDE;
+        int c2 = 2 * CLIP_STRIDE;
+        double x0 = c[X];
+        double y0 = c[Y];
+        double w0 = c[W];
+        double x1 = c[c1 + X];
+        double y1 = c[c1 + Y];
+        double w1 = c[c1 + W];
+        double x2 = c[c2 + X];
+        double y2 = c[c2 + Y];
+        double w2 = c[c2 + W];
+        return x0 * (y1 * w2 - y2 * w1) - y0 * (x1 * w2 - x2 * w1) + w0 * (x1 * y2 - x2 * y1);
+    }
+
+    private static int append(Scratch w, int count, double[] src, int a, int b, int c, int id, int material) {
+        int stride = 3 * CLIP_STRIDE;
+        if ((count + 1) * stride > w.batch.length) {
+            w.batch = Arrays.copyOf(w.batch, w.batch.length * 2);
+            w.batchIds = Arrays.copyOf(w.batchIds, w.batchIds.length * 2);
+            w.batchMaterials = Arrays.copyOf(w.batchMaterials, w.batchMaterials.length * 2);
+        }
+        int o = count * stride;
+        System.arraycopy(src, a, w.batch, o, CLIP_STRIDE);
+        System.arraycopy(src, b, w.batch, o + CLIP_STRIDE, CLIP_STRIDE);
+        System.arraycopy(src, c, w.batch, o + 2 * CLIP_STRIDE, CLIP_STRIDE);
+        w.batchIds[count] = id;
+        w.batchMaterials[count] = material;
+        return count + 1;
+    }
+}

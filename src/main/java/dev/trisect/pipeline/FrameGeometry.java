@@ -1,0 +1,92 @@
+package dev.trisect.pipeline;
+
+import dev.trisect.math.Mat4;
+import dev.trisect.math.Viewport;
+import dev.trisect.mesh.Mesh;
+import dev.trisect.raster.BandBins;
+import dev.trisect.tessellate.PieceBudget;
+import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.texture.Texture;
+
+/**
+ * The geometry half of a frame, up to what the fill reads: transform the positions
+ * ({@link ClipSpace}), cull, clip and tessellate or project every chunk of triangles on all threads
+ * ({@link ChunkGeometry}) within the frame's piece budget ({@link DepthCapSearch}), and bin each
+ * chunk's screen triangles into bands of {@link FrameRenderer#BAND_ROWS} rows. The chunks
+ * ({@link #chunks()}) hold the result until the next frame. Not thread-safe: one frame at a time.
+ */
+final class FrameGeometry {
+    /**
+     * What one frame's geometry made.
+     *
+     * @param chunkCount     chunks holding the frame's screen triangles, 0.. in {@link #chunks()}
+     * @param transformNanos wall time of the transform
+     * @param pieceBudget    the frame's piece budget (0 outside the tessellated path)
+     * @param budgetDepth    the depth cap the budget forced, or -1
+     */
+    record Result(int chunkCount, long transformNanos, long pieceBudget, int budgetDepth) {
+    }
+
+    private final ClipSpace clipSpace = new ClipSpace();
+    private final Chunks chunks = new Chunks();
+    private final ChunkGeometry chunkGeometry;
+    /** Shared by the threads' tessellators for one attempt. */
+    private final PieceBudget pieceBudget = new PieceBudget();
+
+    /** @param threads the threads of the pool that will run it */
+    FrameGeometry(int threads) {
+        chunkGeometry = new ChunkGeometry(threads);
+    }
+
+    /** The chunks the last {@link #run} filled. */
+    Chunks chunks() {
+        return chunks;
+    }
+
+    /**
+     * Makes the screen triangles of {@code mesh} seen through {@code viewProjection} (world to clip
+     * space) in a frame of {@code width x height} pixels, binned into bands.
+     *
+     * @param textures the texture of each material, by material index (their sizes scale the UVs)
+     */
+    Result run(Mesh mesh, Texture[] textures, Mat4 viewProjection, RenderSettings settings, int width, int height,
+               WorkerPool pool) {
+        if (textures.length < mesh.materialCount()) {
+            throw new IllegalArgumentException("mesh has " + mesh.materialCount() + " materials but "
+                    + textures.length + " textures were given");
+        }
+        long start = System.nanoTime();
+        Viewport viewport = new Viewport(width, height);
+        clipSpace.transform(mesh, viewProjection, pool);
+        long transformNanos = System.nanoTime() - start;
+        int bands = BandBins.bandCount(height, FrameRenderer.BAND_ROWS);
+        int triangles = mesh.triangleCount();
+        int chunkCount = Chunks.count(triangles);
+        chunks.ensure(chunkCount);
+        int perChunk = Chunks.size(triangles, chunkCount);
+        double gx = 1 + 2.0 * ChunkGeometry.GUARD_PIXELS / width;
+        double gy = 1 + 2.0 * ChunkGeometry.GUARD_PIXELS / height;
+        boolean split = settings.mode() == RenderMode.TESSELLATED;
+        TessellationSettings t = settings.tessellation();
+        long limit = split ? t.framePieceBudget((long) width * height, triangles) : Long.MAX_VALUE;
+        DepthCapSearch.Attempt attempt = (depth, pieces) -> {
+            pieceBudget.reset(pieces);
+            RenderSettings s = depth == t.maxDepth() ? settings : settings.withTessellation(t.withMaxDepth(depth));
+            ChunkGeometry.Input in = new ChunkGeometry.Input(mesh, textures, clipSpace.positions(),
+                    clipSpace.invalid(), s, viewport, gx, gy, split, pieceBudget);
+            pool.run(chunkCount, (thread, c) -> {
+                int from = Math.min(triangles, c * perChunk);
+                int to = Math.min(triangles, from + perChunk);
+                chunkGeometry.run(thread, chunks.get(c), in, from, to);
+            });
+            return !pieceBudget.exceeded();
+        };
+        int budgetDepth = DepthCapSearch.fit(attempt, t.maxDepth(), limit);
+        pool.run(chunkCount, (thread, c) -> {
+            Chunk chunk = chunks.get(c);
+            chunk.bin(bands, height);
+            chunk.trimIfOversized();
+        });
+        return new Result(chunkCount, transformNanos, limit == Long.MAX_VALUE ? 0 : limit, budgetDepth);
+    }
+}

@@ -1,0 +1,41 @@
+package dev.trisect.pipeline;
+
+import static dev.trisect.tessellate.VertexLayout.S;
+import static dev.trisect.tessellate.VertexLayout.SCREEN_X;
+import static dev.trisect.tessellate.VertexLayout.SCREEN_Y;
+import static dev.trisect.tessellate.VertexLayout.T;
+import static dev.trisect.tessellate.VertexLayout.W;
+
+import dev.trisect.raster.ScreenTriangles;
+import dev.trisect.tessellate.PieceSink;
+
+/**
+ * Where the geometry stage's pieces go: each piece the tessellator hands on is appended to a chunk's
+ * screen triangles, with its corners' screen positions, {@code 1/w} and texel coordinates, tagged
+ * with the input triangle it came from, that triangle's material, its split level and whether it is
+ * a per-pixel fallback. One per thread; pointed at a chunk, then at each input triangle in turn.
+ */
+final class ScreenPieceSink implements PieceSink {
+    private ScreenTriangles out;
+    private int id;
+    private int material;
+
+    /** Appends the following pieces to {@code triangles}. */
+    void target(ScreenTriangles triangles) {
+        out = triangles;
+    }
+
+    /** The following pieces come from input triangle {@code id} of material {@code material}. */
+    void triangle(int triangleId, int materialIndex) {
+        id = triangleId;
+        material = materialIndex;
+    }
+
+    @Override
+    public void piece(double[] v, int a, int b, int c, int level, boolean fallback) {
+        out.add(v[a + SCREEN_X], v[a + SCREEN_Y], 1 / v[a + W], v[a + S], v[a + T],
+                v[b + SCREEN_X], v[b + SCREEN_Y], 1 / v[b + W], v[b + S], v[b + T],
+                v[c + SCREEN_X], v[c + SCREEN_Y], 1 / v[c + W], v[c + S], v[c + T],
+                id, material, fallback, level);
+    }
+}
