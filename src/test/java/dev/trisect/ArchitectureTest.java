@@ -68,6 +68,34 @@ class ArchitectureTest {
         assertEquals(List.of(), violations);
     }
 
+    /** The packages of the public API (module-info exports these alone); see /work/notes/api-design.md. */
+    static final List<String> API = List.of("base", "math", "mesh", "texture", "render", "scene", "view");
+    /** API types still in internal packages until the move to {@code render} (issue 17); none once it is done. */
+    private static final List<String> PENDING_MOVE = List.of("dev.trisect.pipeline.RenderSettings",
+            "dev.trisect.pipeline.RenderMode", "dev.trisect.pipeline.FrameStats", "dev.trisect.pipeline.CullMode",
+            "dev.trisect.raster.Framebuffer");
+
+    /** The examples are what a user writes: they import the API packages alone. */
+    @Test
+    void examplesUseTheApiAlone() throws IOException {
+        List<String> violations = new ArrayList<>();
+        Pattern imports = Pattern.compile("^import (static )?(dev\\.trisect\\.(\\w+)\\.[\\w.]+);", Pattern.MULTILINE);
+        List<Path> examples;
+        try (Stream<Path> s = Files.walk(Path.of("src/examples/java"))) {
+            examples = s.filter(p -> p.toString().endsWith(".java")).sorted().toList();
+        }
+        assertTrue(examples.size() >= 2, "examples found: " + examples);
+        for (Path file : examples) {
+            Matcher m = imports.matcher(Files.readString(file));
+            while (m.find()) {
+                if (!API.contains(m.group(3)) && !PENDING_MOVE.contains(m.group(2))) {
+                    violations.add(file + " imports " + m.group(2));
+                }
+            }
+        }
+        assertEquals(List.of(), violations);
+    }
+
     private static List<Path> javaFiles() throws IOException {
         try (Stream<Path> s = Files.walk(SOURCES)) {
             return s.filter(p -> p.toString().endsWith(".java")).sorted().toList();
