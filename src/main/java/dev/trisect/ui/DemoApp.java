@@ -134,23 +134,23 @@ public final class DemoApp implements Callable<Integer> {
         SceneAsset s = obj != null ? SceneLoader.load(obj, null, note -> System.err.println("trisect: note: " + note))
                 : DemoScenes.byName(scene).orElseThrow(() -> InputException.usage("unknown scene '" + scene
                         + "' (built-in scenes: " + String.join(", ", DemoScenes.names()) + ")"));
-        DemoState state = new DemoState(s);
         RenderMode initial = start;
-        state.settings(state.settings().withRenderScale(renderScale)
-                .withRender(state.settings().render().withMode(initial)));
-        if (targetMs != null) {
-            state.budget(new DemoState.Budget(true, targetMs));
-        }
         AtomicReference<DemoWindow> window = new AtomicReference<>();
         AtomicReference<Throwable> failure = new AtomicReference<>();
         SwingUtilities.invokeAndWait(() -> {
             try {
+                // The look and feel is the demo's choice, made here and never by the library.
                 FlatDarkLaf.setup();
                 ToolTipManager.sharedInstance().setDismissDelay(15000);
-                DemoWindow w = new DemoWindow(state, n);
+                DemoWindow w = new DemoWindow(s, n);
+                w.view().setRenderScale(renderScale);
+                w.render(r -> r.withMode(initial));
+                if (targetMs != null) {
+                    w.view().setFrameTimeTarget(targetMs);
+                }
                 w.start();
                 if (devTools) {
-                    w.devToolsCommand.actionPerformed(null);
+                    w.view().showDevTools(true);
                 }
                 window.set(w);
             } catch (RuntimeException | Error e) {
@@ -168,14 +168,12 @@ public final class DemoApp implements Callable<Integer> {
         return -1;
     }
 
-    /** Opens the demo on the event thread for tests: the window, built and shown. */
-    static DemoWindow openForTest(SceneAsset scene, ViewSettings settings, int threads) throws Exception {
-        DemoState state = new DemoState(scene);
-        state.settings(settings);
+    /** Opens the demo on the event thread for tests: the window, built and shown, with the demo's look. */
+    static DemoWindow openForTest(SceneAsset scene, int threads) throws Exception {
         AtomicReference<DemoWindow> window = new AtomicReference<>();
         SwingUtilities.invokeAndWait(() -> {
             FlatDarkLaf.setup();
-            DemoWindow w = new DemoWindow(state, threads);
+            DemoWindow w = new DemoWindow(scene, threads);
             w.start();
             window.set(w);
         });

@@ -1,10 +1,12 @@
 package dev.trisect.ui;
 
 import dev.trisect.base.JsonObject;
-import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.RenderMode;
 import dev.trisect.tessellate.SplitPolicy;
+import dev.trisect.view.FrameInfo;
+import dev.trisect.view.ViewAction;
 import java.awt.Frame;
+import java.awt.event.KeyEvent;
 import java.awt.event.WindowEvent;
 import java.io.IOException;
 import java.lang.management.ManagementFactory;
@@ -33,6 +35,7 @@ import javax.swing.SwingUtilities;
  * <li>counts uncaught exceptions on any thread (there should be none).</li>
  * </ul>
  * Frame rates, heap and latency are measured and reported, not asserted: they depend on the machine.
+ * It drives the view as a program or a user would: its public methods, its actions, key events.
  */
 final class SoakRun {
     private final DemoWindow window;
@@ -42,8 +45,12 @@ final class SoakRun {
     private final List<String> exceptionLines = new ArrayList<>();
     private final Random random = new Random(20261121);
 
+    /** The render settings every checkpoint returns to: those the demo opened with, tessellated. */
+    private final dev.trisect.pipeline.RenderSettings standard;
+
     SoakRun(DemoWindow window, int seconds, Path report) {
         this.window = window;
+        this.standard = window.view().getRenderSettings().withMode(RenderMode.TESSELLATED);
         this.seconds = seconds;
         this.report = report;
     }
@@ -58,12 +65,12 @@ final class SoakRun {
         JsonObject out = new JsonObject();
         onEdt(w -> w.frame().setSize(w.frame().getWidth(), w.frame().getHeight()));
         Thread.sleep(1500);
-        FrameSlot first = onEdtGet(w -> w.view().front());
+        FrameInfo first = window.latest();
         out.put("frame_size", first == null ? "none" : first.width() + "x" + first.height());
-        out.put("render_threads", window.loop().threads());
+        out.put("render_threads", window.view().getRenderThreads());
         // Let the JIT compile every path's loops before anything is measured.
         for (RenderMode m : RenderMode.values()) {
-            onEdt(w -> w.selectMode(m));
+            onEdt(w -> w.render(r -> r.withMode(m)));
             Thread.sleep(2500);
         }
         out.put("fps_dev_tools_closed", pathRates(false));
@@ -74,9 +81,9 @@ final class SoakRun {
         synchronized (exceptionLines) {
             out.put("exception_messages", new ArrayList<>(exceptionLines.subList(0, Math.min(5, exceptionLines.size()))));
         }
-        long framesBefore = window.state().progress().frames();
+        long framesBefore = frames();
         Thread.sleep(1000);
-        boolean rendering = window.state().progress().frames() > framesBefore;
+        boolean rendering = frames() > framesBefore;
         out.put("still_rendering", rendering);
         onEdt(w -> w.frame().dispatchEvent(new WindowEvent(w.frame(), WindowEvent.WINDOW_CLOSING)));
         String json = out.toString();
@@ -93,19 +100,15 @@ final class SoakRun {
 
     /** Frames per second of each path, 2 s to settle then 8 s measured. */
     private JsonObject pathRates(boolean devTools) throws Exception {
-        onEdt(w -> {
-            if (w.devToolsCommand.selected() != devTools) {
-                w.devToolsCommand.actionPerformed(null);
-            }
-        });
+        onEdt(w -> w.view().showDevTools(devTools));
         JsonObject rates = new JsonObject();
         for (RenderMode m : RenderMode.values()) {
-            onEdt(w -> w.selectMode(m));
+            onEdt(w -> w.render(r -> r.withMode(m)));
             Thread.sleep(2000);
-            long f0 = window.state().progress().frames();
+            long f0 = frames();
             long t0 = System.nanoTime();
             Thread.sleep(8000);
-            long f1 = window.state().progress().frames();
+            long f1 = frames();
             rates.put(m.id(), round((f1 - f0) * 1e9 / (System.nanoTime() - t0)));
         }
         return rates;
@@ -144,7 +147,7 @@ final class SoakRun {
         long start = System.nanoTime();
         long nextHeap = start + 15_000_000_000L;
         long nextCheckpoint = start + 60_000_000_000L;
-        long f0 = window.state().progress().frames();
+        long f0 = frames();
         int actions = 0;
         while (System.nanoTime() - start < seconds * 1_000_000_000L) {
             act(actions++);
@@ -164,7 +167,7 @@ final class SoakRun {
         double elapsed = (System.nanoTime() - start) / 1e9;
         out.put("soak_seconds", round(elapsed));
         out.put("actions", actions);
-        out.put("frames_during_soak", window.state().progress().frames() - f0);
+        out.put("frames_during_soak", frames() - f0);
         out.put("heap_checkpoints_mb", checkpoints.stream().map(SoakRun::round).toList());
         out.put("heap_checkpoint_first_mb", round(checkpoints.get(0)));
         out.put("heap_checkpoint_last_mb", round(checkpoints.get(checkpoints.size() - 1)));
@@ -183,18 +186,17 @@ final class SoakRun {
     private void act(int n) throws Exception {
         int choice = random.nextInt(16);
         switch (choice) {
-            case 0 -> onEdt(w -> w.bordersCommand.actionPerformed(null));
-            case 1 -> onEdt(w -> w.selectMode(RenderMode.values()[random.nextInt(3)]));
-            case 2 -> onEdt(w -> w.devToolsCommand.actionPerformed(null));
-            case 3 -> onEdt(w -> w.update(s -> s.withRender(s.render().withTessellation(s.render().tessellation()
-                    .withPolicy(random.nextBoolean() ? SplitPolicy.EDGE : SplitPolicy.ERROR)))));
-            case 4 -> onEdt(w -> w.update(s -> s.withRender(s.render().withTessellation(s.render().tessellation()
-                    .withMaxEdge(2 + random.nextInt(120))))));
-            case 5 -> onEdt(w -> w.update(s -> s.withRender(s.render().withTessellation(s.render().tessellation()
-                    .withMaxError(SplitPolicySection.sliderToError(random.nextInt(1001)))))));
-            case 6 -> onEdt(w -> w.update(s -> s.withView(ViewKind.values()[random.nextInt(3)])
-                    .withSplitFraction(random.nextDouble())));
-            case 7 -> onEdt(w -> w.update(s -> s.withRenderScale(0.25 + 0.75 * random.nextDouble())));
+            case 0 -> perform(ViewAction.BORDERS);
+            case 1 -> onEdt(w -> w.render(r -> r.withMode(RenderMode.values()[random.nextInt(3)])));
+            case 2 -> perform(ViewAction.DEV_TOOLS);
+            case 3 -> onEdt(w -> w.render(r -> r.withTessellation(r.tessellation()
+                    .withPolicy(random.nextBoolean() ? SplitPolicy.EDGE : SplitPolicy.ERROR))));
+            case 4 -> onEdt(w -> w.render(r -> r.withTessellation(r.tessellation().withMaxEdge(2 + random.nextInt(120)))));
+            case 5 -> onEdt(w -> w.render(r -> r.withTessellation(r.tessellation()
+                    .withMaxError(0.05 * Math.pow(160, random.nextDouble())))));
+            case 6 -> perform(new ViewAction[] {ViewAction.SHOW_IMAGE, ViewAction.SHOW_DIFFERENCE,
+                ViewAction.SHOW_SPLIT}[random.nextInt(3)]);
+            case 7 -> onEdt(w -> w.view().setRenderScale(0.25 + 0.75 * random.nextDouble()));
             case 8 -> onEdt(w -> {
                 int[][] sizes = {{80, 60}, {16, 12}, {1296, 800}, {2000, 1300}, {640, 480}, {300, 900}};
                 int[] size = sizes[random.nextInt(sizes.length)];
@@ -205,24 +207,55 @@ final class SoakRun {
                 Thread.sleep(400);
                 onEdt(w -> w.frame().setExtendedState(Frame.NORMAL));
             }
-            case 10 -> onEdt(w -> w.orbitCommand.actionPerformed(null));
-            case 11 -> onEdt(w -> w.resetCommand.actionPerformed(null));
+            case 10 -> perform(ViewAction.AUTO_ORBIT);
+            case 11 -> perform(ViewAction.RESET_CAMERA);
             case 12 -> {
-                int key = new int[] {InputState.FORWARD, InputState.LEFT, InputState.BACK, InputState.RIGHT}[n % 4];
-                window.state().input.press(key);
+                int key = new int[] {KeyEvent.VK_W, KeyEvent.VK_A, KeyEvent.VK_S, KeyEvent.VK_D}[n % 4];
+                key(KeyEvent.KEY_PRESSED, key);
                 Thread.sleep(200);
-                window.state().input.release(key);
+                key(KeyEvent.KEY_RELEASED, key);
             }
-            case 13 -> window.state().input.drag(random.nextInt(41) - 20, random.nextInt(21) - 10);
+            case 13 -> onEdt(w -> {
+                // A drag, as the mouse makes one.
+                int x = w.view().getWidth() / 2;
+                int y = w.view().getHeight() / 2;
+                mouse(w, java.awt.event.MouseEvent.MOUSE_PRESSED, x, y);
+                mouse(w, java.awt.event.MouseEvent.MOUSE_DRAGGED, x + random.nextInt(41) - 20, y + random.nextInt(21) - 10);
+                mouse(w, java.awt.event.MouseEvent.MOUSE_RELEASED, x, y);
+            });
             case 14 -> onEdt(w -> {
                 // Close the developer tools in the middle of whatever frame is being drawn.
-                if (w.devTools() != null && w.devTools().isVisible()) {
-                    w.devTools().dispatchEvent(new WindowEvent(w.devTools(), WindowEvent.WINDOW_CLOSING));
+                for (java.awt.Window d : java.awt.Window.getWindows()) {
+                    if (d instanceof javax.swing.JDialog dialog && "Developer tools".equals(dialog.getTitle())
+                            && d.isVisible()) {
+                        d.dispatchEvent(new WindowEvent(d, WindowEvent.WINDOW_CLOSING));
+                    }
                 }
             });
-            default -> onEdt(w -> w.update(s -> s.withRender(s.render().withTessellation(s.render().tessellation()
-                    .withMaxDepth(random.nextInt(25))))));
+            default -> onEdt(w -> w.render(r -> r.withTessellation(r.tessellation().withMaxDepth(random.nextInt(25)))));
         }
+    }
+
+    private void perform(ViewAction a) throws Exception {
+        onEdt(w -> w.view().action(a).actionPerformed(new java.awt.event.ActionEvent(w.view(), 0, "soak")));
+    }
+
+    /** A key event delivered to the view as the keyboard would. */
+    private void key(int id, int code) throws Exception {
+        onEdt(w -> w.view().dispatchEvent(new KeyEvent(w.view(), id, System.currentTimeMillis(), 0, code,
+                KeyEvent.CHAR_UNDEFINED)));
+    }
+
+    private static void mouse(DemoWindow w, int id, int x, int y) {
+        int mask = id == java.awt.event.MouseEvent.MOUSE_RELEASED ? 0 : java.awt.event.InputEvent.BUTTON1_DOWN_MASK;
+        w.view().dispatchEvent(new java.awt.event.MouseEvent(w.view(), id, System.currentTimeMillis(), mask, x, y, 1,
+                false, java.awt.event.MouseEvent.BUTTON1));
+    }
+
+    /** Frames the view has drawn so far. */
+    private long frames() {
+        FrameInfo f = window.latest();
+        return f == null ? 0 : f.number();
     }
 
     /** The standard state, a moment to settle, then the heap after a full collection. */
@@ -230,34 +263,39 @@ final class SoakRun {
         onEdt(w -> {
             w.frame().setExtendedState(Frame.NORMAL);
             w.frame().setSize(STANDARD_WIDTH, STANDARD_HEIGHT);
-            if (w.devToolsCommand.selected()) {
-                w.devToolsCommand.actionPerformed(null);
+            w.view().showDevTools(false);
+            if (Boolean.TRUE.equals(w.view().action(ViewAction.AUTO_ORBIT).getValue(javax.swing.Action.SELECTED_KEY))) {
+                w.view().action(ViewAction.AUTO_ORBIT).actionPerformed(null);
             }
-            if (w.orbitCommand.selected()) {
-                w.orbitCommand.actionPerformed(null);
-            }
-            w.update(s -> ViewSettings.defaults());
-            w.selectMode(RenderMode.TESSELLATED);
+            w.view().setRenderScale(1);
+            w.render(r -> standard);
         });
         // Settled means: frames of the standard size are on screen, and well over the renderer's trim
-        // window of ordinary frames has passed since (so no buffer of an earlier state is still held).
+        // window of ordinary frames (60) has passed since (so no buffer of an earlier state is still held).
         long deadline = System.currentTimeMillis() + 20_000;
         long settledFrom = -1;
         while (System.currentTimeMillis() < deadline) {
             Thread.sleep(100);
-            FrameSlot front = onEdtGet(w -> w.view().front());
-            boolean standard = front != null && front.view == ViewKind.IMAGE
-                    && onEdtGet(w -> front.width() == w.state().viewWidth() && front.height() == w.state().viewHeight());
+            FrameInfo f = window.latest();
+            boolean standard = f != null && onEdtGet(w -> {
+                double scale = w.view().getGraphicsConfiguration() == null ? 1
+                        : w.view().getGraphicsConfiguration().getDefaultTransform().getScaleX();
+                return f.width() == (int) Math.round(w.view().getWidth() * scale)
+                        && f.height() == (int) Math.round(w.view().getHeight() * scale);
+            });
             if (!standard) {
                 settledFrom = -1;
             } else if (settledFrom < 0) {
-                settledFrom = front.serial;
-            } else if (front.serial - settledFrom > 3 * FrameRenderer.TRIM_FRAMES) {
+                settledFrom = f.number();
+            } else if (f.number() - settledFrom > SETTLE_FRAMES) {
                 break;
             }
         }
         return heapAfterGc();
     }
+
+    /** Frames a checkpoint waits: three times the renderer's trim window of 60 frames. */
+    private static final int SETTLE_FRAMES = 180;
 
     /** Least-squares slope per sample interval (one minute between checkpoints). */
     private static double slope(List<Double> y) {

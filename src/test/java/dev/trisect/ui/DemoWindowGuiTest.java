@@ -6,10 +6,22 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.cli.Cli;
+import dev.trisect.devtools.CliArgs;
+import dev.trisect.devtools.CompareSection;
+import dev.trisect.devtools.DevToolsDialog;
+import dev.trisect.devtools.DevToolsPanel;
 import dev.trisect.metrics.Comparison;
 import dev.trisect.pipeline.RenderMode;
 import dev.trisect.content.DemoScenes;
 import dev.trisect.texture.TextureFilter;
+import dev.trisect.view.ViewAction;
+import dev.trisect.view.internal.Command;
+import dev.trisect.view.internal.FrameSlot;
+import dev.trisect.view.internal.ViewController;
+import dev.trisect.view.internal.ViewKind;
+import dev.trisect.view.internal.ViewMouse;
+import dev.trisect.view.internal.ViewSettings;
+import dev.trisect.view.internal.ViewState;
 import java.awt.GraphicsEnvironment;
 import java.awt.Robot;
 import java.awt.Window;
@@ -60,11 +72,11 @@ class DemoWindowGuiTest {
                     + "(e.g. Xvfb :99 & export DISPLAY=:99)");
             return;
         }
-        window = DemoApp.openForTest(DemoScenes.demo(), ViewSettings.defaults(), 2);
+        window = DemoApp.openForTest(DemoScenes.demo(), 2);
         robot = new Robot();
         robot.setAutoDelay(20);
         // Without a window manager the window has no keyboard until clicked.
-        waitFor("the first frame", () -> onEdt(() -> window.view().front() != null));
+        waitFor("the first frame", () -> onEdt(() -> front() != null));
         var at = onEdt(() -> window.view().getLocationOnScreen());
         robot.mouseMove(at.x + 300, at.y + 200);
         robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
@@ -87,6 +99,33 @@ class DemoWindowGuiTest {
         if (window != null) {
             SwingUtilities.invokeAndWait(() -> window.frame().dispose());
         }
+    }
+
+    /** The view's engine room (not API: the test looks inside). */
+    private static ViewController c() {
+        return (ViewController) window.view().getClientProperty(ViewController.class);
+    }
+
+    private static ViewState state() {
+        return c().state();
+    }
+
+    /** The frame on screen. Event thread. */
+    private static FrameSlot front() {
+        return c().front();
+    }
+
+    private static Command cmd(ViewAction a) {
+        return (Command) window.view().action(a);
+    }
+
+    private static ViewMouse mouse() {
+        return (ViewMouse) window.view().getClientProperty(ViewMouse.class);
+    }
+
+    /** The developer tools in their window. Event thread. */
+    private static DevToolsPanel tools() {
+        return ((DevToolsDialog) devToolsWindow()).panel();
     }
 
     private static <T> T onEdt(Callable<T> task) throws Exception {
@@ -127,13 +166,13 @@ class DemoWindowGuiTest {
 
     /** Pixels of a frame drawn after now, with the settings in force now. */
     private static int[] freshFrame() throws Exception {
-        long after = onEdt(() -> window.view().front().serial) + 2;
-        ViewSettings wanted = window.state().settings();
-        waitFor("a new frame", () -> onEdt(() -> window.view().front().serial > after)
-                && window.state().settings() == wanted);
-        long serial = onEdt(() -> window.view().front().serial) + 1;
-        waitFor("one more frame", () -> onEdt(() -> window.view().front().serial >= serial));
-        return onEdt(() -> window.view().front().frame.color().clone());
+        long after = onEdt(() -> front().serial) + 2;
+        ViewSettings wanted = state().settings();
+        waitFor("a new frame", () -> onEdt(() -> front().serial > after)
+                && state().settings() == wanted);
+        long serial = onEdt(() -> front().serial) + 1;
+        waitFor("one more frame", () -> onEdt(() -> front().serial >= serial));
+        return onEdt(() -> front().frame.color().clone());
     }
 
     private static int yellow(int[] pixels) {
@@ -179,15 +218,15 @@ class DemoWindowGuiTest {
     void bAddsTheYellowOverlayAndTakesItAway() throws Exception {
         int before = yellow(freshFrame());
         press(KeyEvent.VK_B);
-        waitFor("borders on", () -> window.state().settings().render().borders());
+        waitFor("borders on", () -> state().settings().render().borders());
         int with = yellow(freshFrame());
         press(KeyEvent.VK_B);
-        waitFor("borders off", () -> !window.state().settings().render().borders());
+        waitFor("borders off", () -> !state().settings().render().borders());
         int after = yellow(freshFrame());
         assertEquals(0, before);
         assertTrue(with > 2000, "yellow piece outlines: " + with);
         assertEquals(0, after);
-        assertTrue(onEdt(() -> !window.bordersCommand.selected()), "the menu and the dev tools show it off");
+        assertTrue(onEdt(() -> !cmd(ViewAction.BORDERS).selected()), "the menu and the dev tools show it off");
     }
 
     @Test
@@ -197,9 +236,9 @@ class DemoWindowGuiTest {
         int[] keys = {KeyEvent.VK_1, KeyEvent.VK_2, KeyEvent.VK_3};
         for (RenderMode m : RenderMode.values()) {
             press(keys[m.ordinal()]);
-            waitFor(m.id(), () -> window.state().settings().render().mode() == m);
+            waitFor(m.id(), () -> state().settings().render().mode() == m);
             frames[m.ordinal()] = freshFrame();
-            assertTrue(onEdt(() -> window.modeCommands.get(m.ordinal()).selected()), "the Render menu follows");
+            assertTrue(onEdt(() -> c().commands().modes.get(m.ordinal()).selected()), "the Render menu follows");
         }
         assertFalse(Arrays.equals(frames[0], frames[1]), "affine differs from perspective");
         assertFalse(Arrays.equals(frames[1], frames[2]), "tessellated differs from affine");
@@ -218,15 +257,15 @@ class DemoWindowGuiTest {
     @Test
     @Order(4)
     void fStepsTheTextureFilterFromTrilinear() throws Exception {
-        assertEquals(TextureFilter.TRILINEAR, window.state().settings().render().filter(), "the demo opens trilinear");
+        assertEquals(TextureFilter.TRILINEAR, state().settings().render().filter(), "the demo opens trilinear");
         TextureFilter[] order = {TextureFilter.NEAREST, TextureFilter.BILINEAR, TextureFilter.TRILINEAR};
         int[][] frames = new int[3][];
         for (int i = 0; i < 3; i++) {
             TextureFilter f = order[i];
             press(KeyEvent.VK_F);
-            waitFor(f.id(), () -> window.state().settings().render().filter() == f);
+            waitFor(f.id(), () -> state().settings().render().filter() == f);
             frames[i] = freshFrame();
-            assertEquals("Texture filter: " + f.id(), onEdt(() -> window.filterCommand.getValue(Action.NAME)),
+            assertEquals("Texture filter: " + f.id(), onEdt(() -> cmd(ViewAction.TEXTURE_FILTER).getValue(Action.NAME)),
                     "the View menu entry names the filter");
         }
         assertFalse(Arrays.equals(frames[0], frames[1]), "bilinear differs from nearest");
@@ -243,21 +282,21 @@ class DemoWindowGuiTest {
     @Order(5)
     void comparisonNumbersAppearAndAgreeWithTheCommandLine() throws Exception {
         press(KeyEvent.VK_3);
-        ViewSettings now = window.state().settings();
+        ViewSettings now = state().settings();
         waitFor("a measurement of the current settings", () -> {
-            DemoState.Measurement m = window.state().measurement();
+            ViewState.Measurement m = state().measurement();
             return m != null && m.settings().equals(now);
         });
-        DemoState.Measurement m = window.state().measurement();
+        ViewState.Measurement m = state().measurement();
         Comparison c = m.comparison();
         waitFor("the readouts", () -> onEdt(() -> String.format(Locale.ROOT, "%.3f px", c.maxDisplacement())
-                .equals(window.devTools().readout("Max displacement"))));
-        String p99 = onEdt(() -> window.devTools().readout("p99 displacement"));
+                .equals(tools().readout("Max displacement"))));
+        String p99 = onEdt(() -> tools().readout("p99 displacement"));
         assertEquals(String.format(Locale.ROOT, "%.3f px", c.p99Displacement()), p99);
         assertEquals(String.format(Locale.ROOT, "%.3f px", c.meanDisplacement()),
-                onEdt(() -> window.devTools().readout("Mean displacement")));
-        assertNotNull(onEdt(() -> window.devTools().readout("PSNR")));
-        List<String> args = CliArgs.compare(window.state().scene(), m);
+                onEdt(() -> tools().readout("Mean displacement")));
+        assertNotNull(onEdt(() -> tools().readout("PSNR")));
+        List<String> args = CliArgs.compare(state().scene(), m);
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();
         assertEquals(0, Cli.run(new PrintWriter(out, true), new PrintWriter(err, true), args.toArray(String[]::new)),
@@ -284,16 +323,16 @@ class DemoWindowGuiTest {
             SwingUtilities.invokeAndWait(() -> window.frame().setExtendedState(java.awt.Frame.ICONIFIED));
             Thread.sleep(300);
             SwingUtilities.invokeAndWait(() -> window.frame().setExtendedState(java.awt.Frame.NORMAL));
-            long before = window.state().progress().frames();
-            waitFor("frames after restoring", () -> window.state().progress().frames() > before + 3);
+            long before = state().progress().frames();
+            waitFor("frames after restoring", () -> state().progress().frames() > before + 3);
             SwingUtilities.invokeAndWait(() -> {
                 JDialog d = devToolsWindow();
                 if (d != null) {
                     d.dispatchEvent(new java.awt.event.WindowEvent(d, java.awt.event.WindowEvent.WINDOW_CLOSING));
                 }
             });
-            waitFor("frames after closing the tools", () -> window.state().progress().frames() > before + 6);
-            assertFalse(onEdt(() -> window.devToolsCommand.selected()), "F12's state follows the closed window");
+            waitFor("frames after closing the tools", () -> state().progress().frames() > before + 6);
+            assertFalse(onEdt(() -> cmd(ViewAction.DEV_TOOLS).selected()), "F12's state follows the closed window");
         } finally {
             Thread.setDefaultUncaughtExceptionHandler(previous);
         }
@@ -304,35 +343,35 @@ class DemoWindowGuiTest {
     @Order(7)
     void f6ShowsTheDifferenceWithTheToolsAndClosingThemGoesBackToTheImage() throws Exception {
         press(KeyEvent.VK_F6);
-        waitFor("the difference view", () -> window.state().settings().view() == ViewKind.DIFFERENCE);
+        waitFor("the difference view", () -> state().settings().view() == ViewKind.DIFFERENCE);
         waitFor("the developer tools", () -> onEdt(() -> devToolsWindow() != null && devToolsWindow().isShowing()));
         freshFrame();
-        assertEquals(ViewKind.DIFFERENCE, onEdt(() -> window.view().front().view));
+        assertEquals(ViewKind.DIFFERENCE, onEdt(() -> front().view));
         press(KeyEvent.VK_F12);
         waitFor("the tools to close", () -> onEdt(() -> !devToolsWindow().isShowing()));
-        assertEquals(ViewKind.IMAGE, window.state().settings().view(), "no heat map left behind");
+        assertEquals(ViewKind.IMAGE, state().settings().view(), "no heat map left behind");
         freshFrame();
-        assertEquals(ViewKind.IMAGE, onEdt(() -> window.view().front().view));
-        assertTrue(onEdt(() -> window.viewCommands.get(ViewKind.IMAGE.ordinal()).selected()), "the View menu follows");
+        assertEquals(ViewKind.IMAGE, onEdt(() -> front().view));
+        assertTrue(onEdt(() -> c().commands().views.get(ViewKind.IMAGE.ordinal()).selected()), "the View menu follows");
         press(KeyEvent.VK_F7);
-        waitFor("the split view", () -> window.state().settings().view() == ViewKind.SPLIT);
+        waitFor("the split view", () -> state().settings().view() == ViewKind.SPLIT);
         press(KeyEvent.VK_F5);
-        waitFor("the image", () -> window.state().settings().view() == ViewKind.IMAGE);
+        waitFor("the image", () -> state().settings().view() == ViewKind.IMAGE);
     }
 
     @Test
     @Order(8)
     void untickingTheMeasurementGreysTheNumbersAndStopsTheHeatMap() throws Exception {
         press(KeyEvent.VK_F6);
-        waitFor("the difference view with the tools", () -> window.state().settings().view() == ViewKind.DIFFERENCE
+        waitFor("the difference view with the tools", () -> state().settings().view() == ViewKind.DIFFERENCE
                 && onEdt(() -> devToolsWindow() != null && devToolsWindow().isShowing()));
-        CompareSection compare = onEdt(() -> window.devTools().section(CompareSection.class));
+        CompareSection compare = onEdt(() -> tools().section(CompareSection.class));
         waitFor("live numbers", () -> onEdt(() -> compare.live("PSNR")));
         SwingUtilities.invokeAndWait(() -> compare.measureBox().doClick());
-        assertFalse(window.state().settings().compare());
-        assertEquals(ViewKind.IMAGE, window.state().settings().view(), "the heat map stops with the measurement");
+        assertFalse(state().settings().compare());
+        assertEquals(ViewKind.IMAGE, state().settings().view(), "the heat map stops with the measurement");
         waitFor("greyed numbers", () -> onEdt(() -> !compare.live("PSNR") && !compare.live("Max displacement")));
-        assertEquals("\u2014", onEdt(() -> window.devTools().readout("PSNR")));
+        assertEquals("\u2014", onEdt(() -> tools().readout("PSNR")));
         SwingUtilities.invokeAndWait(() -> compare.measureBox().doClick());
         waitFor("live numbers again", () -> onEdt(() -> compare.live("PSNR")));
     }
@@ -341,14 +380,14 @@ class DemoWindowGuiTest {
     @Order(9)
     void theToolsWindowShowsEverySectionOrScrollsByRows() throws Exception {
         JDialog d = onEdt(DemoWindowGuiTest::devToolsWindow);
-        int content = onEdt(() -> window.devTools().scrollPane().getViewport().getView().getPreferredSize().height);
-        int viewport = onEdt(() -> window.devTools().scrollPane().getViewport().getExtentSize().height);
+        int content = onEdt(() -> tools().scrollPane().getViewport().getView().getPreferredSize().height);
+        int viewport = onEdt(() -> tools().scrollPane().getViewport().getExtentSize().height);
         java.awt.Rectangle usable = java.awt.GraphicsEnvironment.getLocalGraphicsEnvironment().getMaximumWindowBounds();
         int room = usable.y + usable.height - onEdt(d::getY);
         assertTrue(viewport >= content || onEdt(d::getHeight) >= room - 1,
                 "all " + content + " px of sections fit, or the window reaches the screen's edge: viewport "
                         + viewport + ", room " + room);
-        assertTrue(onEdt(() -> window.devTools().scrollPane().getVerticalScrollBar().getUnitIncrement()) >= 16);
+        assertTrue(onEdt(() -> tools().scrollPane().getVerticalScrollBar().getUnitIncrement()) >= 16);
     }
 
     @Test
@@ -377,40 +416,40 @@ class DemoWindowGuiTest {
     @Order(11)
     void spaceFreezesPeriodStepsOneFrameAndTheCameraReadoutFollows() throws Exception {
         press(KeyEvent.VK_SPACE);
-        waitFor("frozen", () -> window.state().freeze.frozen());
-        assertTrue(onEdt(() -> window.freezeCommand.selected()), "the View menu shows it");
+        waitFor("frozen", () -> state().freeze.frozen());
+        assertTrue(onEdt(() -> cmd(ViewAction.FREEZE).selected()), "the View menu shows it");
         // A frame already being drawn when Space was pressed still arrives; wait until it is on screen.
         waitFor("the last frame on screen", () -> {
-            long drawn = window.state().progress().frames();
+            long drawn = state().progress().frames();
             Thread.sleep(300);
-            return drawn == window.state().progress().frames() && onEdt(() -> window.view().front().serial) == drawn;
+            return drawn == state().progress().frames() && onEdt(() -> front().serial) == drawn;
         });
-        long held = onEdt(() -> window.view().front().serial);
+        long held = onEdt(() -> front().serial);
         Thread.sleep(400);
-        assertEquals(held, (long) onEdt(() -> window.view().front().serial), "no new frames while frozen");
+        assertEquals(held, (long) onEdt(() -> front().serial), "no new frames while frozen");
         press(KeyEvent.VK_PERIOD);
-        waitFor("one step", () -> onEdt(() -> window.view().front().serial) == held + 1);
+        waitFor("one step", () -> onEdt(() -> front().serial) == held + 1);
         Thread.sleep(300);
-        assertEquals(held + 1, (long) onEdt(() -> window.view().front().serial), "one frame per step");
-        waitFor("the camera readout", () -> onEdt(() -> window.view().front().camera.eye().toString()
-                .equals(window.devTools().readout("Eye"))));
+        assertEquals(held + 1, (long) onEdt(() -> front().serial), "one frame per step");
+        waitFor("the camera readout", () -> onEdt(() -> front().camera.eye().toString()
+                .equals(tools().readout("Eye"))));
         press(KeyEvent.VK_SPACE);
-        waitFor("running again", () -> onEdt(() -> window.view().front().serial) > held + 3);
-        assertFalse(window.state().freeze.frozen());
+        waitFor("running again", () -> onEdt(() -> front().serial) > held + 3);
+        assertFalse(state().freeze.frozen());
     }
 
     @Test
     @Order(12)
     void cCyclesTheBorderColouringAndTurnsTheBordersOn() throws Exception {
-        var start = window.state().settings().render().borderStyle().colouring();
+        var start = state().settings().render().borderStyle().colouring();
         press(KeyEvent.VK_C);
-        waitFor("the next colouring", () -> window.state().settings().render().borderStyle().colouring() != start);
-        assertTrue(window.state().settings().render().borders(), "C shows the borders it colours");
+        waitFor("the next colouring", () -> state().settings().render().borderStyle().colouring() != start);
+        assertTrue(state().settings().render().borders(), "C shows the borders it colours");
         press(KeyEvent.VK_C);
         press(KeyEvent.VK_C);
-        waitFor("back round", () -> window.state().settings().render().borderStyle().colouring() == start);
+        waitFor("back round", () -> state().settings().render().borderStyle().colouring() == start);
         press(KeyEvent.VK_B);
-        waitFor("borders off", () -> !window.state().settings().render().borders());
+        waitFor("borders off", () -> !state().settings().render().borders());
     }
 
     @Test
@@ -421,33 +460,33 @@ class DemoWindowGuiTest {
         int vh = onEdt(() -> window.view().getHeight());
         robot.mouseMove(at.x + vw / 3, at.y + vh / 3);
         press(KeyEvent.VK_I);
-        waitFor("the inspector", () -> onEdt(() -> window.inspectorCommand.selected()) && window.state().inspected() >= 0);
-        waitFor("an inspected frame", () -> onEdt(() -> window.view().front().inspection != null));
+        waitFor("the inspector", () -> onEdt(() -> cmd(ViewAction.PIXEL_INSPECTOR).selected()) && state().inspected() >= 0);
+        waitFor("an inspected frame", () -> onEdt(() -> front().inspection != null));
         robot.mouseMove(at.x + vw / 2, at.y + vh / 2);
-        waitFor("the inspector to follow", () -> onEdt(() -> window.view().front().inspection != null
-                && window.view().front().inspection.x() == (int) ((long) (vw / 2) * window.view().front().width()
+        waitFor("the inspector to follow", () -> onEdt(() -> front().inspection != null
+                && front().inspection.x() == (int) ((long) (vw / 2) * front().width()
                         / vw)));
         robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
         robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
-        waitFor("pinned", () -> onEdt(() -> window.view().pinned()));
-        long pinnedAt = window.state().inspected();
+        waitFor("pinned", () -> onEdt(() -> mouse().pinned()));
+        long pinnedAt = state().inspected();
         robot.mouseMove(at.x + 200, at.y + 200);
         Thread.sleep(300);
-        assertEquals(pinnedAt, window.state().inspected(), "a pinned inspector stays put");
+        assertEquals(pinnedAt, state().inspected(), "a pinned inspector stays put");
         press(KeyEvent.VK_I);
-        waitFor("the inspector off", () -> window.state().inspected() < 0);
+        waitFor("the inspector off", () -> state().inspected() < 0);
     }
 
     @Test
     @Order(14)
     void pSwitchesTheSplitPolicyAndTheMenuNamesIt() throws Exception {
-        var start = window.state().settings().render().tessellation().policy();
+        var start = state().settings().render().tessellation().policy();
         press(KeyEvent.VK_P);
-        waitFor("the other policy", () -> window.state().settings().render().tessellation().policy() != start);
-        String name = onEdt(() -> (String) window.splitPolicyCommand.getValue(javax.swing.Action.NAME));
-        assertTrue(name.endsWith(window.state().settings().render().tessellation().policy().name()
+        waitFor("the other policy", () -> state().settings().render().tessellation().policy() != start);
+        String name = onEdt(() -> (String) cmd(ViewAction.SPLIT_POLICY).getValue(javax.swing.Action.NAME));
+        assertTrue(name.endsWith(state().settings().render().tessellation().policy().name()
                 .toLowerCase(Locale.ROOT)), name);
         press(KeyEvent.VK_P);
-        waitFor("back", () -> window.state().settings().render().tessellation().policy() == start);
+        waitFor("back", () -> state().settings().render().tessellation().policy() == start);
     }
 }

@@ -1,0 +1,79 @@
+package dev.trisect.devtools;
+
+import dev.trisect.view.internal.FrameSlot;
+import dev.trisect.view.internal.ViewController;
+import dev.trisect.view.internal.ViewSettings;
+import dev.trisect.view.internal.ViewState;
+import java.util.Locale;
+import javax.swing.JCheckBox;
+import javax.swing.JComponent;
+import javax.swing.JSpinner;
+import javax.swing.SpinnerNumberModel;
+
+/**
+ * Developer tools: the frame-time budget. "Auto" lets the budget controller choose the tessellated
+ * path's threshold each frame to hold the target frame time, never looser than the threshold set in
+ * the split-policy section (its ceiling); the section shows the threshold it chose.
+ */
+final class BudgetSection implements ToolSection {
+    private final ViewState state;
+    private final ToolsForm form = new ToolsForm("Frame budget");
+    private boolean syncing;
+    private final JCheckBox auto = new JCheckBox("Auto: hold the target frame time");
+    private final JSpinner target = new JSpinner(new SpinnerNumberModel(ViewState.Budget.DEFAULT_TARGET_MS, 1.0,
+            1000.0, 0.5));
+
+    BudgetSection(ViewController owner) {
+        this.state = owner.state();
+        auto.setToolTipText("Adjust the split threshold every frame to hold the target frame time (tessellated "
+                + "path); the max edge or max error set above is the loosest it may go");
+        target.setToolTipText("Frame time to hold, milliseconds of engine time per frame");
+        auto.addActionListener(e -> publish());
+        target.addChangeListener(e -> publish());
+        form.row(auto);
+        form.row(ToolsForm.label("Target ms", target.getToolTipText()), target);
+        form.readouts(new String[][] {
+            {"Chosen threshold", "The threshold the controller chose for the last frame (px); - when off"}});
+        sync(null);
+    }
+
+    private void publish() {
+        if (!syncing) {
+            state.budget(new ViewState.Budget(auto.isSelected(), ((Number) target.getValue()).doubleValue()));
+        }
+    }
+
+    /** Shows the budget in force (the host may have set it). */
+    @Override
+    public void sync(ViewSettings settings) {
+        syncing = true;
+        try {
+            ViewState.Budget b = state.budget();
+            auto.setSelected(b.on());
+            target.setValue(b.targetMs());
+        } finally {
+            syncing = false;
+        }
+    }
+
+    @Override
+    public JComponent component() {
+        return form.panel();
+    }
+
+    @Override
+    public void refresh(ViewState.Progress progress, FrameSlot front, ViewState.Measurement measurement) {
+        double t = state.chosenThreshold();
+        form.set("Chosen threshold", Double.isNaN(t) ? "-" : String.format(Locale.ROOT, "%.3f px", t));
+    }
+
+    @Override
+    public String readout(String name) {
+        return form.get(name);
+    }
+
+    /** The Auto switch, for tests. */
+    JCheckBox autoSwitch() {
+        return auto;
+    }
+}

@@ -1,0 +1,113 @@
+package dev.trisect.devtools;
+
+import dev.trisect.tessellate.SplitPolicy;
+import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.view.internal.ViewController;
+import dev.trisect.view.internal.ViewSettings;
+import java.util.Locale;
+import java.util.function.UnaryOperator;
+import javax.swing.BoxLayout;
+import javax.swing.ButtonGroup;
+import javax.swing.JComponent;
+import javax.swing.JLabel;
+import javax.swing.JPanel;
+import javax.swing.JRadioButton;
+import javax.swing.JSlider;
+
+/** Developer tools: the tessellated path's split policy and its limits. */
+final class SplitPolicySection implements ToolSection {
+    /** Max-error slider: 0..SCALE maps logarithmically onto MIN_ERROR..MAX_ERROR pixels. */
+    private static final int SCALE = 1000;
+    private static final double MIN_ERROR = 0.05;
+    private static final double MAX_ERROR = 8;
+
+    private final ViewController owner;
+    private final ToolsForm form = new ToolsForm("Split policy (tessellated path)");
+    private boolean syncing;
+    private final JRadioButton edgePolicy = new JRadioButton("Edge");
+    private final JRadioButton errorPolicy = new JRadioButton("Error");
+    private final JSlider maxEdge = new JSlider(2, 128, 32);
+    private final JLabel maxEdgeValue = ToolsForm.value();
+    private final JSlider maxError = new JSlider(0, SCALE, errorToSlider(0.5));
+    private final JLabel maxErrorValue = ToolsForm.value();
+    private final JSlider maxDepth = new JSlider(0, 30, 16);
+    private final JLabel maxDepthValue = ToolsForm.value();
+
+    SplitPolicySection(ViewController owner) {
+        this.owner = owner;
+        ButtonGroup group = new ButtonGroup();
+        group.add(edgePolicy);
+        group.add(errorPolicy);
+        edgePolicy.setToolTipText("Split while a piece's longest edge on screen is longer than Max edge");
+        errorPolicy.setToolTipText("Split while an edge's worst affine displacement (Kamen-Shirman bound) exceeds "
+                + "Max error: no pixel is then further than that from the per-pixel path");
+        edgePolicy.addActionListener(e -> setPolicy(SplitPolicy.EDGE));
+        errorPolicy.addActionListener(e -> setPolicy(SplitPolicy.ERROR));
+        maxEdge.setToolTipText("Longest edge a piece may have on screen, in pixels");
+        maxError.setToolTipText("Largest affine displacement allowed, in pixels (logarithmic scale)");
+        maxDepth.setToolTipText("How many times an edge may be halved; an edge at this depth is not split again "
+                + "(the cap is per edge, so it never opens cracks)");
+        ToolsForm.listen(maxEdge, () -> syncing, this::showValues, v -> tessellation(t -> t.withMaxEdge(v)));
+        ToolsForm.listen(maxError, () -> syncing, this::showValues,
+                v -> tessellation(t -> t.withMaxError(sliderToError(v))));
+        ToolsForm.listen(maxDepth, () -> syncing, this::showValues, v -> tessellation(t -> t.withMaxDepth(v)));
+        JPanel policies = new JPanel();
+        policies.setLayout(new BoxLayout(policies, BoxLayout.X_AXIS));
+        policies.add(edgePolicy);
+        policies.add(errorPolicy);
+        form.row(policies);
+        form.row(ToolsForm.label("Max edge", maxEdge.getToolTipText()), maxEdgeValue);
+        form.row(maxEdge);
+        form.row(ToolsForm.label("Max error", maxError.getToolTipText()), maxErrorValue);
+        form.row(maxError);
+        form.row(ToolsForm.label("Max depth", maxDepth.getToolTipText()), maxDepthValue);
+        form.row(maxDepth);
+    }
+
+    @Override
+    public JComponent component() {
+        return form.panel();
+    }
+
+    private void tessellation(UnaryOperator<TessellationSettings> f) {
+        owner.update(s -> s.withRender(s.render().withTessellation(f.apply(s.render().tessellation()))));
+    }
+
+    private void setPolicy(SplitPolicy policy) {
+        if (!syncing) {
+            tessellation(t -> t.withPolicy(policy));
+        }
+    }
+
+    static int errorToSlider(double px) {
+        return (int) Math.round(SCALE * Math.log(px / MIN_ERROR) / Math.log(MAX_ERROR / MIN_ERROR));
+    }
+
+    static double sliderToError(int v) {
+        return MIN_ERROR * Math.pow(MAX_ERROR / MIN_ERROR, (double) v / SCALE);
+    }
+
+    @Override
+    public void sync(ViewSettings s) {
+        syncing = true;
+        try {
+            TessellationSettings t = s.render().tessellation();
+            edgePolicy.setSelected(t.policy() == SplitPolicy.EDGE);
+            errorPolicy.setSelected(t.policy() == SplitPolicy.ERROR);
+            maxEdge.setValue((int) Math.round(t.maxEdge()));
+            maxError.setValue(errorToSlider(t.maxError()));
+            maxDepth.setValue(t.maxDepth());
+            maxEdge.setEnabled(t.policy() == SplitPolicy.EDGE);
+            maxError.setEnabled(t.policy() == SplitPolicy.ERROR);
+            showValues();
+        } finally {
+            syncing = false;
+        }
+    }
+
+    private void showValues() {
+        maxEdgeValue.setText(maxEdge.getValue() + " px");
+        maxErrorValue.setText(String.format(Locale.ROOT, "%.2f px", sliderToError(maxError.getValue())));
+        maxDepthValue.setText(Integer.toString(maxDepth.getValue()));
+    }
+}

@@ -1,0 +1,483 @@
+package dev.trisect.view;
+
+import dev.trisect.devtools.DevToolsDialog;
+import dev.trisect.devtools.DevToolsPanel;
+import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.scene.Camera;
+import dev.trisect.content.SceneAsset;
+import dev.trisect.view.internal.FramePainter;
+import dev.trisect.view.internal.FrameReport;
+import dev.trisect.view.internal.FrameSlot;
+import dev.trisect.view.internal.InputState;
+import dev.trisect.view.internal.ViewController;
+import dev.trisect.view.internal.ViewMouse;
+import dev.trisect.view.internal.ViewState;
+import java.awt.Dimension;
+import java.awt.Graphics;
+import java.awt.Graphics2D;
+import java.awt.Window;
+import java.awt.event.ActionEvent;
+import java.awt.event.ComponentAdapter;
+import java.awt.event.ComponentEvent;
+import java.awt.event.FocusAdapter;
+import java.awt.event.FocusEvent;
+import java.awt.event.HierarchyEvent;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
+import java.awt.image.BufferedImage;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Objects;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.function.Consumer;
+import javax.swing.AbstractAction;
+import javax.swing.Action;
+import javax.swing.ActionMap;
+import javax.swing.InputMap;
+import javax.swing.JComponent;
+import javax.swing.KeyStroke;
+import javax.swing.SwingUtilities;
+
+/**
+ * A Swing component that shows a scene and renders it continuously on a thread of its own.
+ *
+ * <pre>{@code
+ * TrisectView view = new TrisectView(scene);
+ * view.setCamera(Camera.looking(new Vec3(3, 2, 4), Vec3.ZERO));
+ * frame.add(view);                       // rendering starts when it is shown
+ * view.addFrameListener(f -> System.out.println(f.framesPerSecond() + " fps"));
+ * }</pre>
+ *
+ * <p><b>Threads.</b> Build it, add it and call its Swing methods on the event thread, as with any
+ * component. The setters of what it shows — scene, camera, render settings, render scale, camera
+ * controls, frame-time target — may be called from any thread at any time; each takes effect from
+ * the next frame. The render thread starts when the view is added to a shown window and stops when
+ * it is removed from it or {@link #close closed}; it draws into frames of its own and hands them to
+ * the event thread without tearing, at the screen's device pixels on HiDPI displays.
+ *
+ * <p><b>Input.</b> Its built-in {@link CameraControls} fly (the default) or orbit the camera, or
+ * stay out of the way. Its commands ({@link ViewAction}: the texturing path, the polygon borders,
+ * the developer tools on F12, ...) are Swing actions bound to keys in its {@code WHEN_FOCUSED} input
+ * map; take them with {@link #action} for your menus, and rebind or remove keys through
+ * {@link #getInputMap()} as with any component. A click in the view gives it the keyboard.
+ *
+ * <p><b>Developer tools.</b> {@link #showDevTools} opens them in a window beside the view's (as F12
+ * does); {@link #createDevToolsPanel} gives them as a panel to place in your own window.
+ */
+public class TrisectView extends JComponent implements AutoCloseable {
+    private static final long serialVersionUID = 1L;
+
+    private final transient ViewState state;
+    private final transient ViewController controller;
+    private final transient ViewMouse mouse;
+    private final transient List<FrameListener> frameListeners = new CopyOnWriteArrayList<>();
+    private final transient List<Action> movement = new ArrayList<>();
+    private transient DevToolsDialog devTools;
+    private transient Window window;
+    private final transient WindowAdapter windowWatcher = new WindowAdapter() {
+        @Override
+        public void windowIconified(WindowEvent e) {
+            state.viewSize(0, 0);
+        }
+
+        @Override
+        public void windowDeiconified(WindowEvent e) {
+            publishSize();
+        }
+
+        @Override
+        public void windowDeactivated(WindowEvent e) {
+            // Key releases that happen elsewhere would never reach us: stop moving.
+            state.input.releaseAll();
+        }
+    };
+    private volatile boolean closed;
+
+    /** A view of {@code scene}, from its own camera, rendering with one thread per processor. */
+    public TrisectView(SceneAsset scene) {
+        this(scene, Runtime.getRuntime().availableProcessors());
+    }
+
+    /**
+     * A view of {@code scene}, from its own camera.
+     *
+     * @param renderThreads threads that fill each frame, 1 to 256
+     */
+    public TrisectView(SceneAsset scene, int renderThreads) {
+        Objects.requireNonNull(scene, "scene");
+        if (renderThreads < 1 || renderThreads > 256) {
+            throw new IllegalArgumentException("render threads must be between 1 and 256, got " + renderThreads);
+        }
+        state = new ViewState(scene);
+        controller = new ViewController(state, new Surface(), renderThreads);
+        mouse = new ViewMouse(this, controller, (x, y) -> { });
+        // The view's engine room, for the developer tools and for tests; not API.
+        putClientProperty(ViewController.class, controller);
+        putClientProperty(ViewMouse.class, mouse);
+        setPreferredSize(new Dimension(800, 600));
+        setOpaque(true);
+        setFocusable(true);
+        bindKeys();
+        addComponentListener(new ComponentAdapter() {
+            @Override
+            public void componentResized(ComponentEvent e) {
+                publishSize();
+            }
+        });
+        addHierarchyListener(e -> {
+            if ((e.getChangeFlags() & HierarchyEvent.SHOWING_CHANGED) != 0) {
+                publishSize();
+            }
+        });
+        addFocusListener(new FocusAdapter() {
+            @Override
+            public void focusLost(FocusEvent e) {
+                state.input.releaseAll();
+            }
+        });
+        controller.addFrameListener(this::frameDone);
+    }
+
+    /** What the controller asks of this component. */
+    private final class Surface implements ViewController.Surface {
+        @Override
+        public void repaint() {
+            TrisectView.this.repaint();
+        }
+
+        @Override
+        public void inspector(boolean on) {
+            mouse.inspector(on);
+        }
+
+        @Override
+        public void showDevTools(boolean on) {
+            showToolsWindow(on);
+        }
+    }
+
+    // ---- What it shows -----------------------------------------------------------------------
+
+    /** Shows {@code scene} from the next frame on; the camera stays where it is. Any thread. */
+    public void setScene(SceneAsset scene) {
+        state.scene(Objects.requireNonNull(scene, "scene"));
+    }
+
+    /** The scene shown. */
+    public SceneAsset getScene() {
+        return state.scene();
+    }
+
+    /**
+     * Puts the camera here from the next frame on; the camera controls move it from there, and R
+     * (reset) brings it back here. Any thread.
+     */
+    public void setCamera(Camera camera) {
+        state.camera(Objects.requireNonNull(camera, "camera"));
+    }
+
+    /** The camera of the newest frame (as the user moved it), or the one just set if it is not drawn yet. */
+    public Camera getCamera() {
+        return state.currentCamera();
+    }
+
+    /**
+     * Draws with these settings from the next frame on: texturing path, split policy, filter,
+     * borders, background... Any thread.
+     */
+    public void setRenderSettings(RenderSettings settings) {
+        Objects.requireNonNull(settings, "settings");
+        state.updateSettings(s -> s.withRender(settings));
+        controller.settingsChangedLater();
+    }
+
+    /**
+     * The settings frames are drawn with. A new view draws tessellated with trilinear filtering on
+     * a sky-blue background, borders off (faded yellow when turned on).
+     */
+    public RenderSettings getRenderSettings() {
+        return state.settings().render();
+    }
+
+    /**
+     * Renders this share of the view's device pixels, and scales the frame up: lower is faster.
+     * Any thread.
+     *
+     * @param scale greater than 0, at most 1 (the default)
+     */
+    public void setRenderScale(double scale) {
+        if (!(scale > 0 && scale <= 1)) {
+            throw new IllegalArgumentException("render scale must be greater than 0 and at most 1, got " + scale);
+        }
+        state.updateSettings(s -> s.withRenderScale(scale));
+        controller.settingsChangedLater();
+    }
+
+    public double getRenderScale() {
+        return state.settings().renderScale();
+    }
+
+    /**
+     * Holds this much engine time per frame by choosing the tessellated path's split threshold each
+     * frame, never looser than the one in the render settings (its ceiling); 0 turns it off (the
+     * default). Any thread.
+     *
+     * @param milliseconds the target, greater than 0 and at most 1000; or 0
+     */
+    public void setFrameTimeTarget(double milliseconds) {
+        if (milliseconds == 0) {
+            state.budget(new ViewState.Budget(false, state.budget().targetMs()));
+        } else if (milliseconds > 0 && milliseconds <= 1000) {
+            state.budget(new ViewState.Budget(true, milliseconds));
+        } else {
+            throw new IllegalArgumentException("frame time target must be between 0 and 1000 milliseconds, got "
+                    + milliseconds);
+        }
+        controller.settingsChangedLater();
+    }
+
+    /** The frame-time target in milliseconds, or 0 when off. */
+    public double getFrameTimeTarget() {
+        ViewState.Budget b = state.budget();
+        return b.on() ? b.targetMs() : 0;
+    }
+
+    /** How the mouse and keys move the camera; {@link CameraControls#NONE} leaves it to the program. Any thread. */
+    public void setCameraControls(CameraControls controls) {
+        state.controls(ViewState.Controls.valueOf(Objects.requireNonNull(controls, "controls").name()));
+        if (SwingUtilities.isEventDispatchThread()) {
+            enableMovement();
+        } else {
+            SwingUtilities.invokeLater(this::enableMovement);
+        }
+    }
+
+    public CameraControls getCameraControls() {
+        return CameraControls.valueOf(state.controls().name());
+    }
+
+    /** Threads that fill each frame. */
+    public int getRenderThreads() {
+        return controller.threads();
+    }
+
+    // ---- What it tells ---------------------------------------------------------------------
+
+    /** Hears about every frame drawn, on the render thread (see {@link FrameListener}). */
+    public void addFrameListener(FrameListener listener) {
+        frameListeners.add(Objects.requireNonNull(listener, "listener"));
+    }
+
+    public void removeFrameListener(FrameListener listener) {
+        frameListeners.remove(listener);
+    }
+
+    /**
+     * Hears one-line messages meant for the user, on the event thread: a frame that could not be
+     * drawn (the view goes on with the next), a command the developer tools copied. A status bar is
+     * a good place for them.
+     */
+    public void addMessageListener(Consumer<String> listener) {
+        controller.addMessageListener(Objects.requireNonNull(listener, "listener"));
+    }
+
+    public void removeMessageListener(Consumer<String> listener) {
+        controller.removeMessageListener(listener);
+    }
+
+    private void frameDone(FrameReport r) {
+        if (frameListeners.isEmpty()) {
+            return;
+        }
+        FrameInfo info = new FrameInfo(r.frame(), r.width(), r.height(), r.camera(), r.settings(), r.stats(),
+                r.frameMs(), r.fps(), r.warning());
+        for (FrameListener l : frameListeners) {
+            l.frameDrawn(info);
+        }
+    }
+
+    /** A copy of the frame on screen (with its borders, without legends), or null before the first. Event thread. */
+    public BufferedImage frameImage() {
+        FrameSlot f = controller.front();
+        if (f == null) {
+            return null;
+        }
+        BufferedImage copy = new BufferedImage(f.width(), f.height(), BufferedImage.TYPE_INT_RGB);
+        copy.setRGB(0, 0, f.width(), f.height(), f.frame.color(), 0, f.width());
+        return copy;
+    }
+
+    // ---- Commands and developer tools -----------------------------------------------------
+
+    /** The view's command {@code which}, to put in a menu or on a button (see {@link ViewAction}). */
+    public Action action(ViewAction which) {
+        return controller.commands().byId(which.id);
+    }
+
+    /** Opens (beside the view's window) or closes the developer tools window, as F12 does. Event thread. */
+    public void showDevTools(boolean on) {
+        controller.showDevTools(on);
+    }
+
+    /** Whether the developer tools window shows. */
+    public boolean isDevToolsShowing() {
+        return devTools != null && devTools.isVisible();
+    }
+
+    /**
+     * The developer tools as a panel to place in your own window (it scrolls; about 420 pixels wide
+     * suits it). Each call makes a new panel; while one shows, the view also measures what it displays,
+     * which costs frame time. Event thread.
+     */
+    public JComponent createDevToolsPanel() {
+        return new DevToolsPanel(controller);
+    }
+
+    private void showToolsWindow(boolean on) {
+        if (on) {
+            if (devTools == null) {
+                devTools = new DevToolsDialog(SwingUtilities.getWindowAncestor(this), controller);
+            }
+            devTools.panel().syncFromSettings();
+            devTools.showBeside(SwingUtilities.getWindowAncestor(this));
+        } else if (devTools != null) {
+            devTools.setVisible(false);
+        }
+    }
+
+    // ---- Life cycle -------------------------------------------------------------------------
+
+    /** Stops rendering for good and closes the developer tools window. Any thread; closing twice does nothing. */
+    @Override
+    public void close() {
+        closed = true;
+        controller.stop();
+        SwingUtilities.invokeLater(this::disposeTools);
+    }
+
+    /** Whether {@link #close} was called. */
+    public boolean isClosed() {
+        return closed;
+    }
+
+    /** Starts the render thread (unless closed): the view is now in a window. */
+    @Override
+    public void addNotify() {
+        super.addNotify();
+        window = SwingUtilities.getWindowAncestor(this);
+        if (window != null) {
+            window.addWindowListener(windowWatcher);
+        }
+        publishSize();
+        if (!closed) {
+            controller.start();
+        }
+    }
+
+    /** Stops the render thread and closes the developer tools window: the view has left its window. */
+    @Override
+    public void removeNotify() {
+        controller.stop();
+        if (window != null) {
+            window.removeWindowListener(windowWatcher);
+            window = null;
+        }
+        disposeTools();
+        state.viewSize(0, 0);
+        super.removeNotify();
+    }
+
+    private void disposeTools() {
+        if (devTools != null) {
+            devTools.dispose();
+            devTools = null;
+            controller.devToolsClosed();
+        }
+    }
+
+    /** Tells the render thread the view's size in device pixels (0 while it does not show). */
+    private void publishSize() {
+        if (!isShowing()) {
+            state.viewSize(0, 0);
+            return;
+        }
+        double scale = getGraphicsConfiguration() == null ? 1
+                : getGraphicsConfiguration().getDefaultTransform().getScaleX();
+        state.viewSize((int) Math.round(getWidth() * scale), (int) Math.round(getHeight() * scale));
+    }
+
+    @Override
+    protected void paintComponent(Graphics g) {
+        FrameSlot front = controller.acquireFront();
+        Graphics2D g2 = (Graphics2D) g.create();
+        try {
+            FramePainter.paint(g2, front, getWidth(), getHeight(), mouse.pinned());
+        } finally {
+            g2.dispose();
+        }
+        if (front != null) {
+            controller.framePainted(front.serial);
+        }
+    }
+
+    // ---- Keys -------------------------------------------------------------------------------
+
+    /** Every command's key, and the movement keys, in the view's WHEN_FOCUSED input map. */
+    private void bindKeys() {
+        InputMap in = getInputMap(WHEN_FOCUSED);
+        ActionMap act = getActionMap();
+        for (ViewAction a : ViewAction.values()) {
+            Action c = action(a);
+            in.put((KeyStroke) c.getValue(Action.ACCELERATOR_KEY), a.id);
+            act.put(a.id, c);
+        }
+        int[][] moves = {
+            {KeyEvent.VK_W, InputState.FORWARD}, {KeyEvent.VK_UP, InputState.FORWARD},
+            {KeyEvent.VK_S, InputState.BACK}, {KeyEvent.VK_DOWN, InputState.BACK},
+            {KeyEvent.VK_A, InputState.LEFT}, {KeyEvent.VK_LEFT, InputState.LEFT},
+            {KeyEvent.VK_D, InputState.RIGHT}, {KeyEvent.VK_RIGHT, InputState.RIGHT},
+            {KeyEvent.VK_E, InputState.UP}, {KeyEvent.VK_PAGE_UP, InputState.UP},
+            {KeyEvent.VK_Q, InputState.DOWN}, {KeyEvent.VK_PAGE_DOWN, InputState.DOWN},
+            {KeyEvent.VK_SHIFT, InputState.FAST}};
+        for (int[] move : moves) {
+            for (int modifiers : new int[] {0, InputEvent.SHIFT_DOWN_MASK}) {
+                String name = "move-" + move[0] + "-" + modifiers;
+                in.put(KeyStroke.getKeyStroke(move[0], modifiers, false), name + "-press");
+                in.put(KeyStroke.getKeyStroke(move[0], modifiers, true), name + "-release");
+                int bit = move[1];
+                act.put(name + "-press", movement(true, bit));
+                act.put(name + "-release", movement(false, bit));
+            }
+        }
+    }
+
+    private Action movement(boolean press, int bit) {
+        Action a = new AbstractAction() {
+            private static final long serialVersionUID = 1L;
+
+            @Override
+            public void actionPerformed(ActionEvent e) {
+                if (press) {
+                    state.input.press(bit);
+                } else {
+                    state.input.release(bit);
+                }
+            }
+        };
+        movement.add(a);
+        return a;
+    }
+
+    /** Movement keys act only with camera controls; without, they are left to the host (a disabled action passes the key on). */
+    private void enableMovement() {
+        boolean on = state.controls() != ViewState.Controls.NONE;
+        if (!on) {
+            state.input.releaseAll();
+        }
+        for (Action a : movement) {
+            a.setEnabled(on);
+        }
+    }
+}

@@ -1,0 +1,124 @@
+package dev.trisect.view.internal;
+
+import dev.trisect.metrics.HeatMap;
+import dev.trisect.metrics.HeatScale;
+import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.raster.BorderStyle;
+import dev.trisect.raster.OverlayColours;
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Font;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+
+/**
+ * Paints a frame into a view: the image scaled to the view (nearest neighbour, so device pixels map
+ * one to one at render scale 1), and over it what the developer tools add — the outline colours'
+ * legend, the pixel inspector, the heat map's legend, the split view's divider. Event thread only.
+ */
+public final class FramePainter {
+    private FramePainter() {
+    }
+
+    /** Paints {@code front} (or a dark grey view before the first frame) into a {@code w x h} view. */
+    public static void paint(Graphics2D g2, FrameSlot front, int w, int h, boolean pinned) {
+        if (front == null) {
+            g2.setColor(Color.DARK_GRAY);
+            g2.fillRect(0, 0, w, h);
+            return;
+        }
+        g2.setRenderingHint(RenderingHints.KEY_INTERPOLATION, RenderingHints.VALUE_INTERPOLATION_NEAREST_NEIGHBOR);
+        g2.drawImage(front.image, 0, 0, w, h, null);
+        if (front.render != null && front.render.borders() && front.view != ViewKind.DIFFERENCE
+                && front.render.borderStyle().colouring() != BorderStyle.Colouring.YELLOW) {
+            paintBorderLegend(g2, front.render, h);
+        }
+        if (front.inspection != null) {
+            InspectorPainter.paint(g2, front, w, h, pinned);
+        }
+        if (front.view == ViewKind.DIFFERENCE) {
+            paintLegend(g2, front.heatScale);
+        } else if (front.view == ViewKind.SPLIT) {
+            paintDivider(g2, (int) Math.round(front.splitFraction * w), h, front.render.mode().id());
+        }
+    }
+
+    private static void paintDivider(Graphics2D g, int x, int h, String left) {
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        g.setColor(new Color(0, 0, 0, 120));
+        g.setStroke(new BasicStroke(3));
+        g.drawLine(x, 0, x, h);
+        g.setColor(Color.WHITE);
+        g.setStroke(new BasicStroke(1));
+        g.drawLine(x, 0, x, h);
+        g.fillOval(x - 6, h / 2 - 6, 12, 12);
+        g.setFont(g.getFont().deriveFont(Font.BOLD, 13f));
+        label(g, left, x - 10 - g.getFontMetrics().stringWidth(left), 22);
+        label(g, "per-pixel", x + 10, 22);
+    }
+
+    private static void paintLegend(Graphics2D g, HeatScale scale) {
+        int x = 14;
+        int y = 14;
+        int barW = 220;
+        int barH = 14;
+        g.setColor(new Color(0, 0, 0, 150));
+        g.fillRoundRect(x - 8, y - 8, barW + 16, barH + 44, 10, 10);
+        for (int i = 0; i < barW; i++) {
+            g.setColor(new Color(HeatMap.colour(scale.pixelsAt((double) i / (barW - 1)), scale)));
+            g.fillRect(x + i, y, 1, barH);
+        }
+        g.setColor(Color.WHITE);
+        g.setFont(g.getFont().deriveFont(11f));
+        g.drawString(HeatScale.number(scale.minPixels()), x, y + barH + 14);
+        if (scale.logarithmic()) {
+            // Decade ticks, so that the log scale reads as one.
+            for (int d = 1; d < HeatScale.DECADES; d++) {
+                int tx = x + (int) Math.round((barW - 1) * (double) d / HeatScale.DECADES);
+                g.drawLine(tx, y + barH, tx, y + barH + 3);
+            }
+        }
+        String end = HeatScale.number(scale.maxPixels()) + " px";
+        g.drawString(end, x + barW - g.getFontMetrics().stringWidth(end), y + barH + 14);
+        g.drawString((scale.logarithmic() ? "log" : "linear") + " displacement vs per-pixel; grey: not comparable",
+                x, y + barH + 29);
+    }
+
+    /** The outline colours' legend, bottom left: the ramp of split depth or of error bound, and fallback. */
+    private static void paintBorderLegend(Graphics2D g, RenderSettings r, int h) {
+        boolean depth = r.borderStyle().colouring() == BorderStyle.Colouring.DEPTH;
+        int maxLevel = r.tessellation().maxDepth();
+        int barW = 220;
+        int x = 14;
+        int y = h - 62;
+        g.setFont(g.getFont().deriveFont(11f));
+        String note = depth ? "fallback (filled per pixel)" : "fallback; yellow = at max error, red = above";
+        int boxW = Math.max(barW, 18 + g.getFontMetrics().stringWidth(note)) + 16;
+        g.setColor(new Color(0, 0, 0, 160));
+        g.fillRoundRect(x - 8, y - 8, boxW, 60, 10, 10);
+        for (int i = 0; i < barW; i++) {
+            double f = (double) i / (barW - 1);
+            int c = depth ? OverlayColours.depth((int) Math.round(f * maxLevel), maxLevel)
+                    : OverlayColours.bound(f * 1.25);
+            g.setColor(new Color(c, false));
+            g.fillRect(x + i, y, 1, 12);
+        }
+        g.setColor(Color.WHITE);
+        g.setFont(g.getFont().deriveFont(11f));
+        String left = depth ? "level 0" : "bound 0";
+        String right = depth ? "level " + maxLevel + " (cap)" : "\u2265 1.25\u00d7 max error";
+        g.drawString(left, x, y + 25);
+        g.drawString(right, x + barW - g.getFontMetrics().stringWidth(right), y + 25);
+        g.setColor(new Color(OverlayColours.FALLBACK, false));
+        g.fillRect(x, y + 32, 12, 10);
+        g.setColor(Color.WHITE);
+        g.drawString(note, x + 18, y + 41);
+    }
+
+    private static void label(Graphics2D g, String text, int x, int y) {
+        g.setColor(new Color(0, 0, 0, 140));
+        g.drawString(text, x + 1, y + 1);
+        g.setColor(Color.WHITE);
+        g.drawString(text, x, y);
+    }
+}

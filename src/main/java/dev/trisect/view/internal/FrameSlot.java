@@ -1,0 +1,66 @@
+package dev.trisect.view.internal;
+
+import dev.trisect.metrics.HeatScale;
+import dev.trisect.pipeline.FrameStats;
+import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.scene.Camera;
+import dev.trisect.raster.Framebuffer;
+import java.awt.image.BufferedImage;
+import java.awt.image.DataBufferInt;
+import java.awt.image.DirectColorModel;
+import java.awt.image.Raster;
+import java.awt.image.WritableRaster;
+
+/**
+ * One of the three frames of the triple buffer: the engine's framebuffer, a {@link BufferedImage}
+ * that shows its {@code int[]} directly (no copy, no per-pixel setRGB), and what was drawn into it.
+ */
+public final class FrameSlot {
+    public final Framebuffer frame;
+    public final BufferedImage image;
+    /** Statistics of the frame this slot holds. */
+    public FrameStats stats;
+    /** Time the border overlay took on this frame, drawn after the engine's frame (0 when off). */
+    public long overlayNanos;
+    /** The render settings the user chose for the frame. */
+    public RenderSettings render;
+    /** The render settings the frame was drawn with: the user's, with the budget controller's threshold. */
+    public RenderSettings drawnRender;
+    /** The pixel inspector's reading of this frame, or null when it is off. */
+    public PixelInspector.Inspection inspection;
+    /** Time the inspector took on this frame, nanoseconds. */
+    public long inspectNanos;
+    /** What the view showed when the frame was drawn. */
+    public ViewKind view = ViewKind.IMAGE;
+    /** Split view divider, 0..1 of the width. */
+    public double splitFraction;
+    /** Heat map scale of a difference view. */
+    public HeatScale heatScale;
+    /** Serial number of the frame, counting from 1. */
+    public long serial;
+    /** The camera the frame was drawn with. */
+    public Camera camera;
+
+    public FrameSlot(int width, int height) {
+        frame = new Framebuffer(width, height);
+        int[] pixels = frame.color();
+        // An INT_RGB image over the framebuffer's own array: Java2D blits it on its fast path.
+        DirectColorModel rgb = new DirectColorModel(24, 0xFF0000, 0x00FF00, 0x0000FF);
+        WritableRaster raster = Raster.createPackedRaster(new DataBufferInt(pixels, pixels.length), width, height,
+                width, rgb.getMasks(), null);
+        image = new BufferedImage(rgb, raster, false, null);
+    }
+
+    public int width() {
+        return frame.width();
+    }
+
+    public int height() {
+        return frame.height();
+    }
+
+    /** Whether this slot has the given size. */
+    public boolean is(int width, int height) {
+        return frame.width() == width && frame.height() == height;
+    }
+}

@@ -1,0 +1,113 @@
+package dev.trisect.view.internal;
+
+import dev.trisect.metrics.TexelToScreen;
+import dev.trisect.pipeline.FrameRenderer;
+import dev.trisect.pipeline.PieceInfo;
+import dev.trisect.raster.Framebuffer;
+import dev.trisect.texture.Lod;
+import dev.trisect.texture.MipChain;
+import dev.trisect.texture.Texture;
+import dev.trisect.texture.TextureFilter;
+
+/**
+ * The pixel inspector's numbers for one pixel, read from the renderer's own buffers of the frame just
+ * drawn: this path's UV output and depth, the per-pixel path's UV output, the piece the renderer
+ * filled there, and the exact displacement. Render thread only (it asks the renderer about its last
+ * frame).
+ */
+public final class PixelInspector {
+    private PixelInspector() {
+    }
+
+    /**
+     * What one pixel shows.
+     *
+     * @param x            frame pixel column
+     * @param y            frame pixel row (0 at the top)
+     * @param argb         its colour in this path
+     * @param triangle     input triangle, 0-based, or -1 where nothing was drawn
+     * @param w            view depth, view-space units (1 / the depth buffer's 1/w)
+     * @param s            this path's level-0 texel coordinate s (before wrapping)
+     * @param t            and t
+     * @param refS         the per-pixel path's s at this pixel (NaN if it drew another triangle or none)
+     * @param refT         and t
+     * @param displacement exact displacement of this pixel, pixels (NaN where undefined)
+     * @param piece        the piece filled here, or null
+     * @param lambda       level of detail log2(rho) of this path's texture mapping at the pixel
+     * @param mipLevel     the mipmap level sampled (the lower of the two trilinear blends), 0 without mipmaps
+     * @param texelX       nearest texel on that level, wrapped
+     * @param texelY       and its row
+     */
+    public record Inspection(int x, int y, int argb, int triangle, double w, double s, double t, double refS, double refT,
+                      double displacement, PieceInfo piece, double lambda, int mipLevel, int texelX, int texelY) {
+    }
+
+    /** Inspects pixel (x, y) of {@code frame}, against {@code reference} (the per-pixel path's frame, with UV). */
+    static Inspection inspect(FrameRenderer renderer, Framebuffer frame, Framebuffer reference, TexelToScreen exact,
+                              Texture[] textures, int[] triangleMaterials, TextureFilter filter, boolean perspective,
+                              int x, int y) {
+        int i = y * frame.width() + x;
+        double[] uv = frame.uv();
+        int id = (int) uv[3 * i + 2] - 1;
+        int argb = frame.color()[i];
+        if (id < 0) {
+            return new Inspection(x, y, argb, -1, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN,
+                    Double.NaN, null, Double.NaN, 0, 0, 0);
+        }
+        double q = frame.depth()[i];
+        double s = uv[3 * i];
+        double t = uv[3 * i + 1];
+        double[] ref = reference == null ? null : reference.uv();
+        boolean same = ref != null && (int) ref[3 * i + 2] - 1 == id;
+        double refS = same ? ref[3 * i] : Double.NaN;
+        double refT = same ? ref[3 * i + 1] : Double.NaN;
+        double displacement = exact == null ? Double.NaN : exact.displacement(id, s, t, x, y);
+        PieceInfo piece = renderer.pieceAt(x, y, id, q);
+        double lambda = Double.NaN;
+        if (piece != null) {
+            double[] d = perspective || piece.fallback() ? perspectiveDerivatives(piece, x + 0.5, y + 0.5)
+                    : piece.affineDerivatives();
+            lambda = Lod.lambda(d[0], d[1], d[2], d[3]);
+        }
+        Texture tex = textures[triangleMaterials[id]];
+        MipChain chain = tex.mipChain();
+        int level = 0;
+        if (filter == TextureFilter.TRILINEAR && lambda > 0) {
+            level = (int) Math.min(chain.maxLevel(), Math.floor(lambda));
+        }
+        int tx = Math.floorMod((int) Math.floor(s * chain.scaleS(level)), chain.width(level));
+        int ty = Math.floorMod((int) Math.floor(t * chain.scaleT(level)), chain.height(level));
+        return new Inspection(x, y, argb, id, 1 / q, s, t, refS, refT, displacement, piece, lambda, level, tx, ty);
+    }
+
+    /**
+     * The exact screen derivatives {ds/dx, dt/dx, ds/dy, dt/dy} of a perspective map at (px, py):
+     * s = S / Q with S = s * q, T = t * q and Q = q linear on screen, so ds/dx = (S_x - s Q_x) / Q.
+     */
+    static double[] perspectiveDerivatives(PieceInfo p, double px, double py) {
+        double[] sc = p.screen();
+        double[] a = p.attributes();
+        double[] qPlane = plane(sc, a[0], a[3], a[6]);
+        double[] sPlane = plane(sc, a[1] * a[0], a[4] * a[3], a[7] * a[6]);
+        double[] tPlane = plane(sc, a[2] * a[0], a[5] * a[3], a[8] * a[6]);
+        double dx = px - sc[0];
+        double dy = py - sc[1];
+        double q = qPlane[0] + qPlane[1] * dx + qPlane[2] * dy;
+        double s = (sPlane[0] + sPlane[1] * dx + sPlane[2] * dy) / q;
+        double t = (tPlane[0] + tPlane[1] * dx + tPlane[2] * dy) / q;
+        return new double[] {(sPlane[1] - s * qPlane[1]) / q, (tPlane[1] - t * qPlane[1]) / q,
+            (sPlane[2] - s * qPlane[2]) / q, (tPlane[2] - t * qPlane[2]) / q};
+    }
+
+    /** {value at corner 0, d/dx, d/dy} of the linear function through the corners' values. */
+    private static double[] plane(double[] sc, double v0, double v1, double v2) {
+        double ex1 = sc[2] - sc[0];
+        double ey1 = sc[3] - sc[1];
+        double ex2 = sc[4] - sc[0];
+        double ey2 = sc[5] - sc[1];
+        double det = ex1 * ey2 - ex2 * ey1;
+        double d1 = v1 - v0;
+        double d2 = v2 - v0;
+        return new double[] {v0, (d1 * ey2 - d2 * ey1) / det, (ex1 * d2 - ex2 * d1) / det};
+    }
+}

@@ -1,0 +1,364 @@
+package dev.trisect.view.internal;
+
+import dev.trisect.base.InputException;
+import dev.trisect.math.Mat4;
+import dev.trisect.math.Viewport;
+import dev.trisect.metrics.Comparison;
+import dev.trisect.metrics.HeatMap;
+import dev.trisect.metrics.ImageComparison;
+import dev.trisect.metrics.TexelToScreen;
+import dev.trisect.pipeline.FrameRenderer;
+import dev.trisect.pipeline.FrameStats;
+import dev.trisect.pipeline.RenderMode;
+import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.raster.BorderStyle;
+import dev.trisect.raster.Framebuffer;
+import dev.trisect.scene.Camera;
+import dev.trisect.content.SceneAsset;
+
+/**
+ * The render thread: draws frames continuously into the engine's framebuffers and hands them to the
+ * event thread through a {@link TripleBuffer}. It never touches Swing; it only asks for a repaint.
+ *
+ * <p>Per frame it reads the latest {@link ViewSettings}, moves the camera by the input gathered since
+ * the last frame, draws, and — for the difference and split views, or when a comparison is due (at
+ * least twice a second while the developer tools are open) — also draws the per-pixel path with UV
+ * output and measures the difference.
+ * It then waits until the event thread has shown the frame (at most a short while), so it never
+ * runs more than one frame ahead of the screen nor starves the event thread of processor time.
+ */
+public final class RenderLoop implements Runnable {
+    /** A comparison is due when the last one is this old. */
+    static final long COMPARE_INTERVAL_NANOS = 400_000_000L;
+    /** Longest wait for the event thread to show a frame before drawing the next. */
+    static final long PAINT_WAIT_MILLIS = 40;
+
+    private final ViewState state;
+    private final TripleBuffer buffers;
+    private final Runnable repaint;
+    private final FrameRenderer renderer;
+    private volatile boolean running = true;
+    private final Object paintSignal = new Object();
+    private long painted;
+
+    private FrameSlot back;
+    private Framebuffer reference;
+    /** Frame for timing a path that is neither shown nor the reference. */
+    private Framebuffer scratch;
+    /** Time the last frame spent on the comparison: the per-pixel render, other paths' timing, measuring. */
+    private long compareStageNanos;
+    private float[] displacement;
+    private final CameraDriver cameras;
+    private final BudgetHook budget = new BudgetHook();
+    private volatile LoopListener listener;
+    private long frames;
+    private long lastCompare;
+    private double compareMs;
+
+    /**
+     * What the loop tells its view, on the render thread: each frame drawn, and problems met.
+     */
+    public interface LoopListener {
+        /** A frame has been handed to the screen. */
+        void frameDone(FrameReport report);
+
+        /** A frame could not be drawn; {@code message} is one line. The loop goes on with the next. */
+        void problem(String message);
+    }
+
+    /**
+     * @param state   what the loop shares with the event thread
+     * @param buffers where finished frames go
+     * @param repaint asks the event thread to paint (called on the render thread)
+     * @param threads worker threads of the renderer
+     */
+    public RenderLoop(ViewState state, TripleBuffer buffers, Runnable repaint, int threads) {
+        this.state = state;
+        this.buffers = buffers;
+        this.repaint = repaint;
+        this.renderer = new FrameRenderer(threads);
+        this.cameras = new CameraDriver(state);
+    }
+
+    public int threads() {
+        return renderer.threads();
+    }
+
+    /** Sets who hears about frames and problems (any thread; one listener). */
+    public void listener(LoopListener l) {
+        listener = l;
+    }
+
+    /** Asks the loop to finish its frame and stop; {@link #run} then closes the renderer and returns. */
+    public void stop() {
+        running = false;
+        framePainted(Long.MAX_VALUE);
+    }
+
+    /** Whether {@link #stop} has been called. */
+    public boolean stopping() {
+        return !running;
+    }
+
+    /** The one-line message for a failure: an input error's own, or what went wrong inside. */
+    public static String message(Throwable t) {
+        if (t instanceof InputException ie) {
+            return ie.getMessage();
+        }
+        if (t instanceof OutOfMemoryError) {
+            return "out of memory (lower the render scale, or give Java more with -Xmx)";
+        }
+        return "internal error: " + t;
+    }
+
+    /** Event thread: the frame with this serial number is now on screen. */
+    public void framePainted(long serial) {
+        synchronized (paintSignal) {
+            if (serial > painted) {
+                painted = serial;
+                paintSignal.notifyAll();
+            }
+        }
+    }
+
+    @Override
+    public void run() {
+        long last = System.nanoTime();
+        long secondStart = last;
+        long secondFrames = 0;
+        double fps = 0;
+        try {
+            while (running) {
+                int w = state.viewWidth();
+                int h = state.viewHeight();
+                ViewSettings settings = state.settings();
+                long now = System.nanoTime();
+                double dt = Math.min(0.1, (now - last) / 1e9);
+                last = now;
+                if (w <= 0 || h <= 0) {
+                    // Minimized or not shown yet: nothing to draw.
+                    sleep(50);
+                    continue;
+                }
+                int fw = Math.max(1, (int) Math.round(w * settings.renderScale()));
+                int fh = Math.max(1, (int) Math.round(h * settings.renderScale()));
+                double shrink = Math.sqrt((double) ViewState.MAX_FRAME_PIXELS / ((long) fw * fh));
+                if (shrink < 1) {
+                    fw = Math.max(1, (int) (fw * shrink));
+                    fh = Math.max(1, (int) (fh * shrink));
+                }
+                FreezeGate.Action action = state.freeze.next(settings, ((long) fw << 32) | fh, state.inspected());
+                if (action == FreezeGate.Action.HOLD) {
+                    // Frozen: mouse looks and wheel turns made now must not jump the camera on the next step.
+                    state.input.takeDrag();
+                    state.input.takeWheel();
+                    sleep(15);
+                    continue;
+                }
+                long frameStart = System.nanoTime();
+                try {
+                    drawFrame(settings, fw, fh, action, action == FreezeGate.Action.STEP ? FreezeGate.STEP_SECONDS : dt);
+                } catch (RuntimeException | OutOfMemoryError e) {
+                    // Keep the view alive and say what happened; the next frame starts afresh.
+                    LoopListener l = listener;
+                    if (l != null) {
+                        l.problem("rendering failed: " + message(e));
+                    }
+                    back = null;
+                    reference = null;
+                    sleep(200);
+                    continue;
+                }
+                long serial = back.serial;
+                FrameStats st = back.stats;
+                long overlay = back.overlayNanos;
+                FrameReport report = report(back, settings, (System.nanoTime() - frameStart) / 1e6, fps);
+                long presentStart = System.nanoTime();
+                back = buffers.publish(back);
+                repaint.run();
+                secondFrames++;
+                if (now - secondStart >= 1_000_000_000L) {
+                    fps = secondFrames * 1e9 / (now - secondStart);
+                    secondStart = now;
+                    secondFrames = 0;
+                }
+                state.progress(new ViewState.Progress(frames, fps, compareMs));
+                LoopListener l = listener;
+                if (l != null) {
+                    l.frameDone(report.withFps(fps));
+                }
+                awaitPaint(serial);
+                long end = System.nanoTime();
+                state.frameTimes.add(new double[] {st.transformNanos() / 1e6, st.clipNanos() / 1e6,
+                    st.tessellateNanos() / 1e6, st.rasterNanos() / 1e6, (st.overlayNanos() + overlay) / 1e6,
+                    compareStageNanos / 1e6, (end - presentStart) / 1e6}, (end - frameStart) / 1e6);
+            }
+        } finally {
+            renderer.close();
+        }
+    }
+
+    /** What the listener hears of a frame just drawn into {@code slot}. */
+    private FrameReport report(FrameSlot slot, ViewSettings settings, double frameMs, double fps) {
+        return new FrameReport(slot.serial, slot.width(), slot.height(), slot.camera, slot.drawnRender, slot.stats,
+                frameMs, fps, Warnings.of(slot.stats, state.budget(), state.chosenThreshold(),
+                        settings.render().tessellation()));
+    }
+
+    private void drawFrame(ViewSettings settings, int fw, int fh, FreezeGate.Action action, double dt) {
+        SceneAsset scene = state.scene();
+        Camera camera = cameras.next(action == FreezeGate.Action.REDRAW, dt);
+        long homeSerial = cameras.homeSerial();
+        if (back == null || !back.is(fw, fh)) {
+            back = new FrameSlot(fw, fh);
+        }
+        if (!state.toolsOpen() && settings.view() != ViewKind.IMAGE) {
+            // The comparison views belong to the developer tools: never shown (nor paid for) without them.
+            settings = settings.withView(ViewKind.IMAGE);
+        }
+        long now = System.nanoTime();
+        // Measure only while someone can read the numbers: the developer tools are open.
+        // A frame drawn while frozen is always measured: the numbers must describe the frame on screen.
+        boolean compareDue = settings.compare() && state.toolsOpen()
+                && (action != FreezeGate.Action.RUN || now - lastCompare >= COMPARE_INTERVAL_NANOS);
+        long inspected = state.inspected();
+        boolean needReference = settings.view() != ViewKind.IMAGE || compareDue || inspected >= 0;
+        Framebuffer fb = back.frame;
+        fb.recordUv(needReference);
+        Viewport viewport = new Viewport(fw, fh);
+        Mat4 vp = camera.viewProjection(viewport);
+        var textures = scene.textureArray();
+        long compareStart = System.nanoTime();
+        long perspectiveNanos = 0;
+        double[] paths = null;
+        if (needReference) {
+            if (reference == null || reference.width() != fw || reference.height() != fh) {
+                reference = new Framebuffer(fw, fh);
+                reference.recordUv(true);
+                displacement = new float[fw * fh];
+            }
+            renderer.render(scene.mesh(), textures, vp,
+                    settings.render().withMode(RenderMode.PERSPECTIVE).withBorders(false), reference);
+            perspectiveNanos = System.nanoTime() - compareStart;
+        }
+        if (compareDue) {
+            // Each path's time on this very frame, side by side: the one not drawn anyway is drawn
+            // into scratch, before this path so that the overlay and the inspector see this path's pieces.
+            paths = new double[RenderMode.values().length];
+            paths[RenderMode.PERSPECTIVE.ordinal()] = perspectiveNanos / 1e6;
+            for (RenderMode m : RenderMode.values()) {
+                if (m != RenderMode.PERSPECTIVE && m != settings.render().mode()) {
+                    if (scratch == null || scratch.width() != fw || scratch.height() != fh) {
+                        scratch = new Framebuffer(fw, fh);
+                    }
+                    long t0 = System.nanoTime();
+                    renderer.render(scene.mesh(), textures, vp, settings.render().withMode(m).withBorders(false),
+                            scratch);
+                    paths[m.ordinal()] = (System.nanoTime() - t0) / 1e6;
+                }
+            }
+        }
+        long compareNanos = System.nanoTime() - compareStart;
+        // This path last, so that its pieces are the ones the overlay outlines; the overlay comes after
+        // the comparison, which measures the rendered image and never the borders.
+        RenderSettings render = budget.apply(settings.render(), state.budget());
+        back.stats = renderer.render(scene.mesh(), textures, vp, render.withBorders(false), fb);
+        if (paths != null) {
+            paths[settings.render().mode().ordinal()] = back.stats.totalNanos() / 1e6;
+            state.pathMs(paths);
+        }
+        long afterThisPath = System.nanoTime();
+        state.chosenThreshold(budget.frameDone(back.stats.totalNanos() / 1e6));
+        frames++;
+        back.serial = frames;
+        back.camera = camera;
+        state.drawnWith(camera, homeSerial);
+        back.render = settings.render();
+        back.drawnRender = render;
+        back.view = settings.view();
+        back.splitFraction = settings.splitFraction();
+        back.heatScale = settings.heatScale();
+        if (compareDue) {
+            long t0 = System.nanoTime();
+            // The exact displacement: the loop knows the geometry (maps are built per visible triangle).
+            TexelToScreen exact = new TexelToScreen(scene.mesh(), textures, vp, viewport);
+            Comparison c = ImageComparison.compare(fw, fh, fb.color(), fb.uv(), reference.color(), reference.uv(),
+                    exact, displacement);
+            compareMs = (System.nanoTime() - t0) / 1e6;
+            lastCompare = now;
+            // The settings the frame was drawn with (the budget may have chosen the threshold), so that the
+            // copied compare command reproduces these numbers.
+            state.measurement(new ViewState.Measurement(c, back.serial, camera, settings.withRender(render), fw, fh,
+                    System.nanoTime()));
+        } else if (settings.view() == ViewKind.DIFFERENCE) {
+            // Between measurements the heat map needs only the displacements, at a fraction of the cost.
+            ImageComparison.displacements(fw, fh, fb.uv(), reference.uv(),
+                    new TexelToScreen(scene.mesh(), textures, vp, viewport), displacement);
+        }
+        compareNanos += System.nanoTime() - afterThisPath;
+        back.inspection = null;
+        if (inspected >= 0) {
+            long t0 = System.nanoTime();
+            int ix = (int) (inspected >> 32);
+            int iy = (int) inspected;
+            if (ix < fw && iy < fh) {
+                back.inspection = PixelInspector.inspect(renderer, fb, reference,
+                        new TexelToScreen(scene.mesh(), textures, vp, viewport), textures,
+                        scene.mesh().triangleMaterials(), settings.render().filter(),
+                        settings.render().mode() == RenderMode.PERSPECTIVE, ix, iy);
+            }
+            back.inspectNanos = System.nanoTime() - t0;
+        }
+        compareStageNanos = compareNanos;
+        if (settings.view() == ViewKind.DIFFERENCE) {
+            back.overlayNanos = 0;
+        } else if (settings.render().borders()) {
+            back.overlayNanos = renderer.drawBorders(fb, settings.render().borderStyle(), settings.render().tessellation());
+        } else if (back.stats.piecesFallback() > 0) {
+            // A cap was reached: the status bar says so, and the pieces concerned are outlined even without B.
+            back.overlayNanos = renderer.drawBorders(fb, BorderStyle.fallbackOnly(), settings.render().tessellation());
+        } else {
+            back.overlayNanos = 0;
+        }
+        if (settings.view() == ViewKind.DIFFERENCE) {
+            HeatMap.render(displacement, fb.uv(), reference.uv(), fw, fh, settings.heatScale(), fb.color());
+        } else if (settings.view() == ViewKind.SPLIT) {
+            int divider = (int) Math.round(settings.splitFraction() * fw);
+            if (divider < fw) {
+                int[] dst = fb.color();
+                int[] src = reference.color();
+                for (int y = 0; y < fh; y++) {
+                    System.arraycopy(src, y * fw + divider, dst, y * fw + divider, fw - divider);
+                }
+            }
+        }
+    }
+
+    private void awaitPaint(long serial) {
+        long deadline = System.currentTimeMillis() + PAINT_WAIT_MILLIS;
+        synchronized (paintSignal) {
+            while (running && painted < serial) {
+                long left = deadline - System.currentTimeMillis();
+                if (left <= 0) {
+                    return;
+                }
+                try {
+                    paintSignal.wait(left);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    running = false;
+                    return;
+                }
+            }
+        }
+    }
+
+    private void sleep(long millis) {
+        try {
+            Thread.sleep(millis);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            running = false;
+        }
+    }
+}

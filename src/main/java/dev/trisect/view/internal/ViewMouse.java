@@ -1,0 +1,140 @@
+package dev.trisect.view.internal;
+
+import java.awt.Point;
+import java.awt.event.MouseAdapter;
+import java.awt.event.MouseEvent;
+import java.awt.event.MouseWheelEvent;
+import java.util.function.BiConsumer;
+import javax.swing.JComponent;
+
+/**
+ * A view's mouse: drags turn the camera (or move the split view's divider), the wheel moves it, the
+ * pixel inspector follows the mouse and a click pins it, and a click without a drag is reported (for
+ * picking). Event thread only.
+ */
+public final class ViewMouse extends MouseAdapter {
+    /** Grab distance of the split divider, logical pixels. */
+    private static final int DIVIDER_GRAB = 8;
+
+    private final JComponent view;
+    private final ViewController controller;
+    private final BiConsumer<Integer, Integer> clicked;
+    private int lastX;
+    private int lastY;
+    private boolean draggingDivider;
+    private boolean inspecting;
+    private boolean pinned;
+    private boolean dragged;
+
+    /**
+     * @param view       the component it listens to
+     * @param controller the view's controller
+     * @param clicked    called with the view point (logical pixels) of each click that was not a drag
+     */
+    public ViewMouse(JComponent view, ViewController controller, BiConsumer<Integer, Integer> clicked) {
+        this.view = view;
+        this.controller = controller;
+        this.clicked = clicked;
+        view.addMouseListener(this);
+        view.addMouseMotionListener(this);
+        view.addMouseWheelListener(this);
+    }
+
+    private ViewState state() {
+        return controller.state();
+    }
+
+    private boolean controls() {
+        return state().controls() != ViewState.Controls.NONE;
+    }
+
+    @Override
+    public void mousePressed(MouseEvent e) {
+        dragged = false;
+        lastX = e.getX();
+        lastY = e.getY();
+        draggingDivider = state().settings().view() == ViewKind.SPLIT
+                && Math.abs(e.getX() - dividerX()) <= DIVIDER_GRAB;
+        view.requestFocusInWindow();
+    }
+
+    @Override
+    public void mouseMoved(MouseEvent e) {
+        if (inspecting && !pinned) {
+            inspectAt(e.getX(), e.getY());
+        }
+    }
+
+    @Override
+    public void mouseReleased(MouseEvent e) {
+        if (dragged || draggingDivider) {
+            return;
+        }
+        if (inspecting) {
+            // A click without a drag pins the inspector to this pixel, or lets it follow again.
+            pinned = !pinned;
+            inspectAt(e.getX(), e.getY());
+        }
+        clicked.accept(e.getX(), e.getY());
+    }
+
+    @Override
+    public void mouseDragged(MouseEvent e) {
+        dragged = true;
+        if (draggingDivider) {
+            double f = view.getWidth() == 0 ? 0.5 : (double) e.getX() / view.getWidth();
+            controller.update(s -> s.withSplitFraction(f));
+        } else if (controls()) {
+            state().input.drag(e.getX() - lastX, e.getY() - lastY);
+        }
+        lastX = e.getX();
+        lastY = e.getY();
+    }
+
+    @Override
+    public void mouseWheelMoved(MouseWheelEvent e) {
+        if (controls()) {
+            state().input.wheel(e.getWheelRotation());
+        }
+    }
+
+    /** Turns the pixel inspector on (it follows the mouse; a click pins it) or off. */
+    public void inspector(boolean on) {
+        inspecting = on;
+        pinned = false;
+        if (!on) {
+            state().inspect(-1, -1);
+        } else {
+            Point p = view.getMousePosition();
+            inspectAt(p == null ? view.getWidth() / 2 : p.x, p == null ? view.getHeight() / 2 : p.y);
+        }
+    }
+
+    /** Whether the inspector is pinned to a pixel. */
+    public boolean pinned() {
+        return pinned;
+    }
+
+    /** Points the inspector at the frame pixel under view point (x, y). */
+    public void inspectAt(int x, int y) {
+        FrameSlot f = controller.front();
+        if (f == null || view.getWidth() == 0 || view.getHeight() == 0) {
+            return;
+        }
+        state().inspect(frameX(f, x), frameY(f, y));
+    }
+
+    /** The frame column under view point x (logical pixels). */
+    public int frameX(FrameSlot f, int x) {
+        return Math.max(0, Math.min(f.width() - 1, (int) ((long) x * f.width() / view.getWidth())));
+    }
+
+    /** The frame row under view point y (logical pixels). */
+    public int frameY(FrameSlot f, int y) {
+        return Math.max(0, Math.min(f.height() - 1, (int) ((long) y * f.height() / view.getHeight())));
+    }
+
+    private int dividerX() {
+        return (int) Math.round(state().settings().splitFraction() * view.getWidth());
+    }
+}

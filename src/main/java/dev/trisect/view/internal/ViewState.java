@@ -1,0 +1,207 @@
+package dev.trisect.view.internal;
+
+import dev.trisect.metrics.Comparison;
+import dev.trisect.scene.Camera;
+import dev.trisect.content.SceneAsset;
+
+/**
+ * What the event thread and the render thread of one view share. Each field is an immutable value
+ * behind a volatile reference: one side replaces it, the other reads the latest.
+ */
+public final class ViewState {
+    /** Largest frame the view renders, in pixels, so a huge window cannot exhaust memory. */
+    public static final long MAX_FRAME_PIXELS = 3840L * 2160;
+
+    /** How the user's input moves the camera. */
+    public enum Controls {
+        /** Fly: keys move, drags look around, the wheel raises and lowers. */
+        FLY,
+        /** Orbit round the camera's target: drags turn round it, the wheel and W/S move nearer or further. */
+        ORBIT,
+        /** None: the camera stays where it was set. */
+        NONE
+    }
+
+    public final InputState input = new InputState();
+    /** Freeze and step: set by the event thread, obeyed by the render loop. */
+    public final FreezeGate freeze = new FreezeGate();
+    private volatile ViewSettings settings = ViewSettings.defaults();
+    private volatile SceneAsset scene;
+    /** The camera set by the host (and the one R returns to), with a serial so the loop sees each setting. */
+    private volatile CameraRequest home;
+    private volatile Controls controls = Controls.FLY;
+    /** The camera of the newest frame drawn, or the home camera before the first. */
+    private volatile Camera current;
+    /** View size in device pixels, width in the high half; 0 when hidden or minimized. */
+    private volatile long viewSize;
+    private volatile Measurement measurement;
+    private volatile Progress progress = new Progress(0, 0, 0);
+    /** The pixel the inspector looks at, frame pixels x in the high half; -1 when the inspector is off. */
+    private volatile long inspected = -1;
+    /** The last few seconds of frame times by stage, for the graph. */
+    public final FrameTimes frameTimes = new FrameTimes();
+    /** Milliseconds each path (by RenderMode ordinal) took on the last measured frame, or null. */
+    private volatile double[] pathMs;
+    /** Whether developer tools are showing, so that their numbers are worth measuring. */
+    private volatile boolean toolsOpen;
+
+    private volatile Budget budget = new Budget(false, Budget.DEFAULT_TARGET_MS);
+    /** The split threshold the budget controller chose for the last frame, pixels; NaN when off. */
+    private volatile double chosenThreshold = Double.NaN;
+
+    /** A camera the host set, numbered so that setting the same camera twice still moves the view back. */
+    public record CameraRequest(Camera camera, long serial) {
+    }
+
+    /**
+     * The frame-time budget: when on, the tessellated path's threshold follows a
+     * {@link dev.trisect.perf.BudgetController} holding {@code targetMs}, the user's threshold being
+     * its ceiling.
+     */
+    public record Budget(boolean on, double targetMs) {
+        public static final double DEFAULT_TARGET_MS = 16.7;
+    }
+
+    /** A comparison of one frame against the per-pixel path, and what it was made from. */
+    public record Measurement(Comparison comparison, long frame, Camera camera, ViewSettings settings, int width,
+                              int height, long nanos) {
+    }
+
+    /**
+     * The render loop's pace: frames so far, frames per second over the last second, and milliseconds
+     * the last comparison took.
+     */
+    public record Progress(long frames, double fps, double compareMs) {
+    }
+
+    /** A view of {@code scene} from the scene's own camera. */
+    public ViewState(SceneAsset scene) {
+        this.scene = scene;
+        camera(scene.camera());
+    }
+
+    public ViewSettings settings() {
+        return settings;
+    }
+
+    public synchronized void settings(ViewSettings s) {
+        settings = s;
+    }
+
+    /** Replaces the settings by {@code change} of them, atomically against other changes (any thread). */
+    public synchronized ViewSettings updateSettings(java.util.function.UnaryOperator<ViewSettings> change) {
+        settings = change.apply(settings);
+        return settings;
+    }
+
+    public SceneAsset scene() {
+        return scene;
+    }
+
+    /** Shows another scene from the next frame on; the camera stays where it is. */
+    public void scene(SceneAsset s) {
+        scene = s;
+    }
+
+    /** Puts the camera here from the next frame on, and makes it the one R returns to. */
+    public synchronized void camera(Camera c) {
+        long serial = home == null ? 0 : home.serial() + 1;
+        home = new CameraRequest(c, serial);
+        current = c;
+    }
+
+    public CameraRequest home() {
+        return home;
+    }
+
+    /** The camera of the newest frame drawn (or the one just set, before it is drawn). */
+    public Camera currentCamera() {
+        return current;
+    }
+
+    /** Render thread: the camera the newest frame was drawn with. */
+    public void drawnWith(Camera c, long homeSerial) {
+        // A camera set after this frame began wins until its own frame is drawn.
+        if (home.serial() == homeSerial) {
+            current = c;
+        }
+    }
+
+    public Controls controls() {
+        return controls;
+    }
+
+    public void controls(Controls c) {
+        controls = c;
+    }
+
+    public void viewSize(int width, int height) {
+        viewSize = ((long) Math.max(0, width) << 32) | Math.max(0, height);
+    }
+
+    public int viewWidth() {
+        return (int) (viewSize >>> 32);
+    }
+
+    public int viewHeight() {
+        return (int) viewSize;
+    }
+
+    public Measurement measurement() {
+        return measurement;
+    }
+
+    public void measurement(Measurement m) {
+        measurement = m;
+    }
+
+    /** Points the inspector at frame pixel (x, y), or turns it off with a negative x. */
+    public void inspect(int x, int y) {
+        inspected = x < 0 ? -1 : ((long) x << 32) | (y & 0xFFFFFFFFL);
+    }
+
+    /** The inspected pixel packed as in {@link #inspect}, -1 when off. */
+    public long inspected() {
+        return inspected;
+    }
+
+    public double[] pathMs() {
+        return pathMs;
+    }
+
+    public void pathMs(double[] ms) {
+        pathMs = ms;
+    }
+
+    public boolean toolsOpen() {
+        return toolsOpen;
+    }
+
+    public void toolsOpen(boolean open) {
+        toolsOpen = open;
+    }
+
+    public Budget budget() {
+        return budget;
+    }
+
+    public void budget(Budget b) {
+        budget = b;
+    }
+
+    public double chosenThreshold() {
+        return chosenThreshold;
+    }
+
+    public void chosenThreshold(double t) {
+        chosenThreshold = t;
+    }
+
+    public Progress progress() {
+        return progress;
+    }
+
+    public void progress(Progress p) {
+        progress = p;
+    }
+}

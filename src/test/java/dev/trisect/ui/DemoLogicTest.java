@@ -1,0 +1,46 @@
+package dev.trisect.ui;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.LocalDateTime;
+import javax.swing.JLabel;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The demo window's logic without a window: its status bar and where screenshots go. */
+class DemoLogicTest {
+    @TempDir
+    Path dir;
+
+    @Test
+    void aPassingStatusMessageClearsAndTheHintComesBack() {
+        JLabel label = new JLabel();
+        StatusLine line = new StatusLine(label);
+        line.rest("hint");
+        line.pass("Copied", 1000);
+        line.tick(1000 + StatusLine.PASSING_NANOS - 1);
+        assertEquals("Copied", label.getText());
+        assertEquals("Copied", label.getToolTipText(), "the whole message in the tooltip, should the bar cut it");
+        line.tick(1000 + StatusLine.PASSING_NANOS);
+        assertEquals("hint", label.getText());
+        line.tick(Long.MAX_VALUE);
+        assertEquals("hint", label.getText(), "the resting hint stays");
+    }
+
+    @Test
+    void screenshotsGoToPicturesOrHomeNeverTheWorkingDirectory() throws Exception {
+        assertEquals(dir, Screenshots.folder(dir));
+        Files.createDirectory(dir.resolve("Pictures"));
+        assertEquals(dir.resolve("Pictures"), Screenshots.folder(dir));
+        assertNotEquals(Path.of("").toAbsolutePath(), Screenshots.folder());
+        LocalDateTime t = LocalDateTime.of(2026, 1, 2, 3, 4, 5);
+        Path first = Screenshots.newFile(dir, t);
+        assertEquals("trisect-20260102-030405.png", first.getFileName().toString());
+        Files.writeString(first, "");
+        assertEquals("trisect-20260102-030405-2.png", Screenshots.newFile(dir, t).getFileName().toString());
+    }
+
+}

@@ -1,0 +1,303 @@
+package dev.trisect.view;
+
+import static dev.trisect.GuiTests.edt;
+import static dev.trisect.GuiTests.onEdt;
+import static dev.trisect.GuiTests.waitFor;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trisect.GuiTests;
+import dev.trisect.math.Vec3;
+import dev.trisect.pipeline.RenderMode;
+import dev.trisect.scene.Camera;
+import dev.trisect.content.DemoScenes;
+import dev.trisect.view.internal.ViewController;
+import java.awt.BorderLayout;
+import java.awt.Dimension;
+import java.awt.Robot;
+import java.awt.event.ActionEvent;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
+import java.awt.image.BufferedImage;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
+import javax.swing.AbstractAction;
+import javax.swing.JButton;
+import javax.swing.JComponent;
+import javax.swing.JFrame;
+import javax.swing.JPanel;
+import javax.swing.KeyStroke;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The view embedded in a host's own frame beside Swing controls, under an X server: it renders on
+ * its own thread, takes settings and cameras from any thread at any time, tells its listeners, and
+ * stops its thread when removed, closed or disposed, without an exception anywhere.
+ */
+@Tag("gui")
+class TrisectViewGuiTest {
+    private static Robot robot;
+    private JFrame host;
+    private TrisectView view;
+    private final List<FrameInfo> frames = new CopyOnWriteArrayList<>();
+    private final AtomicReference<Throwable> uncaught = new AtomicReference<>();
+    private Thread.UncaughtExceptionHandler previousHandler;
+
+    @BeforeAll
+    static void robot() throws Exception {
+        if (!GuiTests.headless("TrisectViewGuiTest")) {
+            robot = new Robot();
+            robot.setAutoDelay(20);
+        }
+    }
+
+    @BeforeEach
+    void open() throws Exception {
+        GuiTests.requireDisplay();
+        previousHandler = Thread.getDefaultUncaughtExceptionHandler();
+        Thread.setDefaultUncaughtExceptionHandler((t, e) -> uncaught.compareAndSet(null, e));
+        edt(() -> {
+            host = new JFrame("host");
+            view = new TrisectView(DemoScenes.boxes(), 2);
+            view.setPreferredSize(new Dimension(400, 300));
+            view.addFrameListener(frames::add);
+            JPanel side = new JPanel();
+            side.add(new JButton("a host control"));
+            host.getContentPane().add(view, BorderLayout.CENTER);
+            host.getContentPane().add(side, BorderLayout.EAST);
+            host.pack();
+            host.setLocation(0, 0);
+            host.setVisible(true);
+        });
+        waitFor("frames", () -> frames.size() >= 3);
+    }
+
+    @AfterEach
+    void close() throws Exception {
+        if (host != null) {
+            edt(() -> host.dispose());
+        }
+        Thread.setDefaultUncaughtExceptionHandler(previousHandler);
+        assertNull(uncaught.get(), "no uncaught exception on any thread");
+    }
+
+    private Thread renderThread() throws Exception {
+        return onEdt(() -> ((ViewController) view.getClientProperty(ViewController.class)).renderThread());
+    }
+
+    private FrameInfo last() {
+        return frames.get(frames.size() - 1);
+    }
+
+    /** Clicks into the view, so that it has the keyboard (Xvfb has no window manager to give it). */
+    private void focusView() throws Exception {
+        var at = onEdt(() -> view.getLocationOnScreen());
+        robot.mouseMove(at.x + 200, at.y + 150);
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        waitFor("the keyboard", () -> onEdt(() -> view.isFocusOwner()));
+    }
+
+    @Test
+    void itRendersAtItsSizeOnItsOwnThreadAndReportsEachFrame() throws Exception {
+        FrameInfo f = last();
+        assertEquals(400, f.width(), "the frame is the view's size (device pixels, scale 1 here)");
+        assertEquals(300, f.height());
+        assertTrue(f.stats().trianglesIn() > 0);
+        assertTrue(f.frameMillis() > 0);
+        assertEquals("trisect-render", renderThread().getName());
+        for (int i = 1; i < frames.size(); i++) {
+            assertEquals(frames.get(i - 1).number() + 1, frames.get(i).number(), "every frame reported, in order");
+        }
+        BufferedImage image = onEdt(() -> view.frameImage());
+        assertNotNull(image, "the frame on screen, as an image");
+        assertEquals(400, image.getWidth());
+    }
+
+    @Test
+    void settingsAndCamerasSetFromAnotherThreadReachTheNextFrames() throws Exception {
+        Camera aside = Camera.looking(new Vec3(6, 3, 6), new Vec3(0, 0.5, 0));
+        Thread other = new Thread(() -> {
+            for (int i = 0; i < 20; i++) {
+                view.setRenderSettings(view.getRenderSettings().withMode(i % 2 == 0 ? RenderMode.PERSPECTIVE
+                        : RenderMode.AFFINE));
+                view.setRenderScale(i % 2 == 0 ? 0.5 : 1);
+                Thread.yield();
+            }
+            view.setRenderSettings(view.getRenderSettings().withMode(RenderMode.AFFINE).withBorders(true));
+            view.setCamera(aside);
+        }, "host-worker");
+        other.start();
+        other.join(10_000);
+        waitFor("a frame with the last settings and camera", () -> {
+            FrameInfo f = last();
+            return f.settings().mode() == RenderMode.AFFINE && f.settings().borders() && f.camera().equals(aside)
+                    && f.width() == 400;
+        });
+        assertEquals(aside, view.getCamera(), "the camera as set, until the user moves it");
+        waitFor("the menu's state to follow", () -> onEdt(() -> Boolean.TRUE.equals(view.action(ViewAction.BORDERS)
+                .getValue(javax.swing.Action.SELECTED_KEY))
+                && Boolean.TRUE.equals(view.action(ViewAction.AFFINE).getValue(javax.swing.Action.SELECTED_KEY))));
+    }
+
+    @Test
+    void removingTheViewStopsItsThreadAndAddingItBackStartsAnother() throws Exception {
+        Thread first = renderThread();
+        edt(() -> {
+            host.getContentPane().remove(view);
+            host.revalidate();
+        });
+        first.join(10_000);
+        assertFalse(first.isAlive(), "the render thread ended when the view left its window");
+        int before = frames.size();
+        edt(() -> {
+            host.getContentPane().add(view, BorderLayout.CENTER);
+            host.revalidate();
+        });
+        waitFor("frames again", () -> frames.size() > before + 2);
+        assertNotEquals(first, renderThread());
+    }
+
+    @Test
+    void closingStopsForGoodAndDisposingTheWindowStopsToo() throws Exception {
+        Thread t = renderThread();
+        view.close();
+        t.join(10_000);
+        assertFalse(t.isAlive(), "closed: the render thread ended");
+        assertTrue(view.isClosed());
+        edt(() -> {
+            host.getContentPane().remove(view);
+            host.getContentPane().add(view, BorderLayout.CENTER);
+            host.revalidate();
+        });
+        int before = frames.size();
+        Thread.sleep(300);
+        assertEquals(before, frames.size(), "a closed view draws no more, even when added again");
+
+        TrisectView second = onEdt(() -> {
+            TrisectView v = new TrisectView(DemoScenes.floor(), 1);
+            host.getContentPane().add(v, BorderLayout.NORTH);
+            v.setPreferredSize(new Dimension(100, 80));
+            host.pack();
+            return v;
+        });
+        waitFor("the second view's thread", () -> onEdt(() -> ((ViewController) second
+                .getClientProperty(ViewController.class)).renderThread()) != null);
+        Thread secondThread = onEdt(() -> ((ViewController) second.getClientProperty(ViewController.class))
+                .renderThread());
+        edt(() -> host.dispose());
+        secondThread.join(10_000);
+        assertFalse(secondThread.isAlive(), "disposing the window ends the thread of a view in it");
+    }
+
+    @Test
+    void withoutCameraControlsTheMovementKeysAreTheHosts() throws Exception {
+        AtomicInteger hostW = new AtomicInteger();
+        edt(() -> {
+            JComponent root = host.getRootPane();
+            root.getInputMap(JComponent.WHEN_IN_FOCUSED_WINDOW).put(KeyStroke.getKeyStroke(KeyEvent.VK_W, 0), "host-w");
+            root.getActionMap().put("host-w", new AbstractAction() {
+                private static final long serialVersionUID = 1L;
+
+                @Override
+                public void actionPerformed(ActionEvent e) {
+                    hostW.incrementAndGet();
+                }
+            });
+        });
+        focusView();
+        Camera start = view.getCamera();
+        view.setCameraControls(CameraControls.NONE);
+        Thread.sleep(200);
+        robot.keyPress(KeyEvent.VK_W);
+        Thread.sleep(300);
+        robot.keyRelease(KeyEvent.VK_W);
+        waitFor("the host's binding", () -> hostW.get() > 0);
+        Thread.sleep(200);
+        assertEquals(start, view.getCamera(), "no controls: the camera stays");
+
+        view.setCameraControls(CameraControls.FLY);
+        int before = hostW.get();
+        Thread.sleep(200);
+        robot.keyPress(KeyEvent.VK_W);
+        Thread.sleep(300);
+        robot.keyRelease(KeyEvent.VK_W);
+        waitFor("the camera to fly forward", () -> {
+            Camera c = view.getCamera();
+            Vec3 forward = start.target().sub(start.eye()).normalize();
+            return c.eye().sub(start.eye()).dot(forward) > 0.1;
+        });
+        assertEquals(before, hostW.get(), "with controls the view takes W");
+    }
+
+    @Test
+    void orbitControlsTurnRoundTheTargetAtTheSameDistance() throws Exception {
+        Camera start = Camera.looking(new Vec3(0, 2, 8), new Vec3(0, 0.5, 0));
+        view.setCamera(start);
+        view.setCameraControls(CameraControls.ORBIT);
+        waitFor("the camera set", () -> last().camera().equals(start));
+        var at = onEdt(() -> view.getLocationOnScreen());
+        robot.mouseMove(at.x + 150, at.y + 150);
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        for (int i = 1; i <= 10; i++) {
+            robot.mouseMove(at.x + 150 + 10 * i, at.y + 150);
+        }
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        waitFor("the camera to turn", () -> !view.getCamera().eye().equals(start.eye()));
+        Thread.sleep(200);
+        Camera c = view.getCamera();
+        assertEquals(start.target(), c.target(), "it looks at the same point");
+        assertEquals(start.eye().sub(start.target()).length(), c.eye().sub(c.target()).length(), 1e-9,
+                "from the same distance");
+        assertEquals(start.eye().y(), c.eye().y(), 1e-9, "a horizontal drag keeps the height");
+    }
+
+    @Test
+    void aFailingFrameListenerIsReportedAndRenderingGoesOn() throws Exception {
+        List<String> messages = new CopyOnWriteArrayList<>();
+        view.addMessageListener(messages::add);
+        FrameListener bad = f -> {
+            throw new IllegalStateException("listener bug");
+        };
+        view.addFrameListener(bad);
+        waitFor("the message", () -> !messages.isEmpty());
+        assertTrue(messages.get(0).contains("listener bug"), messages.get(0));
+        view.removeFrameListener(bad);
+        int before = frames.size();
+        waitFor("more frames", () -> frames.size() > before + 2);
+    }
+
+    @Test
+    void aDevToolsPanelPlacedByTheHostMeasuresWhileItShows() throws Exception {
+        JComponent tools = onEdt(() -> {
+            JComponent t = view.createDevToolsPanel();
+            t.setPreferredSize(new Dimension(420, 300));
+            host.getContentPane().add(t, BorderLayout.WEST);
+            host.pack();
+            return t;
+        });
+        ViewController c = onEdt(() -> (ViewController) view.getClientProperty(ViewController.class));
+        waitFor("a measurement for the placed tools", () -> c.state().measurement() != null);
+        assertTrue(c.state().toolsOpen());
+        edt(() -> {
+            host.getContentPane().remove(tools);
+            host.revalidate();
+        });
+        assertFalse(c.state().toolsOpen(), "tools taken away: nothing more to measure for");
+        edt(() -> view.showDevTools(true));
+        assertTrue(onEdt(() -> view.isDevToolsShowing()));
+        assertTrue(c.state().toolsOpen());
+        edt(() -> view.showDevTools(false));
+        assertFalse(c.state().toolsOpen());
+    }
+}

@@ -1,0 +1,102 @@
+package dev.trisect.view.internal;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trisect.math.Viewport;
+import dev.trisect.metrics.TexelToScreen;
+import dev.trisect.pipeline.FrameRenderer;
+import dev.trisect.pipeline.PieceInfo;
+import dev.trisect.pipeline.RenderMode;
+import dev.trisect.raster.Framebuffer;
+import dev.trisect.content.DemoScenes;
+import dev.trisect.content.SceneAsset;
+import dev.trisect.tessellate.SplitPolicy;
+import org.junit.jupiter.api.Test;
+
+/** The pixel inspector's numbers against the renderer's own buffers of the same frame. */
+class PixelInspectorTest {
+    private static final int W = 160;
+    private static final int H = 90;
+
+    /** Runs the loop on {@code scene} until a frame carries an inspection of (x, y); returns that frame. */
+    private static FrameSlot inspected(ViewState state, int x, int y) throws Exception {
+        state.viewSize(W, H);
+        state.inspect(x, y);
+        TripleBuffer buffers = new TripleBuffer();
+        RenderLoop loop = new RenderLoop(state, buffers, () -> { }, 1);
+        Thread t = new Thread(loop, "test-render");
+        t.start();
+        try {
+            FrameSlot f = null;
+            for (int poll = 0; poll < 1500; poll++) {
+                f = buffers.acquire(f);
+                if (f != null && f.inspection != null && f.serial >= 2) {
+                    return f;
+                }
+                Thread.sleep(20);
+            }
+            throw new AssertionError("no inspected frame");
+        } finally {
+            loop.stop();
+            t.join(5000);
+        }
+    }
+
+    @Test
+    void everyNumberIsTheRenderersOwn() throws Exception {
+        SceneAsset floor = DemoScenes.floor();
+        ViewState state = new ViewState(floor);
+        ViewSettings v = ViewSettings.defaults().withRender(ViewSettings.defaults().render()
+                .withTessellation(ViewSettings.defaults().render().tessellation().withPolicy(SplitPolicy.ERROR)
+                        .withMaxError(0.5)));
+        state.settings(v);
+        int x = 70;
+        int y = 52;
+        FrameSlot f = inspected(state, x, y);
+        PixelInspector.Inspection in = f.inspection;
+        Framebuffer fb = f.frame;
+        int i = y * W + x;
+        assertEquals((int) fb.uv()[3 * i + 2] - 1, in.triangle(), "the UV output's triangle");
+        assertTrue(in.triangle() >= 0, "the floor is under the pixel");
+        assertEquals(fb.uv()[3 * i], in.s(), 0.0);
+        assertEquals(fb.uv()[3 * i + 1], in.t(), 0.0);
+        assertEquals(1 / fb.depth()[i], in.w(), 1e-6 * in.w());
+        // The per-pixel path, rendered here from the frame's own camera, agrees with the inspector's reference.
+        var vp = f.camera.viewProjection(new Viewport(W, H));
+        Framebuffer ref = new Framebuffer(W, H);
+        ref.recordUv(true);
+        try (FrameRenderer r = new FrameRenderer(1)) {
+            r.render(floor.mesh(), floor.textureArray(), vp, v.render().withMode(RenderMode.PERSPECTIVE), ref);
+        }
+        assertEquals(ref.uv()[3 * i], in.refS(), 0.0);
+        assertEquals(ref.uv()[3 * i + 1], in.refT(), 0.0);
+        double exact = new TexelToScreen(floor.mesh(), floor.textureArray(), vp, new Viewport(W, H))
+                .displacement(in.triangle(), in.s(), in.t(), x, y);
+        assertEquals(exact, in.displacement(), 0.0, "the exact displacement of the metrics package");
+        assertTrue(in.displacement() <= 0.5, "within the error policy's bound");
+        PieceInfo p = in.piece();
+        assertNotNull(p, "the piece filled there");
+        assertEquals(in.triangle(), p.triangle());
+        assertTrue(p.level() >= 0 && p.level() <= f.stats.deepestSplit(), "level " + p.level());
+        assertTrue(inside(p.screen(), x + 0.5, y + 0.5), "the piece holds the pixel centre");
+        assertEquals(Math.max(0, (int) Math.floor(in.lambda())), in.mipLevel(), "trilinear's lower level");
+        assertTrue(InspectorPainter.lines(in, false).stream().anyMatch(l -> l.contains("split level " + p.level())));
+    }
+
+    @Test
+    void theSkyHasNothingToInspect() throws Exception {
+        ViewState state = new ViewState(DemoScenes.floor());
+        FrameSlot f = inspected(state, 5, 2);
+        assertEquals(-1, f.inspection.triangle());
+        assertTrue(InspectorPainter.lines(f.inspection, true).get(1).contains("nothing drawn"));
+    }
+
+    private static boolean inside(double[] s, double x, double y) {
+        double d0 = (s[2] - s[0]) * (y - s[1]) - (s[3] - s[1]) * (x - s[0]);
+        double d1 = (s[4] - s[2]) * (y - s[3]) - (s[5] - s[3]) * (x - s[2]);
+        double d2 = (s[0] - s[4]) * (y - s[5]) - (s[1] - s[5]) * (x - s[4]);
+        return (d0 >= 0 && d1 >= 0 && d2 >= 0) || (d0 <= 0 && d1 <= 0 && d2 <= 0);
+    }
+}
