@@ -10,9 +10,11 @@
 #   scripts/side-by-side.sh /tmp/old.jar target/trisect.jar demo 1920x1080 15 5 affine edge error perspective
 #
 # PATH: perspective, affine, edge (tessellated, 32 px edges), error (tessellated, 0.5 px); each may
-# end in +borders or +fade to draw the border overlay (plain or faded) with the frame, so that
-# "edge edge+borders" shows what the overlay adds.
-# Both jars must have the API Frame.java uses (DemoScenes, RenderSettings, FrameRenderer).
+# be followed by @bilinear or @trilinear (the texture filter; nearest without), then by +borders or
+# +fade to draw the border overlay (plain or faded) with the frame, so that "edge edge+borders"
+# shows what the overlay adds and "error@trilinear" times the tessellated path with trilinear.
+# Both jars must have the API Frame.java uses (DemoScenes in dev.trisect.scene or dev.trisect.content,
+# RenderSettings, FrameRenderer).
 set -euo pipefail
 if [[ $# -lt 2 ]]; then
   echo "usage: $0 A.jar B.jar [scene] [WxH] [pairs] [frames] [path...]" >&2

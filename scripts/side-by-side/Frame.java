@@ -6,11 +6,15 @@ import dev.trisect.pipeline.RenderMode;
 import dev.trisect.pipeline.RenderSettings;
 import dev.trisect.raster.BorderStyle;
 import dev.trisect.raster.Framebuffer;
-import dev.trisect.scene.DemoScenes;
-import dev.trisect.scene.Scene;
+import dev.trisect.mesh.Mesh;
+import dev.trisect.scene.Camera;
 import dev.trisect.tessellate.SplitPolicy;
 import dev.trisect.tessellate.TessellationSettings;
 import dev.trisect.texture.Texture;
+import dev.trisect.texture.TextureFilter;
+import java.lang.reflect.Method;
+import java.util.Locale;
+import java.util.Optional;
 import java.util.function.LongSupplier;
 
 /**
@@ -24,14 +28,29 @@ public final class Frame {
 
     /**
      * @param path perspective, affine, edge (tessellated, 32 px edges) or error (tessellated, 0.5 px),
-     *             each optionally with +borders or +fade (the border overlay, plain or faded, drawn with the frame)
+     *             each optionally with @nearest, @bilinear or @trilinear (the texture filter; nearest
+     *             when left out), then +borders or +fade (the border overlay, plain or faded, drawn with
+     *             the frame): "error@trilinear+borders"
      */
-    public static LongSupplier make(String scene, String path, int width, int height) {
-        Scene s = DemoScenes.byName(scene).orElseThrow(() -> new IllegalArgumentException("no scene " + scene));
-        Texture[] textures = s.textureArray();
+    public static LongSupplier make(String scene, String path, int width, int height) throws ReflectiveOperationException {
+        // The built-in scenes moved from dev.trisect.scene.DemoScenes (a Scene record) to
+        // dev.trisect.content.DemoScenes (a SceneAsset record): reach either build's through reflection.
+        Class<?> scenes;
+        try {
+            scenes = Class.forName("dev.trisect.content.DemoScenes");
+        } catch (ClassNotFoundException e) {
+            scenes = Class.forName("dev.trisect.scene.DemoScenes");
+        }
+        Object s = ((Optional<?>) scenes.getMethod("byName", String.class).invoke(null, scene))
+                .orElseThrow(() -> new IllegalArgumentException("no scene " + scene));
+        Method accessor = s.getClass().getMethod("textureArray");
+        Texture[] textures = (Texture[]) accessor.invoke(s);
+        Mesh mesh = (Mesh) s.getClass().getMethod("mesh").invoke(s);
+        Camera camera = (Camera) s.getClass().getMethod("camera").invoke(s);
+        int background = (int) scenes.getMethod("background", String.class).invoke(null, scene);
         Framebuffer frame = new Framebuffer(width, height);
-        Mat4 viewProjection = s.camera().viewProjection(new Viewport(width, height));
-        RenderSettings base = RenderSettings.defaults().withBackground(DemoScenes.background(scene));
+        Mat4 viewProjection = camera.viewProjection(new Viewport(width, height));
+        RenderSettings base = RenderSettings.defaults().withBackground(background);
         // "+borders" draws the border overlay with the frame, "+fade" the faded one.
         String[] parts = path.split("\\+", 2);
         if (parts.length == 2) {
@@ -41,7 +60,11 @@ public final class Frame {
                 default -> throw new IllegalArgumentException("no overlay " + parts[1]);
             });
         }
-        RenderSettings settings = switch (parts[0]) {
+        String[] filtered = parts[0].split("@", 2);
+        if (filtered.length == 2) {
+            base = base.withFilter(TextureFilter.valueOf(filtered[1].toUpperCase(Locale.ROOT)));
+        }
+        RenderSettings settings = switch (filtered[0]) {
             case "perspective" -> base.withMode(RenderMode.PERSPECTIVE);
             case "affine" -> base.withMode(RenderMode.AFFINE);
             case "edge" -> base.withMode(RenderMode.TESSELLATED)
@@ -52,7 +75,7 @@ public final class Frame {
         };
         FrameRenderer renderer = new FrameRenderer(1);
         return () -> {
-            FrameStats stats = renderer.render(s.mesh(), textures, viewProjection, settings, frame);
+            FrameStats stats = renderer.render(mesh, textures, viewProjection, settings, frame);
             return stats.pieces();
         };
     }
