@@ -6,11 +6,11 @@ import dev.trisect.texture.Sampler;
 import dev.trisect.texture.TextureFilter;
 
 /**
- * The span loops of the bilinear and trilinear filters, over the triangle a {@link Rasterizer} has
- * just set up (its covered spans and attribute planes). One loop per filter and path, so each inner
- * loop is monomorphic: the choice is made once per triangle, never per pixel. Depth test, depth
- * write and the UV output are exactly those of the nearest loops in {@link Rasterizer}; only the
- * colour differs (docs/conventions.md, "Texture filtering").
+ * The pixel loops of the bilinear and trilinear filters over a set-up triangle's spans (its
+ * {@link TriangleSetup} and the spans a {@link SpanSolver} solved). One loop per filter and path, so
+ * each inner loop is monomorphic: the choice is made once per triangle, never per pixel. Depth test,
+ * depth write and the UV output are exactly those of the nearest loops in {@link NearestSpans}; only
+ * the colour differs (docs/conventions.md, "Texture filtering").
  *
  * <ul>
  * <li>Perspective path: every pixel divides, and trilinear takes its level of detail from the exact
@@ -63,23 +63,24 @@ final class FilteredSpans {
     }
 
     /**
-     * Fills the rasterizer's current triangle with {@code filter} (bilinear or trilinear).
+     * Fills a set-up triangle's spans with {@code filter} (bilinear or trilinear).
      *
+     * @param spans       the covered pixels of each row of {@code setup} (see {@link SpanSolver#spans()})
      * @param perspective the perspective path (per-pixel division and level of detail)
-     * @param fixedSafe   affine texel coordinates fit 32.32 fixed point
      * @return pixels written
      */
-    static long fill(Rasterizer r, Framebuffer frame, MipChain mips, int uvId, boolean perspective,
-                     boolean fixedSafe, TextureFilter filter) {
+    static long fill(TriangleSetup setup, int[] spans, Framebuffer frame, MipChain mips, int uvId,
+                     boolean perspective, TextureFilter filter) {
         boolean trilinear = filter == TextureFilter.TRILINEAR;
-        if (perspective || !fixedSafe) {
-            return perPixel(r, frame, mips, uvId, perspective, trilinear);
+        if (perspective || !setup.fixedPointSafe) {
+            return perPixel(setup, spans, frame, mips, uvId, perspective, trilinear);
         }
         if (!trilinear) {
-            return levelFixed(r, frame, mips, 0, 0, uvId);
+            return levelFixed(setup, spans, frame, mips, 0, 0, uvId);
         }
-        int selection = Lod.select(Lod.lambda(r.sPlane.dx, r.tPlane.dx, r.sPlane.dy, r.tPlane.dy), mips.maxLevel());
-        return levelFixed(r, frame, mips, Lod.level(selection), Lod.weight(selection), uvId);
+        int selection = Lod.select(Lod.lambda(setup.sPlane.dx, setup.tPlane.dx, setup.sPlane.dy, setup.tPlane.dy),
+                mips.maxLevel());
+        return levelFixed(setup, spans, frame, mips, Lod.level(selection), Lod.weight(selection), uvId);
     }
 
     /**
@@ -102,17 +103,17 @@ final class FilteredSpans {
      * and wraps with masks. Other chains take {@link Sampler#position} and {@link Sampler#bilinear} per
      * level. The choice is the same for every pixel of the triangle, so its branch is always predicted.
      */
-    private static long perPixel(Rasterizer r, Framebuffer frame, MipChain mips, int uvId,
+    private static long perPixel(TriangleSetup setup, int[] spans, Framebuffer frame, MipChain mips, int uvId,
                                  boolean perspective, boolean trilinear) {
-        double qBase = r.qPlane.base;
-        double qDx = r.qPlane.dx;
-        double qDy = r.qPlane.dy;
-        double sBase = r.sPlane.base;
-        double sDx = r.sPlane.dx;
-        double sDy = r.sPlane.dy;
-        double tBase = r.tPlane.base;
-        double tDx = r.tPlane.dx;
-        double tDy = r.tPlane.dy;
+        double qBase = setup.qPlane.base;
+        double qDx = setup.qPlane.dx;
+        double qDy = setup.qPlane.dy;
+        double sBase = setup.sPlane.base;
+        double sDx = setup.sPlane.dx;
+        double sDy = setup.sPlane.dy;
+        double tBase = setup.tPlane.base;
+        double tDx = setup.tPlane.dx;
+        double tDy = setup.tPlane.dy;
         // Perspective: s = S / Q, so ds/dx = (S_x - s Q_x) / Q; affine: ds/dx = S_x, so take Q_x = 0
         // in the same formula and a Q of 1.
         double qDxLod = perspective ? qDx : 0;
@@ -124,8 +125,8 @@ final class FilteredSpans {
         float[] depth = frame.depth();
         double[] uv = frame.uv();
         long written = 0;
-        int[] sp = r.spans;
-        for (int y = r.rowStart, j = 0; y < r.rowEnd; y++, j += 2) {
+        int[] sp = spans;
+        for (int y = setup.rowStart, j = 0; y < setup.rowEnd; y++, j += 2) {
             int spanStart = sp[j];
             int spanEnd = sp[j + 1];
             double qRow = qBase + qDy * y;
@@ -306,16 +307,17 @@ final class FilteredSpans {
      * loop, so a pixel's value never depends on the rectangle being filled: level 0's for the UV
      * output, and each sampled level's, moved by the half texel of {@link Sampler#position}.
      */
-    private static long levelFixed(Rasterizer r, Framebuffer frame, MipChain mips, int level, int weight, int uvId) {
-        double qBase = r.qPlane.base;
-        double qDx = r.qPlane.dx;
-        double qDy = r.qPlane.dy;
-        double sBase = r.sPlane.base;
-        double sDx = r.sPlane.dx;
-        double sDy = r.sPlane.dy;
-        double tBase = r.tPlane.base;
-        double tDx = r.tPlane.dx;
-        double tDy = r.tPlane.dy;
+    private static long levelFixed(TriangleSetup setup, int[] spans, Framebuffer frame, MipChain mips, int level,
+                                   int weight, int uvId) {
+        double qBase = setup.qPlane.base;
+        double qDx = setup.qPlane.dx;
+        double qDy = setup.qPlane.dy;
+        double sBase = setup.sPlane.base;
+        double sDx = setup.sPlane.dx;
+        double sDy = setup.sPlane.dy;
+        double tBase = setup.tPlane.base;
+        double tDx = setup.tPlane.dx;
+        double tDy = setup.tPlane.dy;
         int width = frame.width();
         int[] color = frame.color();
         float[] depth = frame.depth();
@@ -338,10 +340,10 @@ final class FilteredSpans {
         long ds2 = (long) Math.floor(sDx * ks2);
         long dt2 = (long) Math.floor(tDx * kt2);
         long half = 1L << 31;
-        int firstColumn = r.firstColumn;
+        int firstColumn = setup.firstColumn;
         long written = 0;
-        int[] sp = r.spans;
-        for (int y = r.rowStart, j = 0; y < r.rowEnd; y++, j += 2) {
+        int[] sp = spans;
+        for (int y = setup.rowStart, j = 0; y < setup.rowEnd; y++, j += 2) {
             int spanStart = sp[j];
             int spanEnd = sp[j + 1];
             if (spanStart >= spanEnd) {

@@ -141,13 +141,13 @@ class FilteredSpansTest {
      * pixel), and the generic {@link Sampler} calls per level.
      */
     private static int expectedTrilinear(Rasterizer r, MipChain mips, int x, int y) {
-        double q = r.qPlane.base + r.qPlane.dy * y + r.qPlane.dx * x;
-        double s = (r.sPlane.base + r.sPlane.dy * y + r.sPlane.dx * x) / q;
-        double t = (r.tPlane.base + r.tPlane.dy * y + r.tPlane.dx * x) / q;
+        double q = r.setup().qPlane.base + r.setup().qPlane.dy * y + r.setup().qPlane.dx * x;
+        double s = (r.setup().sPlane.base + r.setup().sPlane.dy * y + r.setup().sPlane.dx * x) / q;
+        double t = (r.setup().tPlane.base + r.setup().tPlane.dy * y + r.setup().tPlane.dx * x) / q;
         double lambda = interpolatedLambda(r, mips, x, y);
         int selection = Double.isNaN(lambda)
-                ? Lod.select(Lod.lambdaPerspective(s, t, 1 / q, r.sPlane.dx, r.sPlane.dy, r.tPlane.dx, r.tPlane.dy,
-                r.qPlane.dx, r.qPlane.dy), mips.maxLevel())
+                ? Lod.select(Lod.lambdaPerspective(s, t, 1 / q, r.setup().sPlane.dx, r.setup().sPlane.dy, r.setup().tPlane.dx, r.setup().tPlane.dy,
+                r.setup().qPlane.dx, r.setup().qPlane.dy), mips.maxLevel())
                 : Lod.select((int) lambda, mips.maxLevel());
         int d = Lod.level(selection);
         int c = Sampler.bilinear(mips.texels(d), mips.width(d), mips.height(d), Sampler.position(s * mips.scaleS(d)),
@@ -172,9 +172,9 @@ class FilteredSpansTest {
         int[] lb = axisLambdas(r, mips, a + run, y);
         if (la == null || lb == null || Math.abs(lb[0] - la[0]) > FilteredSpans.MAX_LOD_STEP
                 || Math.abs(lb[1] - la[1]) > FilteredSpans.MAX_LOD_STEP
-                || !FilteredSpans.nearlyLinear(a, r.qPlane.base + r.qPlane.dy * y, r.sPlane.base + r.sPlane.dy * y,
-                r.tPlane.base + r.tPlane.dy * y, r.qPlane.dx, r.sPlane.dx, r.sPlane.dy, r.tPlane.dx, r.tPlane.dy,
-                r.qPlane.dx, r.qPlane.dy, true)) {
+                || !FilteredSpans.nearlyLinear(a, r.setup().qPlane.base + r.setup().qPlane.dy * y, r.setup().sPlane.base + r.setup().sPlane.dy * y,
+                r.setup().tPlane.base + r.setup().tPlane.dy * y, r.setup().qPlane.dx, r.setup().sPlane.dx, r.setup().sPlane.dy, r.setup().tPlane.dx, r.setup().tPlane.dy,
+                r.setup().qPlane.dx, r.setup().qPlane.dy, true)) {
             return Double.NaN;
         }
         return Math.max(la[0] + Math.floorDiv((lb[0] - la[0]) * (x - a), run),
@@ -183,15 +183,15 @@ class FilteredSpansTest {
 
     /** lambda along x and along y at (x, y) in 1/256, or null where 1/w is not positive or a lambda is NaN. */
     private static int[] axisLambdas(Rasterizer r, MipChain mips, int x, int y) {
-        double q = r.qPlane.base + r.qPlane.dy * y + r.qPlane.dx * x;
+        double q = r.setup().qPlane.base + r.setup().qPlane.dy * y + r.setup().qPlane.dx * x;
         if (!(q > 0)) {
             return null;
         }
-        double s = (r.sPlane.base + r.sPlane.dy * y + r.sPlane.dx * x) / q;
-        double t = (r.tPlane.base + r.tPlane.dy * y + r.tPlane.dx * x) / q;
-        int lx = Lod.fixed(Lod.lambdaOf(Lod.rhoSquared(s, t, 1 / q, r.sPlane.dx, r.tPlane.dx, r.qPlane.dx)),
+        double s = (r.setup().sPlane.base + r.setup().sPlane.dy * y + r.setup().sPlane.dx * x) / q;
+        double t = (r.setup().tPlane.base + r.setup().tPlane.dy * y + r.setup().tPlane.dx * x) / q;
+        int lx = Lod.fixed(Lod.lambdaOf(Lod.rhoSquared(s, t, 1 / q, r.setup().sPlane.dx, r.setup().tPlane.dx, r.setup().qPlane.dx)),
                 mips.maxLevel());
-        int ly = Lod.fixed(Lod.lambdaOf(Lod.rhoSquared(s, t, 1 / q, r.sPlane.dy, r.tPlane.dy, r.qPlane.dy)),
+        int ly = Lod.fixed(Lod.lambdaOf(Lod.rhoSquared(s, t, 1 / q, r.setup().sPlane.dy, r.setup().tPlane.dy, r.setup().qPlane.dy)),
                 mips.maxLevel());
         return lx == Lod.NO_LAMBDA || ly == Lod.NO_LAMBDA ? null : new int[] {lx, ly};
     }
@@ -242,7 +242,7 @@ class FilteredSpansTest {
         Rasterizer r = new Rasterizer();
         r.filter(TextureFilter.TRILINEAR);
         r.fill(fb, t, all(t), 0, 1, textures, true, 0, 0, W, H);
-        if (r.rowEnd <= r.rowStart || r.spans.length < 2 * (r.rowEnd - r.rowStart)) {
+        if (r.setup().rowEnd <= r.setup().rowStart || r.spans().length < 2 * (r.setup().rowEnd - r.setup().rowStart)) {
             // Nothing set up: the triangle covers no pixel centre of the frame.
             return new double[3];
         }
@@ -250,14 +250,14 @@ class FilteredSpansTest {
         double worst = 0;
         int interpolatedPixels = 0;
         int exactPixels = 0;
-        for (int py = r.rowStart, j = 0; py < r.rowEnd; py++, j += 2) {
-            for (int px = r.spans[j]; px < r.spans[j + 1]; px++) {
+        for (int py = r.setup().rowStart, j = 0; py < r.setup().rowEnd; py++, j += 2) {
+            for (int px = r.spans()[j]; px < r.spans()[j + 1]; px++) {
                 assertEquals(Integer.toHexString(expectedTrilinear(r, mips, px, py)),
                         Integer.toHexString(fb.color()[py * W + px]), what + " pixel " + px + "," + py);
-                double q = r.qPlane.base + r.qPlane.dy * py + r.qPlane.dx * px;
-                double exact = Lod.lambdaPerspective((r.sPlane.base + r.sPlane.dy * py + r.sPlane.dx * px) / q,
-                        (r.tPlane.base + r.tPlane.dy * py + r.tPlane.dx * px) / q, 1 / q, r.sPlane.dx, r.sPlane.dy,
-                        r.tPlane.dx, r.tPlane.dy, r.qPlane.dx, r.qPlane.dy);
+                double q = r.setup().qPlane.base + r.setup().qPlane.dy * py + r.setup().qPlane.dx * px;
+                double exact = Lod.lambdaPerspective((r.setup().sPlane.base + r.setup().sPlane.dy * py + r.setup().sPlane.dx * px) / q,
+                        (r.setup().tPlane.base + r.setup().tPlane.dy * py + r.setup().tPlane.dx * px) / q, 1 / q, r.setup().sPlane.dx, r.setup().sPlane.dy,
+                        r.setup().tPlane.dx, r.setup().tPlane.dy, r.setup().qPlane.dx, r.setup().qPlane.dy);
                 double interpolated = interpolatedLambda(r, mips, px, py) / 256;
                 if (Double.isNaN(interpolated)) {
                     exactPixels++;

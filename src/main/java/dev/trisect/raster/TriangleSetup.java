@@ -1,0 +1,152 @@
+package dev.trisect.raster;
+
+/**
+ * One screen triangle set up for filling within a rectangle of the frame: what the span solver and
+ * the pixel loops read. {@link #prepare} fills it from a triangle of a {@link ScreenTriangles}; the
+ * fields are then read-only until the next {@code prepare}. One per thread, reused for every triangle.
+ *
+ * <p>Pixel (x, y) is the pixel whose centre is at (x + 0.5, y + 0.5) in pixels, row 0 at the top.
+ */
+final class TriangleSetup {
+    private static final int ONE = FixedPoint.ONE;
+    private static final int HALF = FixedPoint.HALF;
+    /** Texel coordinates below this magnitude fit 32.32 fixed point with room for stepping. */
+    private static final double FIXED_POINT_LIMIT = 1 << 30;
+
+    /** Rows [rowStart, rowEnd) whose centres the triangle's bounding box holds, within the rectangle. */
+    int rowStart;
+    int rowEnd;
+    /** Columns [colStart, colEnd) likewise. */
+    int colStart;
+    int colEnd;
+    /**
+     * The triangle's own first column, before clipping to the rectangle: the anchor of fixed-point
+     * stepping, so that a pixel's value never depends on the rectangle being filled.
+     */
+    int firstColumn;
+    /**
+     * Snapped corners in setup order (x0, y0, x1, y1, x2, y2), {@link FixedPoint} sub-pixel units,
+     * reordered so that the signed area is positive (y down).
+     */
+    final long[] corners = new long[6];
+    /**
+     * Attribute planes over pixel centres, from the unsnapped corners: {@code 1/w} (view-space
+     * units^-1), and the texel coordinates s and t (level-0 texels) — divided by w, that is s/w and
+     * t/w, when set up for a perspective fill.
+     */
+    final Plane qPlane = new Plane();
+    final Plane sPlane = new Plane();
+    final Plane tPlane = new Plane();
+    /** Whether the texel coordinates are small enough for 32.32 fixed point (|s|, |t| &lt; 2^30). */
+    boolean fixedPointSafe;
+
+    /**
+     * Sets up triangle {@code tri} of {@code triangles} for filling pixels {@code [x0, x1) x [y0, y1)}:
+     * bounds, corner order and attribute planes (a perspective fill's planes interpolate s/w and t/w).
+     *
+     * @return false when it covers no pixel centre there (or has no area): nothing else is set then
+     */
+    boolean prepare(ScreenTriangles triangles, int tri, boolean perspective, int x0, int y0, int x1, int y1) {
+        int[] f = triangles.fixed();
+        int o = tri * ScreenTriangles.FIXED_STRIDE;
+        long ax = f[o];
+        long ay = f[o + 1];
+        long bx = f[o + 2];
+        long by = f[o + 3];
+        long cx = f[o + 4];
+        long cy = f[o + 5];
+        long area = (bx - ax) * (cy - ay) - (cx - ax) * (by - ay);
+        if (area == 0) {
+            return false;
+        }
+        // Corner order after making the area positive: 0, i1, i2.
+        int i1 = 1;
+        int i2 = 2;
+        if (area < 0) {
+            long tx = bx;
+            long ty = by;
+            bx = cx;
+            by = cy;
+            cx = tx;
+            cy = ty;
+            i1 = 2;
+            i2 = 1;
+        }
+        int minX = (int) Math.min(ax, Math.min(bx, cx));
+        int maxX = (int) Math.max(ax, Math.max(bx, cx));
+        int minY = (int) Math.min(ay, Math.min(by, cy));
+        int maxY = (int) Math.max(ay, Math.max(by, cy));
+        firstColumn = ScreenTriangles.ceilDiv(minX - HALF, ONE);
+        colStart = Math.max(x0, firstColumn);
+        colEnd = Math.min(x1, Math.floorDiv(maxX - HALF, ONE) + 1);
+        rowStart = Math.max(y0, ScreenTriangles.ceilDiv(minY - HALF, ONE));
+        rowEnd = Math.min(y1, Math.floorDiv(maxY - HALF, ONE) + 1);
+        if (colStart >= colEnd || rowStart >= rowEnd) {
+            return false;
+        }
+        long[] c = corners;
+        c[0] = ax;
+        c[1] = ay;
+        c[2] = bx;
+        c[3] = by;
+        c[4] = cx;
+        c[5] = cy;
+        planes(triangles, tri, i1, i2, perspective);
+        return true;
+    }
+
+    /** Attribute planes from the unsnapped corners, so snapping moves coverage but never the mapping. */
+    private void planes(ScreenTriangles triangles, int tri, int i1, int i2, boolean perspective) {
+        double[] sc = triangles.screen();
+        double[] at = triangles.attributes();
+        int s = tri * ScreenTriangles.SCREEN_STRIDE;
+        int a = tri * ScreenTriangles.ATTRIBUTE_STRIDE;
+        double x0 = sc[s];
+        double y0 = sc[s + 1];
+        double ex1 = sc[s + 2 * i1] - x0;
+        double ey1 = sc[s + 2 * i1 + 1] - y0;
+        double ex2 = sc[s + 2 * i2] - x0;
+        double ey2 = sc[s + 2 * i2 + 1] - y0;
+        double det = ex1 * ey2 - ex2 * ey1;
+        if (det == 0 || !Double.isFinite(det)) {
+            // Snapping gave area to a triangle that had none: use the snapped corners instead.
+            int[] f = triangles.fixed();
+            int o = tri * ScreenTriangles.FIXED_STRIDE;
+            x0 = f[o] / (double) ONE;
+            y0 = f[o + 1] / (double) ONE;
+            ex1 = f[o + 2 * i1] / (double) ONE - x0;
+            ey1 = f[o + 2 * i1 + 1] / (double) ONE - y0;
+            ex2 = f[o + 2 * i2] / (double) ONE - x0;
+            ey2 = f[o + 2 * i2 + 1] / (double) ONE - y0;
+            det = ex1 * ey2 - ex2 * ey1;
+        }
+        double inv = 1.0 / det;
+        int c0 = a;
+        int c1 = a + 3 * i1;
+        int c2 = a + 3 * i2;
+        double q0 = at[c0];
+        double q1 = at[c1];
+        double q2 = at[c2];
+        double s0 = at[c0 + 1];
+        double s1 = at[c1 + 1];
+        double s2 = at[c2 + 1];
+        double t0 = at[c0 + 2];
+        double t1 = at[c1 + 2];
+        double t2 = at[c2 + 2];
+        double limit = FIXED_POINT_LIMIT;
+        fixedPointSafe = Math.abs(s0) < limit && Math.abs(s1) < limit && Math.abs(s2) < limit
+                && Math.abs(t0) < limit && Math.abs(t1) < limit && Math.abs(t2) < limit;
+        if (perspective) {
+            // Interpolate s/w and t/w; the pixel divides by the interpolated 1/w.
+            s0 *= q0;
+            s1 *= q1;
+            s2 *= q2;
+            t0 *= q0;
+            t1 *= q1;
+            t2 *= q2;
+        }
+        qPlane.fit(x0, y0, ex1, ey1, ex2, ey2, inv, q0, q1, q2);
+        sPlane.fit(x0, y0, ex1, ey1, ex2, ey2, inv, s0, s1, s2);
+        tPlane.fit(x0, y0, ex1, ey1, ex2, ey2, inv, t0, t1, t2);
+    }
+}
