@@ -36,14 +36,15 @@ final class ChunkGeometry {
     /**
      * What every chunk of one attempt at a frame's geometry works from.
      *
-     * @param clip            clip-space positions of the mesh, 4 doubles each (see {@link ClipSpace})
+     * @param draws           the meshes, their textures, and the frame's numbering of their triangles
+     * @param clip            clip-space positions of every draw, 4 doubles each (see {@link ClipSpace})
      * @param invalidPosition per position: not finite in clip space
      * @param guardX          the guard band as a multiple of the view volume's half-width
      * @param guardY          likewise of its half-height
      * @param split           tessellate (else pass triangles whole)
      * @param budget          the frame's piece budget, shared by all threads' tessellators
      */
-    record Input(Mesh mesh, Texture[] textures, double[] clip, boolean[] invalidPosition, RenderSettings settings,
+    record Input(Draws draws, double[] clip, boolean[] invalidPosition, RenderSettings settings,
                  Viewport viewport, double guardX, double guardY, boolean split, PieceBudget budget) {
     }
 
@@ -90,7 +91,18 @@ final class ChunkGeometry {
         for (int batchStart = from; batchStart < to && !budget.exceeded(); batchStart += BATCH) {
             int batchEnd = Math.min(to, batchStart + BATCH);
             long t0 = System.nanoTime();
-            int n = cullAndClip(w, chunk, in, batchStart, batchEnd, cullBack);
+            // The batch's triangles draw by draw: each draw's own arrays, its triangles and materials
+            // renumbered into the frame's.
+            Draws draws = in.draws();
+            int n = 0;
+            for (int d = draws.drawOf(batchStart); d < draws.size() && draws.firstTriangle(d) < batchEnd; d++) {
+                int first = draws.firstTriangle(d);
+                int lo = Math.max(batchStart, first);
+                int hi = Math.min(batchEnd, draws.firstTriangle(d + 1));
+                if (lo < hi) {
+                    n = cullAndClip(w, chunk, in, d, lo - first, hi - first, cullBack, n);
+                }
+            }
             long t1 = System.nanoTime();
             double[] b = w.batch;
             int stride = 3 * CLIP_STRIDE;
@@ -112,12 +124,18 @@ final class ChunkGeometry {
     }
 
     /**
-     * Culls and clips input triangles [from, to) into the thread's batch as triangles in clip space
-     * with texel coordinates, counting what it drops in {@code chunk}; returns how many.
+     * Culls and clips triangles [from, to) of draw {@code d} into the thread's batch, after the
+     * {@code count} already there, as triangles in clip space with texel coordinates, their frame
+     * triangle ids and frame materials, counting what it drops in {@code chunk}; returns the new count.
      */
-    private static int cullAndClip(Scratch w, Chunk chunk, Input in, int from, int to, boolean cullBack) {
-        Mesh mesh = in.mesh();
-        Texture[] textures = in.textures();
+    private static int cullAndClip(Scratch w, Chunk chunk, Input in, int d, int from, int to, boolean cullBack,
+                                   int count) {
+        Draws draws = in.draws();
+        Mesh mesh = draws.mesh(d);
+        Texture[] textures = draws.textures();
+        int idBase = draws.firstTriangle(d);
+        int positionBase = draws.firstPosition(d);
+        int materialBase = draws.firstMaterial(d);
         double[] clip = in.clip();
         boolean[] invalidPosition = in.invalidPosition();
         int[] corners = mesh.cornerPositions();
@@ -125,16 +143,16 @@ final class ChunkGeometry {
         int[] materials = mesh.triangleMaterials();
         float[] uvs = mesh.uvs();
         Clipper clipper = w.clipper;
-        int count = 0;
         double[] corner = w.corners;
         int c1 = CLIP_STRIDE;
         int c2 = 2 * CLIP_STRIDE;
         for (int t = from; t < to; t++) {
             int c = 3 * t;
-            int p0 = corners[c];
-            int p1 = corners[c + 1];
-            int p2 = corners[c + 2];
-            int material = materials[t];
+            int p0 = positionBase + corners[c];
+            int p1 = positionBase + corners[c + 1];
+            int p2 = positionBase + corners[c + 2];
+            int material = materialBase + materials[t];
+            int id = idBase + t;
             Texture tex = textures[material];
             if (invalidPosition[p0] || invalidPosition[p1] || invalidPosition[p2]
                     || !loadCorner(corner, 0, clip, p0, uvs, cornerUvs[c], tex)
@@ -165,7 +183,7 @@ final class ChunkGeometry {
                     | clipper.clipCode(corner[c1 + X], corner[c1 + Y], corner[c1 + Z], corner[c1 + W])
                     | clipper.clipCode(corner[c2 + X], corner[c2 + Y], corner[c2 + Z], corner[c2 + W]);
             if (g == 0) {
-                count = append(w, count, corner, 0, c1, c2, t, material);
+                count = append(w, count, corner, 0, c1, c2, id, material);
                 continue;
             }
             chunk.clipped++;
@@ -176,7 +194,7 @@ final class ChunkGeometry {
             }
             double[] poly = clipper.vertices();
             for (int k = 1; k + 1 < n; k++) {
-                count = append(w, count, poly, 0, k * CLIP_STRIDE, (k + 1) * CLIP_STRIDE, t, material);
+                count = append(w, count, poly, 0, k * CLIP_STRIDE, (k + 1) * CLIP_STRIDE, id, material);
             }
         }
         return count;

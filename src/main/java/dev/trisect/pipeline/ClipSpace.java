@@ -1,11 +1,11 @@
 package dev.trisect.pipeline;
 
 import dev.trisect.math.Mat4;
-import dev.trisect.mesh.Mesh;
 
 /**
- * The transform stage: every position of a mesh to clip space once, in doubles, with a flag on
- * each position that came out NaN or infinite. The arrays are kept from frame to frame.
+ * The transform stage: every position of every draw to clip space once, in doubles, by the draw's
+ * own model-view-projection, with a flag on each position that came out NaN or infinite. Draw d's
+ * positions land from {@link Draws#firstPosition}(d) on. The arrays are kept from frame to frame.
  */
 final class ClipSpace {
     /** Below this many positions the transform runs on one thread: sharing it out costs more. */
@@ -14,34 +14,40 @@ final class ClipSpace {
     private double[] clip = new double[0];
     private boolean[] invalid = new boolean[0];
 
-    /** Transforms the positions of {@code mesh} by {@code viewProjection} (world to clip space). */
-    void transform(Mesh mesh, Mat4 viewProjection, WorkerPool pool) {
-        int n = mesh.positionCount();
-        if (clip.length < 4 * n) {
-            clip = new double[4 * n];
-            invalid = new boolean[n];
+    /** Transforms the positions of every draw by its model-view-projection (object to clip space). */
+    void transform(Draws draws, WorkerPool pool) {
+        int total = draws.positionCount();
+        if (clip.length < 4 * total) {
+            clip = new double[4 * total];
+            invalid = new boolean[total];
         }
         double[] out = clip;
         boolean[] flags = invalid;
-        float[] p = mesh.positions();
-        int parts = n < PARALLEL_POSITIONS ? 1 : pool.threads();
-        int per = (n + parts - 1) / parts;
-        pool.run(parts, (thread, part) -> {
-            int to = Math.min(n, (part + 1) * per);
-            for (int i = part * per; i < to; i++) {
-                viewProjection.transformPoint(p[3 * i], p[3 * i + 1], p[3 * i + 2], out, 4 * i);
-                flags[i] = !(Double.isFinite(out[4 * i]) && Double.isFinite(out[4 * i + 1])
-                        && Double.isFinite(out[4 * i + 2]) && Double.isFinite(out[4 * i + 3]));
-            }
-        });
+        for (int d = 0; d < draws.size(); d++) {
+            Mat4 mvp = draws.transform(d);
+            float[] p = draws.mesh(d).positions();
+            int n = draws.mesh(d).positionCount();
+            int base = draws.firstPosition(d);
+            int parts = n < PARALLEL_POSITIONS ? 1 : pool.threads();
+            int per = (n + parts - 1) / parts;
+            pool.run(parts, (thread, part) -> {
+                int to = Math.min(n, (part + 1) * per);
+                for (int i = part * per; i < to; i++) {
+                    int o = 4 * (base + i);
+                    mvp.transformPoint(p[3 * i], p[3 * i + 1], p[3 * i + 2], out, o);
+                    flags[base + i] = !(Double.isFinite(out[o]) && Double.isFinite(out[o + 1])
+                            && Double.isFinite(out[o + 2]) && Double.isFinite(out[o + 3]));
+                }
+            });
+        }
     }
 
-    /** Clip-space x, y, z, w of each position of the last mesh transformed, 4 doubles each. */
+    /** Clip-space x, y, z, w of each frame position last transformed, 4 doubles each. */
     double[] positions() {
         return clip;
     }
 
-    /** Per position of the last mesh transformed: whether its clip-space coordinates are not all finite. */
+    /** Per frame position last transformed: whether its clip-space coordinates are not all finite. */
     boolean[] invalid() {
         return invalid;
     }

@@ -1,12 +1,9 @@
 package dev.trisect.pipeline;
 
-import dev.trisect.math.Mat4;
 import dev.trisect.math.Viewport;
-import dev.trisect.mesh.Mesh;
 import dev.trisect.raster.BandBins;
 import dev.trisect.tessellate.PieceBudget;
 import dev.trisect.tessellate.TessellationSettings;
-import dev.trisect.texture.Texture;
 
 /**
  * The geometry half of a frame, up to what the fill reads: transform the positions
@@ -44,23 +41,17 @@ final class FrameGeometry {
     }
 
     /**
-     * Makes the screen triangles of {@code mesh} seen through {@code viewProjection} (world to clip
-     * space) in a frame of {@code width x height} pixels, binned into bands.
-     *
-     * @param textures the texture of each material, by material index (their sizes scale the UVs)
+     * Makes the screen triangles of the draws, each seen through its own model-view-projection, in a
+     * frame of {@code width x height} pixels, binned into bands. The chunks cut the frame's triangle
+     * numbering (across all draws) exactly as they cut one mesh's.
      */
-    Result run(Mesh mesh, Texture[] textures, Mat4 viewProjection, RenderSettings settings, int width, int height,
-               WorkerPool pool) {
-        if (textures.length < mesh.materialCount()) {
-            throw new IllegalArgumentException("mesh has " + mesh.materialCount() + " materials but "
-                    + textures.length + " textures were given");
-        }
+    Result run(Draws draws, RenderSettings settings, int width, int height, WorkerPool pool) {
         long start = System.nanoTime();
         Viewport viewport = new Viewport(width, height);
-        clipSpace.transform(mesh, viewProjection, pool);
+        clipSpace.transform(draws, pool);
         long transformNanos = System.nanoTime() - start;
         int bands = BandBins.bandCount(height, FrameRenderer.BAND_ROWS);
-        int triangles = mesh.triangleCount();
+        int triangles = draws.triangleCount();
         int chunkCount = Chunks.count(triangles);
         chunks.ensure(chunkCount);
         int perChunk = Chunks.size(triangles, chunkCount);
@@ -72,7 +63,7 @@ final class FrameGeometry {
         DepthCapSearch.Attempt attempt = (depth, pieces) -> {
             pieceBudget.reset(pieces);
             RenderSettings s = depth == t.maxDepth() ? settings : settings.withTessellation(t.withMaxDepth(depth));
-            ChunkGeometry.Input in = new ChunkGeometry.Input(mesh, textures, clipSpace.positions(),
+            ChunkGeometry.Input in = new ChunkGeometry.Input(draws, clipSpace.positions(),
                     clipSpace.invalid(), s, viewport, gx, gy, split, pieceBudget);
             pool.run(chunkCount, (thread, c) -> {
                 int from = Math.min(triangles, c * perChunk);

@@ -50,6 +50,8 @@ public final class FrameRenderer implements AutoCloseable {
      * {@link #pieceAt} read; null before the first frame, after {@link #coverage} and after a failure.
      */
     private FrameGeometry.Result drawn;
+    /** The one draw of {@link #render(Mesh, Texture[], Mat4, RenderSettings, Framebuffer)}, reused. */
+    private final Draws single = new Draws();
 
     /** A renderer using every available processor. */
     public FrameRenderer() {
@@ -73,7 +75,7 @@ public final class FrameRenderer implements AutoCloseable {
     }
 
     /**
-     * Draws {@code mesh} into {@code frame}.
+     * Draws {@code mesh} into {@code frame}: one draw (see {@link #render(Draws, RenderSettings, Framebuffer)}).
      *
      * @param textures       the texture of each material of the mesh, by material index
      * @param viewProjection world space to clip space (projection * view), as OpenGL
@@ -81,16 +83,34 @@ public final class FrameRenderer implements AutoCloseable {
      */
     public FrameStats render(Mesh mesh, Texture[] textures, Mat4 viewProjection, RenderSettings settings,
                              Framebuffer frame) {
+        single.clear();
+        single.add(mesh, textures, viewProjection);
+        try {
+            return render(single, settings, frame);
+        } finally {
+            single.clear();
+        }
+    }
+
+    /**
+     * Draws every draw into {@code frame}, one depth buffer for all, after clearing it: each mesh's
+     * positions go through that draw's own model-view-projection, so moving one object never touches
+     * another's data. Triangles are numbered across the draws (see {@link Draws}) in the UV output
+     * and in {@link #pieceAt}.
+     *
+     * @return what the frame did ({@code trianglesIn} counts every draw's triangles)
+     */
+    public FrameStats render(Draws draws, RenderSettings settings, Framebuffer frame) {
         long start = System.nanoTime();
         drawn = null;
-        FrameGeometry.Result g = geometry.run(mesh, textures, viewProjection, settings, frame.width(),
-                frame.height(), pool);
+        FrameGeometry.Result g = geometry.run(draws, settings, frame.width(), frame.height(), pool);
         long geometryDone = System.nanoTime();
-        BandPass.Result b = bands.draw(frame, geometry.chunks(), g.chunkCount(), textures, settings, outlines, pool);
+        BandPass.Result b = bands.draw(frame, geometry.chunks(), g.chunkCount(), draws.textures(), settings, outlines,
+                pool);
         long end = System.nanoTime();
         drawn = g;
         return new FrameStatsBuilder(pool.threads(), start)
-                .geometry(mesh.triangleCount(), geometry.chunks(), g, geometryDone)
+                .geometry(draws.triangleCount(), geometry.chunks(), g, geometryDone)
                 .bands(b, end, settings.borders());
     }
 
@@ -130,8 +150,14 @@ public final class FrameRenderer implements AutoCloseable {
     public int[] coverage(Mesh mesh, Texture[] textures, Mat4 viewProjection, RenderSettings settings,
                           int width, int height) {
         drawn = null;
-        FrameGeometry.Result g = geometry.run(mesh, textures, viewProjection, settings, width, height, pool);
-        return bands.coverage(geometry.chunks(), g.chunkCount(), width, height, pool);
+        single.clear();
+        single.add(mesh, textures, viewProjection);
+        try {
+            FrameGeometry.Result g = geometry.run(single, settings, width, height, pool);
+            return bands.coverage(geometry.chunks(), g.chunkCount(), width, height, pool);
+        } finally {
+            single.clear();
+        }
     }
 
     private int drawnChunks() {

@@ -4,15 +4,13 @@ import dev.trisect.math.Mat4;
 import dev.trisect.math.Vec3;
 import dev.trisect.math.Viewport;
 import dev.trisect.mesh.Mesh;
-import dev.trisect.mesh.MeshBuilder;
+import dev.trisect.pipeline.Draws;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.FrameStats;
 import dev.trisect.pipeline.RenderSettings;
 import dev.trisect.raster.Framebuffer;
 import dev.trisect.texture.Texture;
 import java.awt.image.BufferedImage;
-import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
@@ -36,6 +34,8 @@ import java.util.Optional;
  */
 public final class SceneRenderer implements AutoCloseable {
     private final FrameRenderer renderer;
+    /** The draws of the last frame, kept for {@link #pick}'s redraw. */
+    private final Draws draws = new Draws();
     private boolean closed;
     /** What the last frame drew, for {@link #pick}; null before the first frame. */
     private Drawn last;
@@ -72,8 +72,8 @@ public final class SceneRenderer implements AutoCloseable {
         Objects.requireNonNull(camera, "camera is null");
         Objects.requireNonNull(settings, "render settings are null: use RenderSettings.defaults()");
         Objects.requireNonNull(frame, "framebuffer is null");
-        Drawn d = new Drawn(scene.snapshot(), camera, settings, frame.width(), frame.height());
-        FrameStats stats = renderer.render(d.mesh, d.textures, d.viewProjection, settings, frame);
+        Drawn d = new Drawn(scene.snapshot(), camera, settings, frame.width(), frame.height(), draws);
+        FrameStats stats = renderer.render(draws, settings, frame);
         d.uvFrame = frame.uv() != null ? frame : null;
         last = d;
         return stats;
@@ -106,7 +106,7 @@ public final class SceneRenderer implements AutoCloseable {
         if (uv == null) {
             Framebuffer f = new Framebuffer(d.width, d.height);
             f.recordUv(true);
-            renderer.render(d.mesh, d.textures, d.viewProjection, d.settings.withBorders(false), f);
+            renderer.render(d.draws, d.settings.withBorders(false), f);
             d.uvFrame = f;
             uv = f.uv();
         }
@@ -155,91 +155,41 @@ public final class SceneRenderer implements AutoCloseable {
         }
     }
 
-    /**
-     * One frame's objects, merged into one world-space mesh.
-     *
-     * <p>Interim: until the frame pipeline draws a list of objects each with its own transform, the
-     * objects' positions are taken to world space here, each frame. The API does not change when
-     * that lands.
-     */
+    /** One frame's objects as the pipeline drew them: a draw per object, its own model-view-projection. */
     private static final class Drawn {
         final List<Scene.Placed> placed;
         final Camera camera;
         final RenderSettings settings;
         final int width;
         final int height;
-        final Mat4 viewProjection;
-        final Mesh mesh;
-        final Texture[] textures;
-        /** First frame triangle id of each placed object. */
-        final int[] firstTriangle;
+        final Draws draws;
         /** The framebuffer holding this frame's UV output, or null. */
         Framebuffer uvFrame;
 
-        Drawn(List<Scene.Placed> placed, Camera camera, RenderSettings settings, int width, int height) {
+        Drawn(List<Scene.Placed> placed, Camera camera, RenderSettings settings, int width, int height, Draws draws) {
             this.placed = placed;
             this.camera = camera;
             this.settings = settings;
             this.width = width;
             this.height = height;
-            this.viewProjection = camera.viewProjection(new Viewport(width, height));
-            MeshBuilder b = new MeshBuilder();
-            List<Texture> tex = new ArrayList<>();
-            firstTriangle = new int[placed.size()];
-            double[] p = new double[4];
-            for (int k = 0; k < placed.size(); k++) {
-                Scene.Placed o = placed.get(k);
-                firstTriangle[k] = b.triangleCount();
-                Mesh m = o.mesh();
-                int p0 = b.positionCount();
-                int t0 = b.uvCount();
-                float[] pos = m.positions();
-                for (int i = 0; i < m.positionCount(); i++) {
-                    o.world().transformPoint(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2], p, 0);
-                    b.position(p[0] / p[3], p[1] / p[3], p[2] / p[3]);
+            this.draws = draws;
+            Mat4 viewProjection = camera.viewProjection(new Viewport(width, height));
+            draws.clear();
+            for (Scene.Placed o : placed) {
+                List<Material> materials = o.materials();
+                Texture[] textures = new Texture[materials.size()];
+                for (int i = 0; i < textures.length; i++) {
+                    textures[i] = materials.get(i).texture();
                 }
-                float[] uvs = m.uvs();
-                for (int i = 0; i < m.uvCount(); i++) {
-                    b.uv(uvs[2 * i], uvs[2 * i + 1]);
-                }
-                int[] cp = m.cornerPositions();
-                int[] cu = m.cornerUvs();
-                int[] mat = m.triangleMaterials();
-                for (int t = 0; t < m.triangleCount(); t++) {
-                    b.material(k + "/" + mat[t]);
-                    int c = 3 * t;
-                    b.triangle(p0 + cp[c], p0 + cp[c + 1], p0 + cp[c + 2], uvIndex(t0, cu[c]), uvIndex(t0, cu[c + 1]),
-                            uvIndex(t0, cu[c + 2]));
-                }
+                draws.add(o.mesh(), textures, viewProjection.mul(o.world()));
             }
-            mesh = b.build();
-            for (String name : mesh.materialNames()) {
-                if (name.equals("default")) {
-                    tex.add(Texture.solid("none", 0xFF000000));
-                    continue;
-                }
-                int slash = name.indexOf('/');
-                int k = Integer.parseInt(name.substring(0, slash));
-                tex.add(placed.get(k).materials().get(Integer.parseInt(name.substring(slash + 1))).texture());
-            }
-            textures = tex.toArray(new Texture[0]);
-        }
-
-        private static int uvIndex(int first, int index) {
-            return index < 0 ? -1 : first + index;
         }
 
         /** The pick at pixel (x, y) showing frame triangle {@code id} with texel coordinates (s, t). */
         Pick pick(int id, double s, double t, int x, int y) {
-            int k = Arrays.binarySearch(firstTriangle, id);
-            if (k < 0) {
-                k = -k - 2;
-            }
-            while (k + 1 < firstTriangle.length && firstTriangle[k + 1] == firstTriangle[k] && firstTriangle[k] <= id) {
-                k++; // skip objects with no triangles
-            }
+            int k = draws.drawOf(id);
             Scene.Placed o = placed.get(k);
-            int tri = id - firstTriangle[k];
+            int tri = id - draws.firstTriangle(k);
             Mesh m = o.mesh();
             Texture texture = o.materials().get(m.triangleMaterials()[tri]).texture();
             // The ray through the pixel centre, world space (as gluLookAt and gluPerspective build it).

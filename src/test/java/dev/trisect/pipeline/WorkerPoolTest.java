@@ -180,7 +180,8 @@ class WorkerPoolTest {
     void aRendererRecoversFromAFailedFrameAndRefusesWorkAfterClose() {
         SceneAsset scene = DemoScenes.boxes();
         Texture[] good = scene.textureArray();
-        // A missing texture fails inside the frame's tasks (clipping reads its size).
+        // A missing texture is refused before the frame starts (Draws.add names the material); the pool's
+        // own tests above cover failures inside the tasks.
         Texture[] broken = good.clone();
         broken[broken.length - 1] = null;
         var vp = scene.camera().viewProjection(new Viewport(160, 120));
@@ -191,8 +192,9 @@ class WorkerPoolTest {
         }
         FrameRenderer r = new FrameRenderer(3);
         for (int i = 0; i < 3; i++) {
-            assertThrows(NullPointerException.class,
+            IllegalArgumentException missing = assertThrows(IllegalArgumentException.class,
                     () -> r.render(scene.mesh(), broken, vp, s, new Framebuffer(160, 120)));
+            assertTrue(missing.getMessage().contains("is null"), missing.getMessage());
             Framebuffer after = new Framebuffer(160, 120);
             r.render(scene.mesh(), good, vp, s, after);
             assertArrayEquals(expected.color(), after.color(), "the frame after a failed one is right");

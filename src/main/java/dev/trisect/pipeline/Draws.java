@@ -1,0 +1,158 @@
+package dev.trisect.pipeline;
+
+import dev.trisect.math.Mat4;
+import dev.trisect.mesh.Mesh;
+import dev.trisect.texture.Texture;
+import java.util.Arrays;
+import java.util.Objects;
+
+/**
+ * What one frame draws: a list of meshes, each with the texture of each of its materials and its
+ * own model-view-projection (object space to clip space). Reused from frame to frame: {@link #clear}
+ * then {@link #add} each draw.
+ *
+ * <p>The frame numbers triangles across the draws in order: draw d's triangle t is frame triangle
+ * {@code firstTriangle(d) + t} (the id in the UV output and in {@link FrameRenderer#pieceAt}), and
+ * likewise its positions and materials follow those of the draws before it, so that the stages
+ * after the transform see one list of triangles, positions and textures. One draw is exactly the
+ * single-mesh frame: every base is 0.
+ */
+public final class Draws {
+    private Mesh[] meshes = new Mesh[4];
+    private Mat4[] transforms = new Mat4[4];
+    /** Per draw and one past the last: the first frame triangle, position and material of the draw. */
+    private int[] firstTriangle = new int[5];
+    private int[] firstPosition = new int[5];
+    private int[] firstMaterial = new int[5];
+    /** The textures of every draw's materials, concatenated: indexed by frame material. */
+    private Texture[] textures = new Texture[4];
+    private int count;
+
+    /** Removes every draw, keeping the storage. */
+    public void clear() {
+        Arrays.fill(meshes, 0, count, null);
+        Arrays.fill(transforms, 0, count, null);
+        Arrays.fill(textures, 0, firstMaterial[count], null);
+        count = 0;
+    }
+
+    /**
+     * Adds a mesh to draw after those added before.
+     *
+     * @param textures            the texture of each material of the mesh, by material index (entries
+     *                            past the mesh's material count are ignored)
+     * @param modelViewProjection object space to clip space (projection * view * model), as OpenGL
+     * @throws IllegalArgumentException when a texture is missing, or the frame would exceed
+     *                                   {@link Integer#MAX_VALUE} triangles or positions
+     */
+    public void add(Mesh mesh, Texture[] textures, Mat4 modelViewProjection) {
+        Objects.requireNonNull(mesh, "mesh is null");
+        Objects.requireNonNull(textures, "textures array is null");
+        Objects.requireNonNull(modelViewProjection, "model-view-projection matrix is null");
+        int materials = mesh.materialCount();
+        if (textures.length < materials) {
+            throw new IllegalArgumentException("mesh has " + materials + " materials but " + textures.length
+                    + " textures were given");
+        }
+        for (int i = 0; i < materials; i++) {
+            if (textures[i] == null) {
+                throw new IllegalArgumentException("the texture of material " + i + " (" + mesh.materialNames().get(i)
+                        + ") is null");
+            }
+        }
+        long triangles = (long) firstTriangle[count] + mesh.triangleCount();
+        long positions = (long) firstPosition[count] + mesh.positionCount();
+        if (triangles > Integer.MAX_VALUE || positions > Integer.MAX_VALUE) {
+            throw new IllegalArgumentException("a frame holds at most " + Integer.MAX_VALUE
+                    + " triangles and positions");
+        }
+        if (count == meshes.length) {
+            meshes = Arrays.copyOf(meshes, 2 * count);
+            transforms = Arrays.copyOf(transforms, 2 * count);
+            firstTriangle = Arrays.copyOf(firstTriangle, 2 * count + 1);
+            firstPosition = Arrays.copyOf(firstPosition, 2 * count + 1);
+            firstMaterial = Arrays.copyOf(firstMaterial, 2 * count + 1);
+        }
+        int m0 = firstMaterial[count];
+        if (m0 + materials > this.textures.length) {
+            this.textures = Arrays.copyOf(this.textures, Math.max(2 * this.textures.length, m0 + materials));
+        }
+        System.arraycopy(textures, 0, this.textures, m0, materials);
+        meshes[count] = mesh;
+        transforms[count] = modelViewProjection;
+        firstTriangle[count + 1] = (int) triangles;
+        firstPosition[count + 1] = (int) positions;
+        firstMaterial[count + 1] = m0 + materials;
+        count++;
+    }
+
+    /** Number of draws. */
+    public int size() {
+        return count;
+    }
+
+    /** Triangles of all draws. */
+    public int triangleCount() {
+        return firstTriangle[count];
+    }
+
+    /** Positions of all draws. */
+    int positionCount() {
+        return firstPosition[count];
+    }
+
+    /** The mesh of draw {@code d}. */
+    public Mesh mesh(int d) {
+        return meshes[d];
+    }
+
+    /** The model-view-projection of draw {@code d}. */
+    Mat4 transform(int d) {
+        return transforms[d];
+    }
+
+    /** Frame triangle of draw {@code d}'s first triangle; {@code d == size()} gives the total. */
+    public int firstTriangle(int d) {
+        return firstTriangle[d];
+    }
+
+    /** Frame position of draw {@code d}'s first position. */
+    int firstPosition(int d) {
+        return firstPosition[d];
+    }
+
+    /** Frame material of draw {@code d}'s first material. */
+    int firstMaterial(int d) {
+        return firstMaterial[d];
+    }
+
+    /** Every draw's textures, indexed by frame material; read-only, may be longer than needed. */
+    Texture[] textures() {
+        return textures;
+    }
+
+    /**
+     * The draw holding frame triangle {@code triangle}: the last draw whose first triangle is at most
+     * {@code triangle} and which has triangles.
+     *
+     * @throws IndexOutOfBoundsException outside 0..triangleCount()-1
+     */
+    public int drawOf(int triangle) {
+        if (triangle < 0 || triangle >= triangleCount()) {
+            throw new IndexOutOfBoundsException("frame triangle " + triangle + " not in 0.." + (triangleCount() - 1));
+        }
+        int lo = 0;
+        int hi = count - 1;
+        // Largest d with firstTriangle[d] <= triangle: draws without triangles share their successor's
+        // first triangle and so are passed over.
+        while (lo < hi) {
+            int mid = (lo + hi + 1) >>> 1;
+            if (firstTriangle[mid] <= triangle) {
+                lo = mid;
+            } else {
+                hi = mid - 1;
+            }
+        }
+        return lo;
+    }
+}
