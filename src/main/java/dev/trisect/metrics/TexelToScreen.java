@@ -3,6 +3,7 @@ package dev.trisect.metrics;
 import dev.trisect.math.Mat4;
 import dev.trisect.math.Viewport;
 import dev.trisect.mesh.Mesh;
+import dev.trisect.pipeline.Draws;
 import dev.trisect.texture.Texture;
 import java.util.Arrays;
 
@@ -47,10 +48,11 @@ public final class TexelToScreen {
     private static final int DEGENERATE = -1;
     private static final int INVALID = -2;
 
-    private final Mesh mesh;
+    /** What the frame drew; triangles are numbered across its draws, as the UV output's ids. */
+    private final Draws draws;
+    /** Texture size of each frame material (the draws' materials, concatenated). */
     private final int[] textureWidths;
     private final int[] textureHeights;
-    private final Mat4 viewProjection;
     private final double halfWidth;
     private final double halfHeight;
     /** Per triangle: UNBUILT, DEGENERATE, INVALID, or 1 + the map's index in {@link #maps}. */
@@ -71,21 +73,36 @@ public final class TexelToScreen {
      * @throws IllegalArgumentException when there are fewer textures than materials
      */
     public TexelToScreen(Mesh mesh, Texture[] textures, Mat4 viewProjection, Viewport viewport) {
-        if (textures.length < mesh.materialCount()) {
-            throw new IllegalArgumentException("mesh has " + mesh.materialCount() + " materials but "
-                    + textures.length + " textures were given");
-        }
-        this.mesh = mesh;
-        this.textureWidths = new int[mesh.materialCount()];
-        this.textureHeights = new int[mesh.materialCount()];
-        for (int m = 0; m < textureWidths.length; m++) {
+        this(one(mesh, textures, viewProjection), viewport);
+    }
+
+    private static Draws one(Mesh mesh, Texture[] textures, Mat4 viewProjection) {
+        Draws d = new Draws();
+        d.add(mesh, textures, viewProjection);
+        return d;
+    }
+
+    /**
+     * The maps of one frame of several draws, each mesh with its own model-view-projection; triangle
+     * ids are the frame's (numbered across the draws, as in the UV output). Reads {@code draws} as it
+     * is now: build a new instance after the draws are cleared or changed.
+     *
+     * @param draws    what the frame drew
+     * @param viewport the frame's size
+     */
+    public TexelToScreen(Draws draws, Viewport viewport) {
+        this.draws = draws;
+        int materials = draws.firstMaterial(draws.size());
+        this.textureWidths = new int[materials];
+        this.textureHeights = new int[materials];
+        Texture[] textures = draws.textures();
+        for (int m = 0; m < materials; m++) {
             textureWidths[m] = textures[m].width();
             textureHeights[m] = textures[m].height();
         }
-        this.viewProjection = viewProjection;
         this.halfWidth = 0.5 * viewport.width();
         this.halfHeight = 0.5 * viewport.height();
-        this.slot = new int[mesh.triangleCount()];
+        this.slot = new int[draws.triangleCount()];
     }
 
     /** Number of triangles of the mesh (valid triangle indices are 0 to this minus 1). */
@@ -171,17 +188,21 @@ public final class TexelToScreen {
         return k > 0 ? (k - 1) * STRIDE : k;
     }
 
-    private int build(int triangle) {
+    private int build(int frameTriangle) {
+        int d = draws.drawOf(frameTriangle);
+        int triangle = frameTriangle - draws.firstTriangle(d);
+        Mesh mesh = draws.mesh(d);
+        Mat4 modelViewProjection = draws.transform(d);
         int[] corners = mesh.cornerPositions();
         int[] cornerUvs = mesh.cornerUvs();
         float[] positions = mesh.positions();
         float[] uvs = mesh.uvs();
-        int material = mesh.triangleMaterials()[triangle];
+        int material = draws.firstMaterial(d) + mesh.triangleMaterials()[triangle];
         int texW = textureWidths[material];
         int texH = textureHeights[material];
         for (int i = 0; i < 3; i++) {
             int p = corners[3 * triangle + i];
-            viewProjection.transformPoint(positions[3 * p], positions[3 * p + 1], positions[3 * p + 2], clip, 4 * i);
+            modelViewProjection.transformPoint(positions[3 * p], positions[3 * p + 1], positions[3 * p + 2], clip, 4 * i);
             int uv = cornerUvs[3 * triangle + i];
             // A corner without texture coordinates has UV (0, 0), as the renderer treats it.
             st[2 * i] = uv < 0 ? 0 : (double) uvs[2 * uv] * texW;

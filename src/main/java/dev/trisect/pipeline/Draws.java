@@ -107,7 +107,7 @@ public final class Draws {
     }
 
     /** The model-view-projection of draw {@code d}. */
-    Mat4 transform(int d) {
+    public Mat4 transform(int d) {
         return transforms[d];
     }
 
@@ -122,12 +122,12 @@ public final class Draws {
     }
 
     /** Frame material of draw {@code d}'s first material. */
-    int firstMaterial(int d) {
+    public int firstMaterial(int d) {
         return firstMaterial[d];
     }
 
     /** Every draw's textures, indexed by frame material; read-only, may be longer than needed. */
-    Texture[] textures() {
+    public Texture[] textures() {
         return textures;
     }
 

@@ -1,15 +1,12 @@
 package dev.trisect.scene;
 
-import dev.trisect.math.Mat4;
-import dev.trisect.math.Vec3;
 import dev.trisect.math.Viewport;
-import dev.trisect.mesh.Mesh;
 import dev.trisect.pipeline.Draws;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.FrameStats;
 import dev.trisect.pipeline.RenderSettings;
 import dev.trisect.raster.Framebuffer;
-import dev.trisect.texture.Texture;
+import dev.trisect.scene.internal.DrawnFrame;
 import java.awt.image.BufferedImage;
 import java.util.List;
 import java.util.Objects;
@@ -155,10 +152,9 @@ public final class SceneRenderer implements AutoCloseable {
         }
     }
 
-    /** One frame's objects as the pipeline drew them: a draw per object, its own model-view-projection. */
+    /** One frame as drawn, with what {@link #pick}'s redraw needs. */
     private static final class Drawn {
-        final List<Scene.Placed> placed;
-        final Camera camera;
+        final DrawnFrame frame;
         final RenderSettings settings;
         final int width;
         final int height;
@@ -167,67 +163,15 @@ public final class SceneRenderer implements AutoCloseable {
         Framebuffer uvFrame;
 
         Drawn(List<Scene.Placed> placed, Camera camera, RenderSettings settings, int width, int height, Draws draws) {
-            this.placed = placed;
-            this.camera = camera;
+            this.frame = new DrawnFrame(placed, camera, width, height, draws);
             this.settings = settings;
             this.width = width;
             this.height = height;
             this.draws = draws;
-            Mat4 viewProjection = camera.viewProjection(new Viewport(width, height));
-            draws.clear();
-            for (Scene.Placed o : placed) {
-                List<Material> materials = o.materials();
-                Texture[] textures = new Texture[materials.size()];
-                for (int i = 0; i < textures.length; i++) {
-                    textures[i] = materials.get(i).texture();
-                }
-                draws.add(o.mesh(), textures, viewProjection.mul(o.world()));
-            }
         }
 
-        /** The pick at pixel (x, y) showing frame triangle {@code id} with texel coordinates (s, t). */
         Pick pick(int id, double s, double t, int x, int y) {
-            int k = draws.drawOf(id);
-            Scene.Placed o = placed.get(k);
-            int tri = id - draws.firstTriangle(k);
-            Mesh m = o.mesh();
-            Texture texture = o.materials().get(m.triangleMaterials()[tri]).texture();
-            // The ray through the pixel centre, world space (as gluLookAt and gluPerspective build it).
-            Vec3 f = camera.target().sub(camera.eye()).normalize();
-            Vec3 side = f.cross(camera.up()).normalize();
-            Vec3 up = side.cross(f);
-            double tanHalf = Math.tan(Math.toRadians(camera.fovY()) / 2);
-            double nx = 2 * (x + 0.5) / width - 1;
-            double ny = 1 - 2 * (y + 0.5) / height;
-            Vec3 dir = f.add(side.scale(nx * tanHalf * width / height)).add(up.scale(ny * tanHalf));
-            Vec3[] c = new Vec3[3];
-            double[] cu = new double[3];
-            double[] cv = new double[3];
-            double[] p = new double[4];
-            for (int j = 0; j < 3; j++) {
-                int pi = m.cornerPositions()[3 * tri + j];
-                float[] pos = m.positions();
-                o.world().transformPoint(pos[3 * pi], pos[3 * pi + 1], pos[3 * pi + 2], p, 0);
-                c[j] = new Vec3(p[0] / p[3], p[1] / p[3], p[2] / p[3]);
-                int ui = m.cornerUvs()[3 * tri + j];
-                cu[j] = ui < 0 ? 0 : m.uvs()[2 * ui];
-                cv[j] = ui < 0 ? 0 : m.uvs()[2 * ui + 1];
-            }
-            Vec3 e1 = c[1].sub(c[0]);
-            Vec3 e2 = c[2].sub(c[0]);
-            Vec3 n = e1.cross(e2);
-            double along = n.dot(c[0].sub(camera.eye())) / n.dot(dir);
-            Vec3 point = camera.eye().add(dir.scale(along));
-            // Barycentric weights of the point in the triangle (areas against the normal).
-            double nn = n.dot(n);
-            double b1 = point.sub(c[0]).cross(e2).dot(n) / nn;
-            double b2 = e1.cross(point.sub(c[0])).dot(n) / nn;
-            double b0 = 1 - b1 - b2;
-            double u = b0 * cu[0] + b1 * cu[1] + b2 * cu[2];
-            double v = b0 * cv[0] + b1 * cv[1] + b2 * cv[2];
-            int index = texture.texelIndex(s, t);
-            return new Pick(o.object(), tri, point, u, v, texture, index % texture.width(), index / texture.width(),
-                    x, y);
+            return frame.pick(id, s, t, x, y);
         }
     }
 }

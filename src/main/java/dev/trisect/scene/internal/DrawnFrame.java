@@ -1,0 +1,119 @@
+package dev.trisect.scene.internal;
+
+import dev.trisect.math.Mat4;
+import dev.trisect.math.Vec3;
+import dev.trisect.math.Viewport;
+import dev.trisect.mesh.Mesh;
+import dev.trisect.pipeline.Draws;
+import dev.trisect.scene.Camera;
+import dev.trisect.scene.Material;
+import dev.trisect.scene.Pick;
+import dev.trisect.scene.Scene;
+import dev.trisect.texture.Texture;
+import java.util.List;
+
+/**
+ * One frame's objects as the pipeline draws them: a draw per visible object, with its own
+ * model-view-projection, and the way back from a pixel of the frame to the object, the triangle, the
+ * exact 3D point and the texel it shows ({@link #pick}). Used by {@link dev.trisect.scene.SceneRenderer}
+ * and the view. Valid while its {@link Draws} are not refilled.
+ */
+public final class DrawnFrame {
+    private final List<Scene.Placed> placed;
+    private final Camera camera;
+    private final int width;
+    private final int height;
+    private final Draws draws;
+
+    /**
+     * Fills {@code draws} (cleared first) with a draw per object of {@code placed}, each with its own
+     * model-view-projection for {@code camera} and a {@code width x height} frame.
+     */
+    public DrawnFrame(List<Scene.Placed> placed, Camera camera, int width, int height, Draws draws) {
+        this.placed = placed;
+        this.camera = camera;
+        this.width = width;
+        this.height = height;
+        this.draws = draws;
+        Mat4 viewProjection = camera.viewProjection(new Viewport(width, height));
+        draws.clear();
+        for (Scene.Placed o : placed) {
+            List<Material> materials = o.materials();
+            Texture[] textures = new Texture[materials.size()];
+            for (int i = 0; i < textures.length; i++) {
+                textures[i] = materials.get(i).texture();
+            }
+            draws.add(o.mesh(), textures, viewProjection.mul(o.world()));
+        }
+    }
+
+    /** The draws, as filled. */
+    public Draws draws() {
+        return draws;
+    }
+
+    /** The objects drawn, in draw order. */
+    public List<Scene.Placed> placed() {
+        return placed;
+    }
+
+    /** The camera the frame was drawn with. */
+    public Camera camera() {
+        return camera;
+    }
+
+    /** The texture frame triangle {@code id} was drawn with. */
+    public Texture textureOf(int id) {
+        int k = draws.drawOf(id);
+        Scene.Placed o = placed.get(k);
+        return o.materials().get(o.mesh().triangleMaterials()[id - draws.firstTriangle(k)]).texture();
+    }
+
+    /**
+     * The pick at pixel (x, y) showing frame triangle {@code id} (0-based: the UV output's id minus
+     * 1) with texel coordinates (s, t) (from the UV output).
+     */
+    public Pick pick(int id, double s, double t, int x, int y) {
+        int k = draws.drawOf(id);
+        Scene.Placed o = placed.get(k);
+        int tri = id - draws.firstTriangle(k);
+        Mesh m = o.mesh();
+        Texture texture = o.materials().get(m.triangleMaterials()[tri]).texture();
+        // The ray through the pixel centre, world space (as gluLookAt and gluPerspective build it).
+        Vec3 f = camera.target().sub(camera.eye()).normalize();
+        Vec3 side = f.cross(camera.up()).normalize();
+        Vec3 up = side.cross(f);
+        double tanHalf = Math.tan(Math.toRadians(camera.fovY()) / 2);
+        double nx = 2 * (x + 0.5) / width - 1;
+        double ny = 1 - 2 * (y + 0.5) / height;
+        Vec3 dir = f.add(side.scale(nx * tanHalf * width / height)).add(up.scale(ny * tanHalf));
+        Vec3[] c = new Vec3[3];
+        double[] cu = new double[3];
+        double[] cv = new double[3];
+        double[] p = new double[4];
+        for (int j = 0; j < 3; j++) {
+            int pi = m.cornerPositions()[3 * tri + j];
+            float[] pos = m.positions();
+            o.world().transformPoint(pos[3 * pi], pos[3 * pi + 1], pos[3 * pi + 2], p, 0);
+            c[j] = new Vec3(p[0] / p[3], p[1] / p[3], p[2] / p[3]);
+            int ui = m.cornerUvs()[3 * tri + j];
+            cu[j] = ui < 0 ? 0 : m.uvs()[2 * ui];
+            cv[j] = ui < 0 ? 0 : m.uvs()[2 * ui + 1];
+        }
+        Vec3 e1 = c[1].sub(c[0]);
+        Vec3 e2 = c[2].sub(c[0]);
+        Vec3 n = e1.cross(e2);
+        double along = n.dot(c[0].sub(camera.eye())) / n.dot(dir);
+        Vec3 point = camera.eye().add(dir.scale(along));
+        // Barycentric weights of the point in the triangle (areas against the normal).
+        double nn = n.dot(n);
+        double b1 = point.sub(c[0]).cross(e2).dot(n) / nn;
+        double b2 = e1.cross(point.sub(c[0])).dot(n) / nn;
+        double b0 = 1 - b1 - b2;
+        double u = b0 * cu[0] + b1 * cu[1] + b2 * cu[2];
+        double v = b0 * cv[0] + b1 * cv[1] + b2 * cv[2];
+        int index = texture.texelIndex(s, t);
+        return new Pick(o.object(), tri, point, u, v, texture, index % texture.width(), index / texture.width(),
+                x, y);
+    }
+}
