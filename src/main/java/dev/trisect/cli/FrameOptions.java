@@ -1,12 +1,12 @@
 package dev.trisect.cli;
 
 import dev.trisect.base.InputException;
-import dev.trisect.math.Vec3;
-import dev.trisect.pipeline.CullMode;
-import dev.trisect.scene.Camera;
 import dev.trisect.content.DemoScenes;
 import dev.trisect.content.SceneAsset;
 import dev.trisect.content.SceneLoader;
+import dev.trisect.math.Vec3;
+import dev.trisect.render.CullMode;
+import dev.trisect.scene.Camera;
 import java.nio.file.Path;
 import java.util.function.Consumer;
 import picocli.CommandLine.Option;

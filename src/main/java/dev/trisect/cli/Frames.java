@@ -1,7 +1,7 @@
 package dev.trisect.cli;
 
 import dev.trisect.base.InputException;
-import dev.trisect.raster.Framebuffer;
+import dev.trisect.render.Framebuffer;
 
 /** Frame allocation with a clear message when memory runs short. */
 final class Frames {

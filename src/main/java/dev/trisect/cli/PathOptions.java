@@ -1,12 +1,12 @@
 package dev.trisect.cli;
 
 import dev.trisect.base.InputException;
-import dev.trisect.pipeline.RenderMode;
-import dev.trisect.pipeline.RenderSettings;
-import dev.trisect.raster.BorderStyle;
-import dev.trisect.tessellate.SplitPoint;
-import dev.trisect.tessellate.SplitPolicy;
-import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.render.BorderStyle;
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.RenderSettings;
+import dev.trisect.render.SplitPoint;
+import dev.trisect.render.SplitPolicy;
+import dev.trisect.render.TessellationSettings;
 import dev.trisect.texture.TextureFilter;
 import picocli.CommandLine.Option;
 

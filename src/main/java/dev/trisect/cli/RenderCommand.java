@@ -1,14 +1,14 @@
 package dev.trisect.cli;
 
+import dev.trisect.content.SceneAsset;
 import dev.trisect.io.ImageFiles;
 import dev.trisect.io.OutputBatch;
 import dev.trisect.io.Pfm;
 import dev.trisect.pipeline.FrameRenderer;
-import dev.trisect.pipeline.FrameStats;
-import dev.trisect.pipeline.RenderSettings;
-import dev.trisect.raster.Framebuffer;
+import dev.trisect.render.FrameStats;
+import dev.trisect.render.Framebuffer;
+import dev.trisect.render.RenderSettings;
 import dev.trisect.scene.Camera;
-import dev.trisect.content.SceneAsset;
 import java.nio.file.Path;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;

@@ -2,7 +2,7 @@ package dev.trisect.cli;
 
 import dev.trisect.base.JsonObject;
 import dev.trisect.perf.Sweep;
-import dev.trisect.tessellate.SplitPolicy;
+import dev.trisect.render.SplitPolicy;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;

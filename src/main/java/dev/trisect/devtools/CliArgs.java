@@ -1,9 +1,9 @@
 package dev.trisect.devtools;
 
-import dev.trisect.pipeline.RenderSettings;
-import dev.trisect.scene.Camera;
 import dev.trisect.content.SceneAsset;
-import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.render.RenderSettings;
+import dev.trisect.render.TessellationSettings;
+import dev.trisect.scene.Camera;
 import dev.trisect.view.internal.ViewState;
 import java.util.ArrayList;
 import java.util.List;

@@ -1,6 +1,6 @@
 package dev.trisect.devtools;
 
-import dev.trisect.raster.BorderStyle;
+import dev.trisect.render.BorderStyle;
 import dev.trisect.view.internal.ViewController;
 import dev.trisect.view.internal.ViewSettings;
 import javax.swing.JCheckBox;

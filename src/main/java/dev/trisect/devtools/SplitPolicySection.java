@@ -1,7 +1,7 @@
 package dev.trisect.devtools;
 
-import dev.trisect.tessellate.SplitPolicy;
-import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.render.SplitPolicy;
+import dev.trisect.render.TessellationSettings;
 import dev.trisect.view.internal.ViewController;
 import dev.trisect.view.internal.ViewSettings;
 import java.util.Locale;

@@ -1,6 +1,6 @@
 package dev.trisect.devtools;
 
-import dev.trisect.pipeline.FrameStats;
+import dev.trisect.render.FrameStats;
 import dev.trisect.view.internal.FrameSlot;
 import dev.trisect.view.internal.ViewController;
 import dev.trisect.view.internal.ViewState;

@@ -1,14 +1,14 @@
 package dev.trisect.devtools;
 
-import dev.trisect.pipeline.RenderMode;
+import dev.trisect.render.RenderMode;
 import dev.trisect.view.internal.FrameSlot;
 import dev.trisect.view.internal.FrameTimes;
 import dev.trisect.view.internal.ViewController;
 import dev.trisect.view.internal.ViewState;
 import java.awt.Color;
 import java.awt.Dimension;
-import java.awt.Graphics;
 import java.awt.Graphics2D;
+import java.awt.Graphics;
 import java.util.Locale;
 import javax.swing.JComponent;
 

@@ -1,16 +1,16 @@
 package dev.trisect.perf;
 
+import dev.trisect.content.SceneAsset;
 import dev.trisect.math.Vec3;
 import dev.trisect.math.Viewport;
 import dev.trisect.pipeline.FrameRenderer;
-import dev.trisect.pipeline.FrameStats;
-import dev.trisect.pipeline.RenderMode;
-import dev.trisect.pipeline.RenderSettings;
-import dev.trisect.raster.Framebuffer;
+import dev.trisect.render.FrameStats;
+import dev.trisect.render.Framebuffer;
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.RenderSettings;
+import dev.trisect.render.SplitPolicy;
+import dev.trisect.render.TessellationSettings;
 import dev.trisect.scene.Camera;
-import dev.trisect.content.SceneAsset;
-import dev.trisect.tessellate.SplitPolicy;
-import dev.trisect.tessellate.TessellationSettings;
 import dev.trisect.texture.Texture;
 
 /**

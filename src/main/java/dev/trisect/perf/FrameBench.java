@@ -1,11 +1,11 @@
 package dev.trisect.perf;
 
+import dev.trisect.content.SceneAsset;
 import dev.trisect.math.Mat4;
 import dev.trisect.pipeline.FrameRenderer;
-import dev.trisect.pipeline.FrameStats;
-import dev.trisect.pipeline.RenderSettings;
-import dev.trisect.raster.Framebuffer;
-import dev.trisect.content.SceneAsset;
+import dev.trisect.render.FrameStats;
+import dev.trisect.render.Framebuffer;
+import dev.trisect.render.RenderSettings;
 import dev.trisect.texture.Texture;
 
 /**

@@ -1,17 +1,17 @@
 package dev.trisect.perf;
 
+import dev.trisect.content.SceneAsset;
 import dev.trisect.math.Mat4;
 import dev.trisect.math.Viewport;
 import dev.trisect.metrics.Comparison;
 import dev.trisect.metrics.ImageComparison;
 import dev.trisect.metrics.TexelToScreen;
 import dev.trisect.pipeline.FrameRenderer;
-import dev.trisect.pipeline.RenderMode;
-import dev.trisect.pipeline.RenderSettings;
-import dev.trisect.raster.Framebuffer;
-import dev.trisect.content.SceneAsset;
-import dev.trisect.tessellate.SplitPolicy;
-import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.render.Framebuffer;
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.RenderSettings;
+import dev.trisect.render.SplitPolicy;
+import dev.trisect.render.TessellationSettings;
 import dev.trisect.texture.Texture;
 import java.util.ArrayList;
 import java.util.List;

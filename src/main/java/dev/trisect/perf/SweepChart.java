@@ -1,7 +1,7 @@
 package dev.trisect.perf;
 
 import dev.trisect.io.ImageFiles;
-import dev.trisect.tessellate.SplitPolicy;
+import dev.trisect.render.SplitPolicy;
 import java.awt.Color;
 import java.awt.Graphics2D;
 import java.awt.image.BufferedImage;

@@ -1,8 +1,10 @@
 package dev.trisect.pipeline;
 
 import dev.trisect.raster.BandBins;
-import dev.trisect.raster.Framebuffer;
 import dev.trisect.raster.Rasterizer;
+import dev.trisect.render.Framebuffer;
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.RenderSettings;
 import dev.trisect.texture.Texture;
 
 /**

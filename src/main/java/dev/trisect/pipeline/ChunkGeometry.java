@@ -1,5 +1,7 @@
 package dev.trisect.pipeline;
 
+import dev.trisect.render.CullMode;
+import dev.trisect.render.RenderSettings;
 import static dev.trisect.tessellate.VertexLayout.CLIP_STRIDE;
 import static dev.trisect.tessellate.VertexLayout.S;
 import static dev.trisect.tessellate.VertexLayout.T;

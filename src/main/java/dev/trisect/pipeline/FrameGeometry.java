@@ -2,8 +2,10 @@ package dev.trisect.pipeline;
 
 import dev.trisect.math.Viewport;
 import dev.trisect.raster.BandBins;
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.RenderSettings;
+import dev.trisect.render.TessellationSettings;
 import dev.trisect.tessellate.PieceBudget;
-import dev.trisect.tessellate.TessellationSettings;
 
 /**
  * The geometry half of a frame, up to what the fill reads: transform the positions

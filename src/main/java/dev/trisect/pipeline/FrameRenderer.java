@@ -2,9 +2,11 @@ package dev.trisect.pipeline;
 
 import dev.trisect.math.Mat4;
 import dev.trisect.mesh.Mesh;
-import dev.trisect.raster.BorderStyle;
-import dev.trisect.raster.Framebuffer;
-import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.render.BorderStyle;
+import dev.trisect.render.FrameStats;
+import dev.trisect.render.Framebuffer;
+import dev.trisect.render.RenderSettings;
+import dev.trisect.render.TessellationSettings;
 import dev.trisect.texture.Texture;
 
 /**

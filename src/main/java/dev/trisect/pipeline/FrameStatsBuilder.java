@@ -1,5 +1,7 @@
 package dev.trisect.pipeline;
 
+import dev.trisect.render.FrameStats;
+
 /**
  * Builds a frame's {@link FrameStats} from what its stages returned: the chunks' counters and the
  * geometry's result, the band pass's pixels and processor times, and the wall-clock marks between

@@ -2,11 +2,11 @@ package dev.trisect.pipeline;
 
 import dev.trisect.raster.BandBins;
 import dev.trisect.raster.BorderOverlay;
-import dev.trisect.raster.BorderStyle;
-import dev.trisect.raster.Framebuffer;
 import dev.trisect.raster.OutlinePlan;
 import dev.trisect.raster.ScreenTriangles;
-import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.render.BorderStyle;
+import dev.trisect.render.Framebuffer;
+import dev.trisect.render.TessellationSettings;
 import java.util.Arrays;
 import java.util.concurrent.atomic.AtomicInteger;
 

@@ -1,5 +1,7 @@
 package dev.trisect.raster;
 
+import dev.trisect.render.Framebuffer;
+
 /**
  * Draws the outline of every filled triangle (every tessellated piece) over the frame, in yellow,
  * or in magenta for a piece filled per pixel by the fallback ({@link OverlayColours}), one band of

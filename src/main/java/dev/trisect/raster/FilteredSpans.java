@@ -1,5 +1,6 @@
 package dev.trisect.raster;
 
+import dev.trisect.render.Framebuffer;
 import dev.trisect.texture.Lod;
 import dev.trisect.texture.MipChain;
 import dev.trisect.texture.Sampler;

@@ -1,5 +1,6 @@
 package dev.trisect.raster;
 
+import dev.trisect.render.BorderStyle;
 import java.util.Arrays;
 
 /**

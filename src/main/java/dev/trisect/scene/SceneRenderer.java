@@ -3,9 +3,9 @@ package dev.trisect.scene;
 import dev.trisect.math.Viewport;
 import dev.trisect.pipeline.Draws;
 import dev.trisect.pipeline.FrameRenderer;
-import dev.trisect.pipeline.FrameStats;
-import dev.trisect.pipeline.RenderSettings;
-import dev.trisect.raster.Framebuffer;
+import dev.trisect.render.FrameStats;
+import dev.trisect.render.Framebuffer;
+import dev.trisect.render.RenderSettings;
 import dev.trisect.scene.internal.DrawnFrame;
 import java.awt.image.BufferedImage;
 import java.util.List;
@@ -134,9 +134,7 @@ public final class SceneRenderer implements AutoCloseable {
         try (SceneRenderer r = new SceneRenderer()) {
             r.render(scene, camera, settings, frame);
         }
-        BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
-        image.setRGB(0, 0, width, height, frame.color(), 0, width);
-        return image;
+        return frame.toImage();
     }
 
     /** Stops the worker threads; further calls throw {@link IllegalStateException}. */

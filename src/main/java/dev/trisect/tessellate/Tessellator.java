@@ -1,5 +1,8 @@
 package dev.trisect.tessellate;
 
+import dev.trisect.render.SplitPoint;
+import dev.trisect.render.SplitPolicy;
+import dev.trisect.render.TessellationSettings;
 import static dev.trisect.tessellate.VertexLayout.CLIP_STRIDE;
 import static dev.trisect.tessellate.VertexLayout.PROJECTED_STRIDE;
 import static dev.trisect.tessellate.VertexLayout.SCREEN_X;

@@ -2,10 +2,10 @@ package dev.trisect.ui;
 
 import com.formdev.flatlaf.FlatDarkLaf;
 import dev.trisect.base.InputException;
-import dev.trisect.pipeline.RenderMode;
 import dev.trisect.content.DemoScenes;
 import dev.trisect.content.SceneAsset;
 import dev.trisect.content.SceneLoader;
+import dev.trisect.render.RenderMode;
 import java.awt.AWTError;
 import java.awt.GraphicsEnvironment;
 import java.awt.HeadlessException;
@@ -15,9 +15,9 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicReference;
 import javax.swing.SwingUtilities;
 import javax.swing.ToolTipManager;
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
+import picocli.CommandLine;
 
 /**
  * Launches the desktop demo. Without a display it prints one line pointing to the headless

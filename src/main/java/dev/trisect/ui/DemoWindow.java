@@ -1,9 +1,9 @@
 package dev.trisect.ui;
 
 import dev.trisect.base.InputException;
-import dev.trisect.pipeline.RenderSettings;
 import dev.trisect.content.SceneAsset;
 import dev.trisect.content.SceneLoader;
+import dev.trisect.render.RenderSettings;
 import dev.trisect.view.FrameInfo;
 import dev.trisect.view.TrisectView;
 import dev.trisect.view.ViewAction;

@@ -1,8 +1,8 @@
 package dev.trisect.ui;
 
 import dev.trisect.base.JsonObject;
-import dev.trisect.pipeline.RenderMode;
-import dev.trisect.tessellate.SplitPolicy;
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.SplitPolicy;
 import dev.trisect.view.FrameInfo;
 import dev.trisect.view.ViewAction;
 import java.awt.Frame;
@@ -46,7 +46,7 @@ final class SoakRun {
     private final Random random = new Random(20261121);
 
     /** The render settings every checkpoint returns to: those the demo opened with, tessellated. */
-    private final dev.trisect.pipeline.RenderSettings standard;
+    private final dev.trisect.render.RenderSettings standard;
 
     SoakRun(DemoWindow window, int seconds, Path report) {
         this.window = window;

@@ -1,7 +1,7 @@
 package dev.trisect.view;
 
-import dev.trisect.pipeline.FrameStats;
-import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.render.FrameStats;
+import dev.trisect.render.RenderSettings;
 import dev.trisect.scene.Camera;
 
 /**

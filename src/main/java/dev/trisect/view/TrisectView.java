@@ -1,10 +1,10 @@
 package dev.trisect.view;
 
+import dev.trisect.content.SceneAsset;
 import dev.trisect.devtools.DevToolsDialog;
 import dev.trisect.devtools.DevToolsPanel;
-import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.render.RenderSettings;
 import dev.trisect.scene.Camera;
-import dev.trisect.content.SceneAsset;
 import dev.trisect.view.internal.FramePainter;
 import dev.trisect.view.internal.FrameReport;
 import dev.trisect.view.internal.FrameSlot;
@@ -13,8 +13,8 @@ import dev.trisect.view.internal.ViewController;
 import dev.trisect.view.internal.ViewMouse;
 import dev.trisect.view.internal.ViewState;
 import java.awt.Dimension;
-import java.awt.Graphics;
 import java.awt.Graphics2D;
+import java.awt.Graphics;
 import java.awt.Window;
 import java.awt.event.ActionEvent;
 import java.awt.event.ComponentAdapter;

@@ -1,16 +1,16 @@
 package dev.trisect.bench;
 
+import dev.trisect.content.DemoScenes;
+import dev.trisect.content.SceneAsset;
 import dev.trisect.math.Mat4;
 import dev.trisect.math.Viewport;
 import dev.trisect.pipeline.FrameRenderer;
-import dev.trisect.pipeline.FrameStats;
-import dev.trisect.pipeline.RenderMode;
-import dev.trisect.pipeline.RenderSettings;
-import dev.trisect.raster.Framebuffer;
-import dev.trisect.content.DemoScenes;
-import dev.trisect.content.SceneAsset;
-import dev.trisect.tessellate.SplitPolicy;
-import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.render.FrameStats;
+import dev.trisect.render.Framebuffer;
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.RenderSettings;
+import dev.trisect.render.SplitPolicy;
+import dev.trisect.render.TessellationSettings;
 import dev.trisect.texture.Texture;
 import java.util.Locale;
 import java.util.concurrent.TimeUnit;

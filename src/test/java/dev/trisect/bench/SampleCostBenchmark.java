@@ -1,8 +1,8 @@
 package dev.trisect.bench;
 
-import dev.trisect.raster.Framebuffer;
 import dev.trisect.raster.Rasterizer;
 import dev.trisect.raster.ScreenTriangles;
+import dev.trisect.render.Framebuffer;
 import dev.trisect.texture.LaneSampler;
 import dev.trisect.texture.Lod;
 import dev.trisect.texture.MipChain;

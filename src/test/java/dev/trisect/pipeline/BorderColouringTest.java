@@ -1,16 +1,18 @@
 package dev.trisect.pipeline;
 
+import dev.trisect.render.FrameStats;
+import dev.trisect.render.RenderSettings;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.math.Viewport;
-import dev.trisect.raster.BorderStyle;
-import dev.trisect.raster.Framebuffer;
+import dev.trisect.render.BorderStyle;
+import dev.trisect.render.Framebuffer;
 import dev.trisect.raster.OverlayColours;
 import dev.trisect.content.DemoScenes;
 import dev.trisect.content.SceneAsset;
-import dev.trisect.tessellate.SplitPolicy;
-import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.render.SplitPolicy;
+import dev.trisect.render.TessellationSettings;
 import java.util.HashMap;
 import java.util.Map;
 import org.junit.jupiter.api.Test;

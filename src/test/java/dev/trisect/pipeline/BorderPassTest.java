@@ -1,15 +1,17 @@
 package dev.trisect.pipeline;
 
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.RenderSettings;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.mesh.Mesh;
-import dev.trisect.raster.BorderStyle;
-import dev.trisect.raster.Framebuffer;
+import dev.trisect.render.BorderStyle;
+import dev.trisect.render.Framebuffer;
 import dev.trisect.scene.Camera;
-import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.render.TessellationSettings;
 import java.util.Arrays;
 import java.util.List;
 import org.junit.jupiter.api.Test;

@@ -1,5 +1,9 @@
 package dev.trisect.pipeline;
 
+import dev.trisect.render.FrameStats;
+import dev.trisect.render.CullMode;
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.RenderSettings;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -8,10 +12,10 @@ import dev.trisect.math.Vec3;
 import dev.trisect.math.Viewport;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.mesh.MeshBuilder;
-import dev.trisect.raster.Framebuffer;
+import dev.trisect.render.Framebuffer;
 import dev.trisect.scene.Camera;
-import dev.trisect.tessellate.SplitPolicy;
-import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.render.SplitPolicy;
+import dev.trisect.render.TessellationSettings;
 import dev.trisect.texture.Texture;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.AfterAll;

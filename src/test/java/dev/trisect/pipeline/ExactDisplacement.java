@@ -3,7 +3,7 @@ package dev.trisect.pipeline;
 import dev.trisect.math.Mat4;
 import dev.trisect.math.Viewport;
 import dev.trisect.mesh.Mesh;
-import dev.trisect.raster.Framebuffer;
+import dev.trisect.render.Framebuffer;
 import dev.trisect.texture.Texture;
 
 /**

@@ -1,11 +1,13 @@
 package dev.trisect.pipeline;
 
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.RenderSettings;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.math.Vec3;
 import dev.trisect.math.Viewport;
 import dev.trisect.mesh.Mesh;
-import dev.trisect.raster.Framebuffer;
+import dev.trisect.render.Framebuffer;
 import dev.trisect.scene.Camera;
 import dev.trisect.content.DemoScenes;
 import dev.trisect.content.SceneAsset;

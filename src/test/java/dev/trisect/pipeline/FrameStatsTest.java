@@ -1,5 +1,9 @@
 package dev.trisect.pipeline;
 
+import dev.trisect.render.FrameStats;
+import dev.trisect.render.CullMode;
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.RenderSettings;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -9,9 +13,9 @@ import dev.trisect.math.Viewport;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.mesh.MeshBuilder;
 import dev.trisect.mesh.Primitives;
-import dev.trisect.raster.Framebuffer;
+import dev.trisect.render.Framebuffer;
 import dev.trisect.scene.Camera;
-import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.render.TessellationSettings;
 import dev.trisect.texture.Texture;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.Test;

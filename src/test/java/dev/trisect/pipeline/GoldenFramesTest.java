@@ -1,5 +1,8 @@
 package dev.trisect.pipeline;
 
+import dev.trisect.render.FrameStats;
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.RenderSettings;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -8,11 +11,11 @@ import dev.trisect.content.SceneAsset;
 import dev.trisect.math.Mat4;
 import dev.trisect.math.Vec3;
 import dev.trisect.math.Viewport;
-import dev.trisect.raster.BorderStyle;
-import dev.trisect.raster.Framebuffer;
+import dev.trisect.render.BorderStyle;
+import dev.trisect.render.Framebuffer;
 import dev.trisect.scene.Camera;
-import dev.trisect.tessellate.SplitPolicy;
-import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.render.SplitPolicy;
+import dev.trisect.render.TessellationSettings;
 import dev.trisect.texture.Texture;
 import dev.trisect.texture.TextureFilter;
 import java.io.IOException;

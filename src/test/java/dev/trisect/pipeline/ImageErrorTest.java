@@ -1,5 +1,7 @@
 package dev.trisect.pipeline;
 
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.RenderSettings;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -7,10 +9,10 @@ import dev.trisect.math.Viewport;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.metrics.ImageComparison;
 import dev.trisect.metrics.TexelToScreen;
-import dev.trisect.raster.Framebuffer;
+import dev.trisect.render.Framebuffer;
 import dev.trisect.scene.Camera;
-import dev.trisect.tessellate.SplitPolicy;
-import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.render.SplitPolicy;
+import dev.trisect.render.TessellationSettings;
 import dev.trisect.texture.Texture;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.Test;

@@ -1,5 +1,7 @@
 package dev.trisect.pipeline;
 
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.RenderSettings;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -9,11 +11,11 @@ import dev.trisect.math.Viewport;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.mesh.MeshBuilder;
 import dev.trisect.mesh.Primitives;
-import dev.trisect.raster.Framebuffer;
+import dev.trisect.render.Framebuffer;
 import dev.trisect.scene.Camera;
-import dev.trisect.tessellate.SplitPoint;
-import dev.trisect.tessellate.SplitPolicy;
-import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.render.SplitPoint;
+import dev.trisect.render.SplitPolicy;
+import dev.trisect.render.TessellationSettings;
 import dev.trisect.texture.Texture;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.AfterAll;

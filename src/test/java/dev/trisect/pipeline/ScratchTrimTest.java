@@ -1,14 +1,15 @@
 package dev.trisect.pipeline;
 
+import dev.trisect.render.RenderSettings;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.math.Mat4;
 import dev.trisect.math.Viewport;
-import dev.trisect.raster.Framebuffer;
+import dev.trisect.render.Framebuffer;
 import dev.trisect.content.DemoScenes;
 import dev.trisect.content.SceneAsset;
-import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.render.TessellationSettings;
 import org.junit.jupiter.api.Test;
 
 /** Memory taken by one extreme frame goes back once frames are ordinary again. */

@@ -1,12 +1,13 @@
 package dev.trisect.pipeline;
 
 import dev.trisect.math.Vec3;
+import dev.trisect.math.Viewport;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.mesh.MeshBuilder;
 import dev.trisect.mesh.Primitives;
-import dev.trisect.raster.Framebuffer;
+import dev.trisect.render.Framebuffer;
+import dev.trisect.render.RenderSettings;
 import dev.trisect.scene.Camera;
-import dev.trisect.math.Viewport;
 import dev.trisect.texture.Texture;
 
 /** Small scenes and a texture for pipeline tests. */

@@ -1,5 +1,6 @@
 package dev.trisect.pipeline;
 
+import dev.trisect.render.RenderSettings;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertSame;
@@ -9,7 +10,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import dev.trisect.content.DemoScenes;
 import dev.trisect.content.SceneAsset;
 import dev.trisect.math.Viewport;
-import dev.trisect.raster.Framebuffer;
+import dev.trisect.render.Framebuffer;
 import dev.trisect.texture.Texture;
 import java.util.ArrayList;
 import java.util.List;

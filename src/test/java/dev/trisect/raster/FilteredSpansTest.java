@@ -1,5 +1,6 @@
 package dev.trisect.raster;
 
+import dev.trisect.render.Framebuffer;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;

@@ -4,7 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import dev.trisect.raster.Framebuffer;
+import dev.trisect.render.Framebuffer;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;

@@ -1,5 +1,8 @@
 package dev.trisect.tessellate;
 
+import dev.trisect.render.SplitPoint;
+import dev.trisect.render.SplitPolicy;
+import dev.trisect.render.TessellationSettings;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 

@@ -6,13 +6,13 @@ import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.cli.Cli;
+import dev.trisect.content.DemoScenes;
 import dev.trisect.devtools.CliArgs;
 import dev.trisect.devtools.CompareSection;
 import dev.trisect.devtools.DevToolsDialog;
 import dev.trisect.devtools.DevToolsPanel;
 import dev.trisect.metrics.Comparison;
-import dev.trisect.pipeline.RenderMode;
-import dev.trisect.content.DemoScenes;
+import dev.trisect.render.RenderMode;
 import dev.trisect.texture.TextureFilter;
 import dev.trisect.view.ViewAction;
 import dev.trisect.view.internal.Command;

@@ -11,10 +11,10 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.GuiTests;
-import dev.trisect.math.Vec3;
-import dev.trisect.pipeline.RenderMode;
-import dev.trisect.scene.Camera;
 import dev.trisect.content.DemoScenes;
+import dev.trisect.math.Vec3;
+import dev.trisect.render.RenderMode;
+import dev.trisect.scene.Camera;
 import dev.trisect.view.internal.ViewController;
 import java.awt.BorderLayout;
 import java.awt.Dimension;

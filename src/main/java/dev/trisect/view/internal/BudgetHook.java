@@ -1,10 +1,10 @@
 package dev.trisect.view.internal;
 
 import dev.trisect.perf.BudgetController;
-import dev.trisect.pipeline.RenderMode;
-import dev.trisect.pipeline.RenderSettings;
-import dev.trisect.tessellate.SplitPolicy;
-import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.RenderSettings;
+import dev.trisect.render.SplitPolicy;
+import dev.trisect.render.TessellationSettings;
 
 /**
  * The render loop's side of the frame-time budget: while the budget is on and the path is

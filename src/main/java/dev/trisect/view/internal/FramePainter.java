@@ -2,9 +2,9 @@ package dev.trisect.view.internal;
 
 import dev.trisect.metrics.HeatMap;
 import dev.trisect.metrics.HeatScale;
-import dev.trisect.pipeline.RenderSettings;
-import dev.trisect.raster.BorderStyle;
 import dev.trisect.raster.OverlayColours;
+import dev.trisect.render.BorderStyle;
+import dev.trisect.render.RenderSettings;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;

@@ -1,10 +1,10 @@
 package dev.trisect.view.internal;
 
 import dev.trisect.metrics.HeatScale;
-import dev.trisect.pipeline.FrameStats;
-import dev.trisect.pipeline.RenderSettings;
+import dev.trisect.render.FrameStats;
+import dev.trisect.render.Framebuffer;
+import dev.trisect.render.RenderSettings;
 import dev.trisect.scene.Camera;
-import dev.trisect.raster.Framebuffer;
 import java.awt.image.BufferedImage;
 import java.awt.image.DataBufferInt;
 import java.awt.image.DirectColorModel;

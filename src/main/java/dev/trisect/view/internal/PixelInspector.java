@@ -3,7 +3,7 @@ package dev.trisect.view.internal;
 import dev.trisect.metrics.TexelToScreen;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.PieceInfo;
-import dev.trisect.raster.Framebuffer;
+import dev.trisect.render.Framebuffer;
 import dev.trisect.texture.Lod;
 import dev.trisect.texture.MipChain;
 import dev.trisect.texture.Texture;

@@ -1,6 +1,7 @@
 package dev.trisect.view.internal;
 
 import dev.trisect.base.InputException;
+import dev.trisect.content.SceneAsset;
 import dev.trisect.math.Mat4;
 import dev.trisect.math.Viewport;
 import dev.trisect.metrics.Comparison;
@@ -8,13 +9,12 @@ import dev.trisect.metrics.HeatMap;
 import dev.trisect.metrics.ImageComparison;
 import dev.trisect.metrics.TexelToScreen;
 import dev.trisect.pipeline.FrameRenderer;
-import dev.trisect.pipeline.FrameStats;
-import dev.trisect.pipeline.RenderMode;
-import dev.trisect.pipeline.RenderSettings;
-import dev.trisect.raster.BorderStyle;
-import dev.trisect.raster.Framebuffer;
+import dev.trisect.render.BorderStyle;
+import dev.trisect.render.FrameStats;
+import dev.trisect.render.Framebuffer;
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.RenderSettings;
 import dev.trisect.scene.Camera;
-import dev.trisect.content.SceneAsset;
 
 /**
  * The render thread: draws frames continuously into the engine's framebuffers and hands them to the

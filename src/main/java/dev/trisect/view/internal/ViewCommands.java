@@ -1,9 +1,9 @@
 package dev.trisect.view.internal;
 
-import dev.trisect.pipeline.RenderMode;
-import dev.trisect.pipeline.RenderSettings;
-import dev.trisect.raster.BorderStyle;
-import dev.trisect.tessellate.SplitPolicy;
+import dev.trisect.render.BorderStyle;
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.RenderSettings;
+import dev.trisect.render.SplitPolicy;
 import dev.trisect.texture.TextureFilter;
 import java.awt.event.KeyEvent;
 import java.util.ArrayList;

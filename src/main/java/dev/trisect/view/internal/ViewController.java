@@ -1,7 +1,7 @@
 package dev.trisect.view.internal;
 
-import dev.trisect.pipeline.RenderMode;
-import dev.trisect.raster.BorderStyle;
+import dev.trisect.render.BorderStyle;
+import dev.trisect.render.RenderMode;
 import dev.trisect.texture.TextureFilter;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;

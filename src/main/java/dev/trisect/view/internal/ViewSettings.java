@@ -1,9 +1,9 @@
 package dev.trisect.view.internal;
 
-import dev.trisect.metrics.HeatScale;
-import dev.trisect.pipeline.RenderSettings;
-import dev.trisect.raster.BorderStyle;
 import dev.trisect.content.DemoScenes;
+import dev.trisect.metrics.HeatScale;
+import dev.trisect.render.BorderStyle;
+import dev.trisect.render.RenderSettings;
 import dev.trisect.texture.TextureFilter;
 
 /**

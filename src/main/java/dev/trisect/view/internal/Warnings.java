@@ -1,8 +1,8 @@
 package dev.trisect.view.internal;
 
-import dev.trisect.pipeline.FrameStats;
-import dev.trisect.tessellate.SplitPolicy;
-import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.render.FrameStats;
+import dev.trisect.render.SplitPolicy;
+import dev.trisect.render.TessellationSettings;
 import java.util.Locale;
 
 /** The status bar's warning when a frame hit a cap or its time budget; null when all is well. */

@@ -4,9 +4,9 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import dev.trisect.pipeline.RenderMode;
-import dev.trisect.pipeline.RenderSettings;
-import dev.trisect.tessellate.SplitPolicy;
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.RenderSettings;
+import dev.trisect.render.SplitPolicy;
 import org.junit.jupiter.api.Test;
 
 /** The demo's budget hook: it changes only the tessellated threshold, within the user's ceiling. */

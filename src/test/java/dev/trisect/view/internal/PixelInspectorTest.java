@@ -4,15 +4,15 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import dev.trisect.content.DemoScenes;
+import dev.trisect.content.SceneAsset;
 import dev.trisect.math.Viewport;
 import dev.trisect.metrics.TexelToScreen;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.PieceInfo;
-import dev.trisect.pipeline.RenderMode;
-import dev.trisect.raster.Framebuffer;
-import dev.trisect.content.DemoScenes;
-import dev.trisect.content.SceneAsset;
-import dev.trisect.tessellate.SplitPolicy;
+import dev.trisect.render.Framebuffer;
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.SplitPolicy;
 import org.junit.jupiter.api.Test;
 
 /** The pixel inspector's numbers against the renderer's own buffers of the same frame. */

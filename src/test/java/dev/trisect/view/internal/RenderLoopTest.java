@@ -4,12 +4,12 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import dev.trisect.devtools.CliArgs;
 import dev.trisect.cli.Cli;
-import dev.trisect.metrics.Comparison;
-import dev.trisect.pipeline.RenderMode;
 import dev.trisect.content.DemoScenes;
-import dev.trisect.tessellate.SplitPolicy;
+import dev.trisect.devtools.CliArgs;
+import dev.trisect.metrics.Comparison;
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.SplitPolicy;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 import java.util.List;

@@ -3,15 +3,15 @@ package dev.trisect.view.internal;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import dev.trisect.math.Viewport;
-import dev.trisect.pipeline.FrameRenderer;
-import dev.trisect.pipeline.FrameStats;
-import dev.trisect.pipeline.RenderSettings;
-import dev.trisect.raster.Framebuffer;
 import dev.trisect.content.DemoScenes;
 import dev.trisect.content.SceneAsset;
-import dev.trisect.tessellate.SplitPolicy;
-import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.math.Viewport;
+import dev.trisect.pipeline.FrameRenderer;
+import dev.trisect.render.FrameStats;
+import dev.trisect.render.Framebuffer;
+import dev.trisect.render.RenderSettings;
+import dev.trisect.render.SplitPolicy;
+import dev.trisect.render.TessellationSettings;
 import org.junit.jupiter.api.Test;
 
 /** The status bar's warnings, from a real frame's statistics. */

@@ -1,4 +1,6 @@
-package dev.trisect.raster;
+package dev.trisect.render;
+
+import java.awt.image.BufferedImage;
 
 /**
  * The frame being drawn: ARGB colour, a depth buffer and, when asked for, the UV output.
@@ -80,6 +82,16 @@ public final class Framebuffer {
         if (uv != null) {
             java.util.Arrays.fill(uv, 3 * from, 3 * to, 0.0);
         }
+    }
+
+    /**
+     * A copy of the colour buffer as an image ({@code TYPE_INT_RGB}), for {@code ImageIO.write} or
+     * drawing; later frames drawn into this framebuffer do not change it.
+     */
+    public BufferedImage toImage() {
+        BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
+        image.setRGB(0, 0, width, height, color, 0, width);
+        return image;
     }
 
     /**

@@ -1,4 +1,4 @@
-package dev.trisect.tessellate;
+package dev.trisect.render;
 
 import java.util.Locale;
 

@@ -1,4 +1,4 @@
-package dev.trisect.raster;
+package dev.trisect.render;
 
 import java.util.Locale;
 
@@ -7,7 +7,7 @@ import java.util.Locale;
  *
  * @param colouring yellow, by split depth, or by error bound (fallback pieces are magenta in all three)
  * @param fade      draw the outlines of small pieces translucent, by the radius of their inscribed circle
- *                  ({@link BorderOverlay#fadeAlpha}), so that
+ *                  (the raster overlay's {@code fadeAlpha}), so that
  *                  near the horizon, where pieces are a few pixels across, the texture still shows
  *                  through instead of a solid band of lines
  * @param onlyFallback outline the fallback pieces alone (magenta): the demo's highlight of the

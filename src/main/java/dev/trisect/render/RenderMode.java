@@ -1,4 +1,4 @@
-package dev.trisect.pipeline;
+package dev.trisect.render;
 
 import java.util.Locale;
 

@@ -1,4 +1,4 @@
-package dev.trisect.pipeline;
+package dev.trisect.render;
 
 import dev.trisect.base.JsonObject;
 
@@ -8,7 +8,7 @@ import dev.trisect.base.JsonObject;
  * time is shared between them in proportion to the time the threads spent on each. With the borders
  * on, filling and outlining also run interleaved (each band is outlined right after it is filled),
  * so {@code rasterNanos} and {@code overlayNanos} are then an estimate of the same kind, flagged by
- * {@code bandTimesEstimated} and named {@code ..._estimate} in {@link #json()}; with the borders off
+ * {@code bandTimesEstimated} and named {@code ..._estimate} in {@link #toJson()}; with the borders off
  * the raster time is the measured wall time of the fill and the overlay's is 0. (Callers that measure
  * the overlay exactly render without borders and time {@code FrameRenderer.drawBorders}, as the demo
  * does.)
@@ -67,7 +67,7 @@ public record FrameStats(long trianglesIn, long culledBackFace, long culledFrust
      * estimated ({@link #bandTimesEstimated}), so that a field called plainly "raster" or "overlay" is
      * always measured.
      */
-    public JsonObject json() {
+    private JsonObject json() {
         return new JsonObject()
                 .put("triangles_in", trianglesIn)
                 .put("culled", culled())
@@ -96,7 +96,7 @@ public record FrameStats(long trianglesIn, long culledBackFace, long culledFrust
                         .put("total", totalNanos / 1e6, 3));
     }
 
-    /** {@link #json()} as one line. */
+    /** The statistics as one line of JSON: snake_case keys, times in milliseconds (see {@code json}). */
     public String toJson() {
         return json().toString();
     }

@@ -1,4 +1,4 @@
-package dev.trisect.tessellate;
+package dev.trisect.render;
 
 /** What decides that an edge is split (see {@code docs/math.md}). */
 public enum SplitPolicy {

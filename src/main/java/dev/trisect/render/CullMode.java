@@ -1,4 +1,4 @@
-package dev.trisect.pipeline;
+package dev.trisect.render;
 
 /** Which triangles are dropped by facing; front faces run counter-clockwise as seen by the camera. */
 public enum CullMode {

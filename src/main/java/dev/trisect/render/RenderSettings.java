@@ -1,7 +1,7 @@
-package dev.trisect.pipeline;
+package dev.trisect.render;
 
-import dev.trisect.raster.BorderStyle;
-import dev.trisect.tessellate.TessellationSettings;
+import dev.trisect.render.BorderStyle;
+import dev.trisect.render.TessellationSettings;
 import dev.trisect.texture.TextureFilter;
 
 /**
