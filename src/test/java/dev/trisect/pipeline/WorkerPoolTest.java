@@ -10,6 +10,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import dev.trisect.content.DemoScenes;
 import dev.trisect.content.SceneAsset;
 import dev.trisect.math.Viewport;
+import dev.trisect.raster.BandBins;
 import dev.trisect.render.Framebuffer;
 import dev.trisect.texture.Texture;
 import java.util.ArrayList;
@@ -204,6 +205,50 @@ class WorkerPoolTest {
         IllegalStateException e = assertThrows(IllegalStateException.class,
                 () -> r.render(scene.mesh(), good, vp, s, new Framebuffer(160, 120)));
         assertTrue(e.getMessage().contains("closed"), e.getMessage());
+    }
+
+    @Test
+    void aFailureInsideABandPassEndsItAndTheNextPassIsRight() throws InterruptedException {
+        // Three chunks of one triangle each, filled with the overlay: the middle chunk's triangle names
+        // a material with no texture, which fails inside the band tasks on whichever thread takes them.
+        Texture grey = new Texture("grey", 2, 2, new int[] {0xFF808080, 0xFF808080, 0xFF808080, 0xFF808080});
+        Texture[] textures = {grey};
+        int w = 64;
+        int h = 48;
+        Chunks chunks = new Chunks();
+        chunks.ensure(3);
+        RenderSettings s = RenderSettings.defaults().withBorders(true);
+        String name = "pool-test-bands";
+        try (WorkerPool pool = new WorkerPool(3, name)) {
+            BandPass bands = new BandPass(3);
+            Outlines outlines = new Outlines(3);
+            Framebuffer expected = null;
+            for (int frame = 0; frame < 4; frame++) {
+                boolean broken = frame % 2 == 0;
+                for (int c = 0; c < 3; c++) {
+                    Chunk chunk = chunks.get(c);
+                    chunk.clear();
+                    double x = 4 + 20 * c;
+                    chunk.out.add(x, 2, 1, 0, 0, x + 16, 40, 1, 2, 0, x, 44, 1, 0, 2, c,
+                            broken && c == 1 ? 5 : 0);
+                    chunk.bin(BandBins.bandCount(h, FrameRenderer.BAND_ROWS), h);
+                }
+                Framebuffer fb = new Framebuffer(w, h);
+                if (broken) {
+                    assertThrows(ArrayIndexOutOfBoundsException.class,
+                            () -> bands.draw(fb, chunks, 3, textures, s, outlines, pool));
+                    assertHelpersParked(name, 2);
+                } else {
+                    BandPass.Result result = bands.draw(fb, chunks, 3, textures, s, outlines, pool);
+                    assertTrue(result.pixels() > 0);
+                    if (expected == null) {
+                        expected = fb;
+                    } else {
+                        assertArrayEquals(expected.color(), fb.color(), "the pass after a failed one is whole");
+                    }
+                }
+            }
+        }
     }
 
     private static void assertNextRunIsWhole(WorkerPool pool) {
