@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Renders built-in scenes with Trisect's perspective path and with OpenGL (Mesa llvmpipe, through
 # ../shared/tools/glref) and prints, per frame, how many pixels differ in colour and how far the
-# UV outputs are apart. Usage: [FILTER=nearest|bilinear|trilinear] scripts/compare-with-opengl.sh [glref-binary] [WxH]
+# UV outputs are apart (the diff command's JSON line), then the share of covered pixels within 2/255
+# and their PSNR (scripts/within.py). Usage: [FILTER=nearest|bilinear|trilinear] [JAR=trisect.jar]
+#   scripts/compare-with-opengl.sh [glref-binary] [WxH]
 # FILTER (default nearest) is passed to both: --filter for Trisect, GLREF_FILTER for glref.
 # Build glref first: gcc -O2 -o /tmp/glref ../shared/tools/glref/glref.c -lEGL -lGL -lGLU -lm
 set -euo pipefail
@@ -11,7 +13,7 @@ SIZE=${2:-1280x720}
 FILTER=${FILTER:-nearest}
 W=${SIZE%x*}
 H=${SIZE#*x}
-JAR=target/trisect.jar
+JAR=${JAR:-target/trisect.jar}
 [[ -f $JAR ]] || mvn -B -q package -DskipTests
 OUT=$(mktemp -d)
 [[ -n ${KEEP:-} ]] && echo "keeping $OUT" >&2 || trap 'rm -rf "$OUT"' EXIT
@@ -33,6 +35,9 @@ frame() { # name scene eye target cull [far]
   printf '%-14s ' "$name"
   java -jar "$JAR" diff --image "$OUT/$name-ours.ppm" --uv "$OUT/$name-ours.pfm" \
     --reference "$OUT/$name-gl.ppm" --reference-uv "$OUT/$name-gl.pfm"
+  # Over covered pixels: the share within 2/255 in every channel, and the PSNR.
+  printf '%-14s ' "$name"
+  python3 scripts/within.py "$OUT/$name-ours.ppm" "$OUT/$name-gl.ppm" "$OUT/$name-ours.pfm" "$OUT/$name-gl.pfm"
 }
 
 # Far planes of 40-60 m keep texel coordinates below a few thousand, where OpenGL's float32
