@@ -1,9 +1,11 @@
 package dev.trisect.raster;
 
 import dev.trisect.render.Framebuffer;
+import dev.trisect.texture.LaneSampler;
 import dev.trisect.texture.Lod;
 import dev.trisect.texture.MipChain;
 import dev.trisect.texture.Sampler;
+import dev.trisect.texture.TexelLanes;
 import dev.trisect.texture.TextureFilter;
 
 /**
@@ -11,16 +13,18 @@ import dev.trisect.texture.TextureFilter;
  * {@link TriangleSetup} and the spans a {@link SpanSolver} solved). One loop per filter and path, so
  * each inner loop is monomorphic: the choice is made once per triangle, never per pixel. Depth test,
  * depth write and the UV output are exactly those of the nearest loops in {@link NearestSpans}; only
- * the colour differs (docs/conventions.md, "Texture filtering").
+ * the colour differs (docs/conventions.md, "Texture filtering"). Every sample is taken by
+ * {@link LaneSampler} on the chain's {@link TexelLanes}: the packed blend with 8-bit weights.
  *
  * <ul>
  * <li>Perspective path: every pixel divides, and trilinear takes its level of detail from the exact
- * derivatives of the perspective map ({@link Lod#lambdaPerspective}) at every {@link #LOD_RUN}th
- * column, interpolated linearly in between where that is provably within 3/256 level of it
- * ({@link #nearlyLinear}), per pixel elsewhere.</li>
+ * derivatives of the perspective map at every {@link LodRuns#LOD_RUN}th column, interpolated
+ * linearly in between where that is provably within 3/256 level of it ({@link LodRuns}), per pixel
+ * elsewhere.</li>
  * <li>Affine and tessellated paths: the texel coordinates are linear on screen, so their derivatives
- * are constant over the piece and trilinear takes one level of detail per piece ({@link Lod#lambda}),
- * computed once; the levels are stepped in 32.32 fixed point like the nearest affine loop.</li>
+ * are constant over the piece and trilinear takes one level of detail per piece
+ * ({@link Lod#selectOfSquared}), computed once; the levels are stepped in 32.32 fixed point like
+ * the nearest affine loop.</li>
  * </ul>
  */
 final class FilteredSpans {
@@ -29,36 +33,6 @@ final class FilteredSpans {
     /** Right shift from 32.32 fixed point to the sampler's 8 fraction bits. */
     private static final int TO_SAMPLER = 32 - Sampler.FRACTION_BITS;
 
-    /** log2 of {@link #LOD_RUN}. */
-    private static final int LOG2_LOD_RUN = 3;
-    /**
-     * Columns over which the per-pixel path interpolates lambda linearly between exact values at
-     * multiples of this (docs/conventions.md, "Texture filtering").
-     */
-    static final int LOD_RUN = 1 << LOG2_LOD_RUN;
-    /**
-     * The largest change, in 1/256, of lambda along x or of lambda along y across a run that is
-     * interpolated: half a level. This keeps every chord within one level of the range of levels, so
-     * the clamping of {@link Lod#fixed} (one level beyond that range) never bends a chord into a value
-     * that selects differently; how close the chord is to lambda is {@link #nearlyLinear}'s test.
-     */
-    static final int MAX_LOD_STEP = Sampler.ONE / 2;
-    /**
-     * The largest bound, in levels, on how far the chord over an interpolated run may be from the exact
-     * lambda along an axis ({@link #nearlyLinear}): 3/256.
-     */
-    static final double MAX_CHORD_ERROR = 3.0 / Sampler.ONE;
-    /**
-     * The largest bound on the part of that from the numerator of lambda along y that is interpolated
-     * ({@link #nearlyLinear}): 1/256, so that with the two quantizations to 1/256 below the chord (the
-     * ends floored by {@link Lod#fixed}, the step floored) an interpolated lambda is still within 3/256
-     * (0.0117) level of the exact one.
-     */
-    static final double MAX_CHORD_ERROR_Y = 1.0 / Sampler.ONE;
-    /** {@code LOD_RUN^2 / (8 ln 2)}: the chord error over a run per unit of |second derivative| times ln 2. */
-    private static final double CHORD_FACTOR = LOD_RUN * LOD_RUN / (8 * Math.log(2));
-    /** {@link #lodAt} where there is no level of detail to interpolate (16 high bits below any lambda). */
-    private static final int NO_RUN_LOD = Integer.MIN_VALUE;
 
     private FilteredSpans() {
     }
@@ -74,13 +48,18 @@ final class FilteredSpans {
                      boolean perspective, TextureFilter filter) {
         boolean trilinear = filter == TextureFilter.TRILINEAR;
         if (perspective || !setup.fixedPointSafe) {
-            return perPixel(setup, spans, frame, mips, uvId, perspective, trilinear);
+            return trilinear || !mips.powerOfTwo()
+                    ? perPixel(setup, spans, frame, mips, uvId, perspective, trilinear)
+                    : perPixelBilinear(setup, spans, frame, mips.lanes(), uvId, perspective);
         }
         if (!trilinear) {
             return levelFixed(setup, spans, frame, mips, 0, 0, uvId);
         }
-        int selection = Lod.select(Lod.lambda(setup.sPlane.dx, setup.tPlane.dx, setup.sPlane.dy, setup.tPlane.dy),
-                mips.maxLevel());
+        double sDx = setup.sPlane.dx;
+        double tDx = setup.tPlane.dx;
+        double sDy = setup.sPlane.dy;
+        double tDy = setup.tPlane.dy;
+        int selection = Lod.selectOfSquared(sDx * sDx + tDx * tDx, sDy * sDy + tDy * tDy, mips.maxLevel());
         return levelFixed(setup, spans, frame, mips, Lod.level(selection), Lod.weight(selection), uvId);
     }
 
@@ -88,21 +67,21 @@ final class FilteredSpans {
      * Bilinear, or trilinear with the level of detail per pixel, coordinates in doubles: the perspective
      * path, or affine pieces whose coordinates are too large for fixed point (constant derivatives, so
      * the same level everywhere). Lambda along x and along y come from the exact derivatives at the
-     * columns that are multiples of {@link #LOD_RUN} ({@link #lodAt}) and are stepped linearly in
-     * between, the larger taken per pixel; a run where either changes by more than
-     * {@link #MAX_LOD_STEP}, or with no positive 1/w at an end, or that is not {@link #nearlyLinear}
-     * (a surface nearly edge-on, or where the texture's derivative along y nearly vanishes), takes the
-     * exact lambda per pixel. The
-     * runs are anchored at absolute columns, so a pixel's value never depends on the rectangle being
-     * filled.
+     * columns that are multiples of {@link LodRuns#LOD_RUN} ({@link LodRuns#lodAt}) and are stepped
+     * linearly in between, the larger taken per pixel; a run where either changes by more than
+     * {@link LodRuns#MAX_LOD_STEP}, or with no positive 1/w at an end, or that is not
+     * {@link LodRuns#nearlyLinear} (a surface nearly edge-on, or where the texture's derivative along y
+     * nearly vanishes), takes the exact lambda per pixel ({@link Lod#selectOfSquared}). The runs are
+     * anchored at absolute columns, so a pixel's value never depends on the rectangle being filled.
      *
      * <p>On a {@link MipChain#powerOfTwo} chain (every texture of the built-in scenes) each coordinate is
      * floored once, to 8 fraction bits on level 0 ({@code floor(256 s)}), and level d's bilinear
      * position {@code floor(256 s 2^-k) - 128} ({@link Sampler#position} of {@code s * scaleS(d)}, k =
      * log2 of 1 / scaleS(d)) is that value shifted right by k, exactly, since
-     * {@code floor(floor(x) / 2^k) = floor(x / 2^k)}; a level is one packed int ({@link MipChain#shape})
-     * and wraps with masks. Other chains take {@link Sampler#position} and {@link Sampler#bilinear} per
-     * level. The choice is the same for every pixel of the triangle, so its branch is always predicted.
+     * {@code floor(floor(x) / 2^k) = floor(x / 2^k)}: {@link LaneSampler#trilinearPowerOfTwo} on the
+     * chain's {@link TexelLanes}, whose levels wrap with masks. Other chains take {@link Sampler#position}
+     * and {@link LaneSampler#bilinear} per level. The choice is the same for every pixel of the triangle,
+     * so its branch is always predicted.
      */
     private static long perPixel(TriangleSetup setup, int[] spans, Framebuffer frame, MipChain mips, int uvId,
                                  boolean perspective, boolean trilinear) {
@@ -121,6 +100,9 @@ final class FilteredSpans {
         double qDyLod = perspective ? qDy : 0;
         int maxLevel = mips.maxLevel();
         boolean pot = mips.powerOfTwo();
+        TexelLanes lanes = mips.lanes();
+        long[] lz = lanes.lanes();
+        int[] lv = lanes.levels();
         int width = frame.width();
         int[] color = frame.color();
         float[] depth = frame.depth();
@@ -158,37 +140,41 @@ final class FilteredSpans {
                     int selection = 0;
                     if (trilinear) {
                         if (x >= runEnd) {
-                            int runStart = x & -LOD_RUN;
+                            int runStart = x & -LodRuns.LOD_RUN;
                             int lodStart = runStart == runEnd ? lodEnd
-                                    : lodAt(runStart, qRow, sRow, tRow, qDx, sDx, sDy, tDx, tDy, qDxLod, qDyLod,
+                                    : LodRuns.lodAt(runStart, qRow, sRow, tRow, qDx, sDx, sDy, tDx, tDy, qDxLod, qDyLod,
                                     perspective, maxLevel);
-                            runEnd = runStart + LOD_RUN;
-                            lodEnd = lodAt(runEnd, qRow, sRow, tRow, qDx, sDx, sDy, tDx, tDy, qDxLod, qDyLod,
+                            runEnd = runStart + LodRuns.LOD_RUN;
+                            lodEnd = LodRuns.lodAt(runEnd, qRow, sRow, tRow, qDx, sDx, sDy, tDx, tDy, qDxLod, qDyLod,
                                     perspective, maxLevel);
                             lambdaX = lodStart >> 16;
                             lambdaY = (short) lodStart;
                             stepX = (lodEnd >> 16) - lambdaX;
                             stepY = (short) lodEnd - lambdaY;
-                            interpolate = lodStart != NO_RUN_LOD && lodEnd != NO_RUN_LOD
-                                    && Math.abs(stepX) <= MAX_LOD_STEP && Math.abs(stepY) <= MAX_LOD_STEP
-                                    && nearlyLinear(runStart, qRow, sRow, tRow, qDx, sDx, sDy, tDx, tDy, qDxLod,
-                                    qDyLod, perspective);
+                            interpolate = lodStart != LodRuns.NO_RUN_LOD && lodEnd != LodRuns.NO_RUN_LOD
+                                    && Math.abs(stepX) <= LodRuns.MAX_LOD_STEP
+                                    && Math.abs(stepY) <= LodRuns.MAX_LOD_STEP
+                                    && LodRuns.nearlyLinear(runStart, qRow, sRow, tRow, qDx, sDx, sDy, tDx, tDy,
+                                    qDxLod, qDyLod, perspective);
                         }
-                        int k = x & (LOD_RUN - 1);
+                        int k = x & (LodRuns.LOD_RUN - 1);
                         selection = interpolate
-                                ? Lod.select(Math.max(lambdaX + (stepX * k >> LOG2_LOD_RUN),
-                                lambdaY + (stepY * k >> LOG2_LOD_RUN)), maxLevel)
-                                : Lod.select(Lod.lambdaPerspective(s, t, rq, sDx, sDy, tDx, tDy, qDxLod, qDyLod),
-                                maxLevel);
+                                ? Lod.select(Math.max(lambdaX + (stepX * k >> LodRuns.LOG2_LOD_RUN),
+                                lambdaY + (stepY * k >> LodRuns.LOG2_LOD_RUN)), maxLevel)
+                                : Lod.selectOfSquared(Lod.rhoSquared(s, t, rq, sDx, tDx, qDxLod),
+                                Lod.rhoSquared(s, t, rq, sDy, tDy, qDyLod), maxLevel);
                     }
-                    int d = Lod.level(selection);
-                    int c = pot ? samplePowerOfTwo(mips.texels(d), mips.shape(d), sFixed, tFixed)
-                            : sample(mips, d, s, t);
-                    int weight = Lod.weight(selection);
-                    if (weight != 0) {
-                        int e = d + 1;
-                        c = Sampler.lerp(c, pot ? samplePowerOfTwo(mips.texels(e), mips.shape(e), sFixed, tFixed)
-                                : sample(mips, e, s, t), weight);
+                    int c;
+                    if (pot) {
+                        c = LaneSampler.trilinearPowerOfTwo(lz, lv, selection, sFixed, tFixed);
+                    } else {
+                        int d = Lod.level(selection);
+                        long l = sample(lz, lv, mips, d, s, t);
+                        int weight = Lod.weight(selection);
+                        if (weight != 0) {
+                            l = LaneSampler.lerp(l, sample(lz, lv, mips, d + 1, s, t), weight);
+                        }
+                        c = TexelLanes.argb(l);
                     }
                     color[i] = c;
                     if (uv != null) {
@@ -204,100 +190,70 @@ final class FilteredSpans {
     }
 
     /**
-     * The bilinear sample of the level described by {@code shape} ({@link MipChain#shape}) at level-0
-     * texel coordinates {@code floor(256 s)}, {@code floor(256 t)}.
+     * Bilinear on level 0 of a {@link MipChain#powerOfTwo} chain with the texel coordinates in doubles:
+     * the perspective path, or affine pieces whose coordinates are too large for fixed point. Each
+     * coordinate is floored once to 8 fraction bits, {@code floor(256 s) - 128 = floor(256 (s - 1/2))},
+     * the position {@link LaneSampler} takes. A loop of its own, without the level of detail and the
+     * general wrap of {@link #perPixel}: 13 % less CPU time for the demo's bilinear frame.
      */
-    private static int samplePowerOfTwo(int[] texels, int shape, long sFixed, long tFixed) {
-        return Sampler.bilinearPowerOfTwo(texels, shape >>> 16 & 0xFF, shape >>> 24,
-                (sFixed >> (shape & 0xFF)) - Sampler.ONE / 2, (tFixed >> (shape >>> 8 & 0xFF)) - Sampler.ONE / 2);
-    }
-
-    /**
-     * The level of detail at column {@code x} of a row whose planes are at qRow, sRow, tRow at column 0,
-     * from the exact derivatives there: lambda along x ({@link Lod#lambdaOf} of the x derivatives, in
-     * 1/256 steps, {@link Lod#fixed}) in the high 16 bits, along y in the low 16 bits, both signed; or
-     * {@link #NO_RUN_LOD} where the perspective plane has no positive 1/w (a column beyond the
-     * triangle's edge) or a lambda is NaN.
-     */
-    private static int lodAt(int x, double qRow, double sRow, double tRow, double qDx, double sDx, double sDy,
-                             double tDx, double tDy, double qDxLod, double qDyLod, boolean perspective, int maxLevel) {
-        double q = perspective ? qRow + qDx * x : 1.0;
-        if (!(q > 0)) {
-            return NO_RUN_LOD;
+    private static long perPixelBilinear(TriangleSetup setup, int[] spans, Framebuffer frame, TexelLanes lanes,
+                                         int uvId, boolean perspective) {
+        double qBase = setup.qPlane.base;
+        double qDx = setup.qPlane.dx;
+        double qDy = setup.qPlane.dy;
+        double sBase = setup.sPlane.base;
+        double sDx = setup.sPlane.dx;
+        double sDy = setup.sPlane.dy;
+        double tBase = setup.tPlane.base;
+        double tDx = setup.tPlane.dx;
+        double tDy = setup.tPlane.dy;
+        long[] lz = lanes.lanes();
+        int[] lv = lanes.levels();
+        int stride = lv[TexelLanes.STRIDE];
+        int wMask = lv[TexelLanes.WIDTH_MASK];
+        int hMask = lv[TexelLanes.HEIGHT_MASK];
+        int width = frame.width();
+        int[] color = frame.color();
+        float[] depth = frame.depth();
+        double[] uv = frame.uv();
+        long written = 0;
+        int[] sp = spans;
+        for (int y = setup.rowStart, j = 0; y < setup.rowEnd; y++, j += 2) {
+            int spanStart = sp[j];
+            int spanEnd = sp[j + 1];
+            double qRow = qBase + qDy * y;
+            double sRow = sBase + sDy * y;
+            double tRow = tBase + tDy * y;
+            int rowOffset = y * width;
+            for (int x = spanStart; x < spanEnd; x++) {
+                double q = qRow + qDx * x;
+                float qf = (float) q;
+                int i = rowOffset + x;
+                if (qf > depth[i]) {
+                    depth[i] = qf;
+                    double rq = perspective ? 1.0 / q : 1.0;
+                    double s = (sRow + sDx * x) * rq;
+                    double t = (tRow + tDx * x) * rq;
+                    color[i] = TexelLanes.argb(LaneSampler.bilinearPowerOfTwo(lz, 0, stride, wMask, hMask,
+                            (long) Math.floor(s * Sampler.ONE) - Sampler.ONE / 2,
+                            (long) Math.floor(t * Sampler.ONE) - Sampler.ONE / 2));
+                    if (uv != null) {
+                        uv[3 * i] = s;
+                        uv[3 * i + 1] = t;
+                        uv[3 * i + 2] = uvId;
+                    }
+                    written++;
+                }
+            }
         }
-        double rq = 1.0 / q;
-        double s = (sRow + sDx * x) * rq;
-        double t = (tRow + tDx * x) * rq;
-        int lx = Lod.fixed(Lod.lambdaOf(Lod.rhoSquared(s, t, rq, sDx, tDx, qDxLod)), maxLevel);
-        int ly = Lod.fixed(Lod.lambdaOf(Lod.rhoSquared(s, t, rq, sDy, tDy, qDyLod)), maxLevel);
-        if (lx == Lod.NO_LAMBDA || ly == Lod.NO_LAMBDA) {
-            return NO_RUN_LOD;
-        }
-        return lx << 16 | ly & 0xFFFF;
-    }
-
-    /**
-     * Whether lambda along x and along y are close enough to linear over the run of columns
-     * [x0, x0 + LOD_RUN] of a row (planes at qRow, sRow, tRow at column 0) to be interpolated within
-     * 3/256 level: {@code E_q + E_n <= }{@link #MAX_CHORD_ERROR} and {@code E_n <= }
-     * {@link #MAX_CHORD_ERROR_Y}, the two bounds below (both 0 for an affine map). Both ends must
-     * have a positive 1/w (Q linear, so positive over the run).
-     *
-     * <p>Why: with s = S/Q, t = T/Q and S, T, Q linear on screen, the numerators of the derivatives
-     * along y, {@code A = S_y Q - S Q_y} and {@code B = T_y Q - T Q_y}, are linear in x along a row
-     * (slopes {@code A_x = S_y Q_x - S_x Q_y}, likewise B_x), and {@code lambda_y = f - 2 log2 Q} with
-     * {@code f = 0.5 log2 N}, {@code N = A^2 + B^2 = a u^2 + m} (u the distance to the column where N
-     * is least, {@code a = A_x^2 + B_x^2}). Along x the numerators are constant along the row, so
-     * {@code lambda_x = c - 2 log2 Q}. The chord of a function over h columns is within
-     * {@code h^2/8 max|g''|} of it, on the side of the chord where g is convex. {@code -2 log2 Q} is
-     * convex, {@code (-2 log2 Q)'' = 2 Q_x^2 / (ln2 Q^2)}, largest at the end with the smaller Q: its
-     * chord is above it by at most {@code E_q = h^2 / (8 ln2) 2 Q_x^2 / Q_min^2}.
-     * {@code f'' = a (m - a u^2) / (ln2 N^2)}, so {@code |f''| <= a / (ln2 N) <= a / (ln2 N_min)}
-     * with N_min the least N over the run (at the column nearest the unconstrained least): its chord
-     * is within {@code E_n = h^2 / (8 ln2) a / N_min} either way. So the chord of lambda along x is
-     * within [0, E_q] above it and that of lambda along y within [-E_n, E_q + E_n]; the larger of the
-     * two (OpenGL's lambda) likewise, since {@code max} moves by at most the larger of its arguments'
-     * moves. The quantizations move the interpolated value down by less than 2/256, so it is within
-     * {@code (-E_n - 2/256, E_q + E_n]} of the exact lambda: within 3/256 with these limits.
-     */
-    static boolean nearlyLinear(int x0, double qRow, double sRow, double tRow, double qDx, double sDx, double sDy,
-                                double tDx, double tDy, double qDxLod, double qDyLod, boolean perspective) {
-        int x1 = x0 + LOD_RUN;
-        double q0 = perspective ? qRow + qDx * x0 : 1.0;
-        double q1 = perspective ? qRow + qDx * x1 : 1.0;
-        double qMin = Math.min(q0, q1);
-        double qMin2 = qMin * qMin;
-        // E_q = CHORD_FACTOR * qCurvature / qMin^2.
-        double qCurvature = 2 * qDxLod * qDxLod;
-        // A and B at column x0 and their slopes along the row.
-        double a0 = sDy * q0 - (sRow + sDx * x0) * qDyLod;
-        double b0 = tDy * q0 - (tRow + tDx * x0) * qDyLod;
-        double ax = sDy * qDxLod - sDx * qDyLod;
-        double bx = tDy * qDxLod - tDx * qDyLod;
-        double a = ax * ax + bx * bx;
-        if (!(a > 0)) {
-            // N constant along the row: E_n = 0.
-            return CHORD_FACTOR * qCurvature <= MAX_CHORD_ERROR * qMin2;
-        }
-        // a * N_min without a division: N(u) = n0 + 2 p u + a u^2 over u in [0, LOD_RUN] is least at
-        // u = -p / a clamped to the run, where a N = a n0 - p^2.
-        double n0 = a0 * a0 + b0 * b0;
-        double p = a0 * ax + b0 * bx;
-        double aNMin = p >= 0 ? a * n0
-                : p <= -a * LOD_RUN ? a * (n0 + LOD_RUN * (2 * p + a * LOD_RUN))
-                : a * n0 - p * p;
-        if (!(aNMin > 0)) {
-            return false;
-        }
-        // E_n = CHORD_FACTOR * a^2 / aNMin; both limits multiplied through by aNMin qMin^2 > 0.
-        double en = CHORD_FACTOR * a * a;
-        return en <= MAX_CHORD_ERROR_Y * aNMin
-                && CHORD_FACTOR * qCurvature * aNMin + en * qMin2 <= MAX_CHORD_ERROR * aNMin * qMin2;
+        return written;
     }
 
     /** The bilinear sample of level {@code d} of any chain at level-0 texel coordinates (s, t). */
-    private static int sample(MipChain mips, int d, double s, double t) {
-        return Sampler.bilinear(mips.texels(d), mips.width(d), mips.height(d),
+    private static long sample(long[] lanes, int[] levels, MipChain mips, int d, double s, double t) {
+        int o = d * TexelLanes.LEVEL_INTS;
+        return LaneSampler.bilinear(lanes, levels[o + TexelLanes.OFFSET], levels[o + TexelLanes.STRIDE],
+                levels[o + TexelLanes.WIDTH], levels[o + TexelLanes.HEIGHT],
                 Sampler.position(s * mips.scaleS(d)), Sampler.position(t * mips.scaleT(d)));
     }
 
@@ -324,12 +280,24 @@ final class FilteredSpans {
         float[] depth = frame.depth();
         double[] uv = frame.uv();
         int level2 = weight == 0 ? level : level + 1;
-        int[] texels = mips.texels(level);
-        int tw = mips.width(level);
-        int th = mips.height(level);
-        int[] texels2 = mips.texels(level2);
-        int tw2 = mips.width(level2);
-        int th2 = mips.height(level2);
+        TexelLanes lanes = mips.lanes();
+        long[] lz = lanes.lanes();
+        int[] lv = lanes.levels();
+        int o1 = level * TexelLanes.LEVEL_INTS;
+        int o2 = level2 * TexelLanes.LEVEL_INTS;
+        int off = lv[o1 + TexelLanes.OFFSET];
+        int stride = lv[o1 + TexelLanes.STRIDE];
+        int tw = lv[o1 + TexelLanes.WIDTH];
+        int th = lv[o1 + TexelLanes.HEIGHT];
+        int wm = lv[o1 + TexelLanes.WIDTH_MASK];
+        int hm = lv[o1 + TexelLanes.HEIGHT_MASK];
+        int off2 = lv[o2 + TexelLanes.OFFSET];
+        int stride2 = lv[o2 + TexelLanes.STRIDE];
+        int tw2 = lv[o2 + TexelLanes.WIDTH];
+        int th2 = lv[o2 + TexelLanes.HEIGHT];
+        int wm2 = lv[o2 + TexelLanes.WIDTH_MASK];
+        int hm2 = lv[o2 + TexelLanes.HEIGHT_MASK];
+        boolean pot = (wm | hm | wm2 | hm2) >= 0;
         double ks = mips.scaleS(level) * FIXED_SCALE;
         double kt = mips.scaleT(level) * FIXED_SCALE;
         double ks2 = mips.scaleS(level2) * FIXED_SCALE;
@@ -366,12 +334,15 @@ final class FilteredSpans {
                 int i = rowOffset + x;
                 if (qf > depth[i]) {
                     depth[i] = qf;
-                    int c = Sampler.bilinear(texels, tw, th, s >> TO_SAMPLER, t >> TO_SAMPLER);
+                    long c = pot ? LaneSampler.bilinearPowerOfTwo(lz, off, stride, wm, hm, s >> TO_SAMPLER,
+                            t >> TO_SAMPLER)
+                            : LaneSampler.bilinear(lz, off, stride, tw, th, s >> TO_SAMPLER, t >> TO_SAMPLER);
                     if (weight != 0) {
-                        c = Sampler.lerp(c, Sampler.bilinear(texels2, tw2, th2, s2 >> TO_SAMPLER, t2 >> TO_SAMPLER),
-                                weight);
+                        c = LaneSampler.lerp(c, pot ? LaneSampler.bilinearPowerOfTwo(lz, off2, stride2, wm2, hm2,
+                                s2 >> TO_SAMPLER, t2 >> TO_SAMPLER) : LaneSampler.bilinear(lz, off2, stride2, tw2, th2,
+                                s2 >> TO_SAMPLER, t2 >> TO_SAMPLER), weight);
                     }
-                    color[i] = c;
+                    color[i] = TexelLanes.argb(c);
                     if (uv != null) {
                         uv[3 * i] = s0 / FIXED_SCALE;
                         uv[3 * i + 1] = t0 / FIXED_SCALE;

@@ -50,7 +50,12 @@ public final class LaneSampler {
      * @return the sample, in lanes
      */
     public static long blend(long c00, long c10, long c01, long c11, int fx, int fy) {
-        int w11 = fx * fy + 128 >> 8;
+        return blendLong(c00, c10, c01, c11, fx, fy);
+    }
+
+    /** {@link #blend} with the fractions as longs, so no weight is widened before its multiply. */
+    private static long blendLong(long c00, long c10, long c01, long c11, long fx, long fy) {
+        long w11 = fx * fy + 128 >> 8;
         long sum = c00 * (256 - fx - fy + w11) + c10 * (fx - w11) + c01 * (fy - w11) + c11 * w11 + ROUND;
         return sum >>> 8 & TexelLanes.CHANNELS;
     }
@@ -83,7 +88,7 @@ public final class LaneSampler {
     public static long bilinearPowerOfTwo(long[] lanes, int offset, int stride, int wMask, int hMask, long px,
                                           long py) {
         int k = offset + ((int) (py >> 8) & hMask) * stride + ((int) (px >> 8) & wMask);
-        return bilinearAt(lanes, k, stride, (int) px & 255, (int) py & 255);
+        return blendLong(lanes[k], lanes[k + 1], lanes[k + stride], lanes[k + stride + 1], px & 255, py & 255);
     }
 
     /**

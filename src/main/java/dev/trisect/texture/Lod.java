@@ -158,6 +158,23 @@ public final class Lod {
     }
 
     /**
+     * The levels and blend weight ({@link #select(int, int)}) for the squared scale factors of both screen
+     * directions, each through {@link #fixedOfSquared}: OpenGL's {@code lambda = log2(max(rho_x, rho_y))}
+     * floored to 1/256; level 0 alone when either is NaN.
+     *
+     * @param rhoX2 {@code (ds/dx)^2 + (dt/dx)^2}, level-0 texels per pixel, squared
+     * @param rhoY2 {@code (ds/dy)^2 + (dt/dy)^2}
+     */
+    public static int selectOfSquared(double rhoX2, double rhoY2, int maxLevel) {
+        int lx = fixedOfSquared(rhoX2, maxLevel);
+        int ly = fixedOfSquared(rhoY2, maxLevel);
+        if (lx == NO_LAMBDA || ly == NO_LAMBDA) {
+            return 0;
+        }
+        return select(Math.max(lx, ly), maxLevel);
+    }
+
+    /**
      * {@link #select(double, int)} for a lambda given in 1/256 steps ({@link #fixed}): the same level and
      * weight, since {@code floor(256 lambda) = 256 level + weight} for lambda in (0, maxLevel).
      */

@@ -65,7 +65,8 @@ public final class TexelLanes {
             total += (long) (chain.width(d) + 1) * (chain.height(d) + 1);
         }
         if (total > Integer.MAX_VALUE - 8) {
-            throw new IllegalArgumentException("texture too large to filter: " + chain.width(0) + "x" + chain.height(0));
+            throw new IllegalArgumentException("texture too large to filter: " + chain.width(0) + "x"
+                    + chain.height(0));
         }
         lanes = new long[(int) total];
         powerOfTwo = chain.powerOfTwo();

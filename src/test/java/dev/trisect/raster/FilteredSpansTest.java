@@ -5,9 +5,11 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import dev.trisect.texture.LaneSampler;
 import dev.trisect.texture.Lod;
 import dev.trisect.texture.MipChain;
 import dev.trisect.texture.Sampler;
+import dev.trisect.texture.TexelLanes;
 import dev.trisect.texture.Texture;
 import dev.trisect.texture.TextureFilter;
 import java.util.Random;
@@ -109,6 +111,52 @@ class FilteredSpansTest {
     }
 
     @Test
+    void perPixelBilinearIsThePackedRuleAndWithinOneOfTheExactBlend() {
+        // Every pixel of perspective triangles on power-of-two and odd textures (the two loops of the
+        // per-pixel bilinear fill): the colour is LaneSampler's rule at the pixel's own texel
+        // coordinates (the UV output) bit for bit, and each channel is within 1/255 of the exact blend of
+        // the rule before the packed one (Sampler.bilinear, 16-bit weights).
+        Random rnd = new Random(31);
+        Texture[] textures = {noise(64, 64, 3), noise(37, 23, 4), noise(1, 1, 5)};
+        int pixels = 0;
+        int differ = 0;
+        for (int k = 0; k < 60; k++) {
+            double x = rnd.nextDouble() * W;
+            double y = rnd.nextDouble() * H;
+            ScreenTriangles t = new ScreenTriangles();
+            t.add(x, y, 1, rnd.nextGaussian() * 50, rnd.nextGaussian() * 50,
+                    x + rnd.nextGaussian() * 40, y + rnd.nextGaussian() * 40, 0.05 + rnd.nextDouble(), 90, -20,
+                    x + rnd.nextGaussian() * 40, y + rnd.nextGaussian() * 40, 0.05 + rnd.nextDouble(), -30, 70,
+                    k, k % 3);
+            Framebuffer fb = fill(t, textures, TextureFilter.BILINEAR, true);
+            Texture tex = textures[k % 3];
+            TexelLanes lanes = tex.mipChain().lanes();
+            for (int i = 0; i < W * H; i++) {
+                if (fb.uv()[3 * i + 2] == 0) {
+                    continue;
+                }
+                double s = fb.uv()[3 * i];
+                double tt = fb.uv()[3 * i + 1];
+                long px = (long) Math.floor(s * Sampler.ONE) - Sampler.ONE / 2;
+                long py = (long) Math.floor(tt * Sampler.ONE) - Sampler.ONE / 2;
+                int want = TexelLanes.argb(LaneSampler.bilinear(lanes.lanes(), 0, lanes.stride(0), tex.width(),
+                        tex.height(), px, py));
+                int got = fb.color()[i];
+                assertEquals(Integer.toHexString(want), Integer.toHexString(got), "triangle " + k + " pixel " + i);
+                int exact = Sampler.bilinear(tex.argb(), tex.width(), tex.height(), Sampler.position(s),
+                        Sampler.position(tt));
+                for (int shift = 0; shift < 24; shift += 8) {
+                    assertTrue(Math.abs((got >>> shift & 0xFF) - (exact >>> shift & 0xFF)) <= 1,
+                            "triangle " + k + " pixel " + i);
+                }
+                pixels++;
+                differ += got == exact ? 0 : 1;
+            }
+        }
+        assertTrue(pixels > 10_000 && differ > 0, pixels + " pixels, " + differ + " differ from the exact blend");
+    }
+
+    @Test
     void minifiedCheckerAveragesToGrey() {
         // 7.3 texels per pixel: lambda = 2.87, and every level from 1 on of a one-texel checker is the grey
         // (0 + 255 + 0 + 255) / 4 = 127.5, rounded to 128. Bilinear on level 0 alias instead.
@@ -147,18 +195,22 @@ class FilteredSpansTest {
         double t = (r.setup().tPlane.base + r.setup().tPlane.dy * y + r.setup().tPlane.dx * x) / q;
         double lambda = interpolatedLambda(r, mips, x, y);
         int selection = Double.isNaN(lambda)
-                ? Lod.select(Lod.lambdaPerspective(s, t, 1 / q, r.setup().sPlane.dx, r.setup().sPlane.dy, r.setup().tPlane.dx, r.setup().tPlane.dy,
-                r.setup().qPlane.dx, r.setup().qPlane.dy), mips.maxLevel())
+                ? Lod.selectOfSquared(Lod.rhoSquared(s, t, 1 / q, r.setup().sPlane.dx, r.setup().tPlane.dx, r.setup().qPlane.dx),
+                Lod.rhoSquared(s, t, 1 / q, r.setup().sPlane.dy, r.setup().tPlane.dy, r.setup().qPlane.dy), mips.maxLevel())
                 : Lod.select((int) lambda, mips.maxLevel());
         int d = Lod.level(selection);
-        int c = Sampler.bilinear(mips.texels(d), mips.width(d), mips.height(d), Sampler.position(s * mips.scaleS(d)),
-                Sampler.position(t * mips.scaleT(d)));
+        long c = level(mips, d, s, t);
         if (Lod.weight(selection) != 0) {
-            int e = d + 1;
-            c = Sampler.lerp(c, Sampler.bilinear(mips.texels(e), mips.width(e), mips.height(e),
-                    Sampler.position(s * mips.scaleS(e)), Sampler.position(t * mips.scaleT(e))), Lod.weight(selection));
+            c = LaneSampler.lerp(c, level(mips, d + 1, s, t), Lod.weight(selection));
         }
-        return c;
+        return TexelLanes.argb(c);
+    }
+
+    /** The bilinear sample of level d at level-0 texel coordinates, by the general (floorMod) sampler. */
+    private static long level(MipChain mips, int d, double s, double t) {
+        TexelLanes lanes = mips.lanes();
+        return LaneSampler.bilinear(lanes.lanes(), lanes.offset(d), lanes.stride(d), mips.width(d), mips.height(d),
+                Sampler.position(s * mips.scaleS(d)), Sampler.position(t * mips.scaleT(d)));
     }
 
     /**
@@ -167,13 +219,13 @@ class FilteredSpansTest {
      * run's ({@link Lod#fixed}), each stepped linearly (rounded down), the larger of the two.
      */
     private static double interpolatedLambda(Rasterizer r, MipChain mips, int x, int y) {
-        int run = FilteredSpans.LOD_RUN;
+        int run = LodRuns.LOD_RUN;
         int a = x - Math.floorMod(x, run);
         int[] la = axisLambdas(r, mips, a, y);
         int[] lb = axisLambdas(r, mips, a + run, y);
-        if (la == null || lb == null || Math.abs(lb[0] - la[0]) > FilteredSpans.MAX_LOD_STEP
-                || Math.abs(lb[1] - la[1]) > FilteredSpans.MAX_LOD_STEP
-                || !FilteredSpans.nearlyLinear(a, r.setup().qPlane.base + r.setup().qPlane.dy * y, r.setup().sPlane.base + r.setup().sPlane.dy * y,
+        if (la == null || lb == null || Math.abs(lb[0] - la[0]) > LodRuns.MAX_LOD_STEP
+                || Math.abs(lb[1] - la[1]) > LodRuns.MAX_LOD_STEP
+                || !LodRuns.nearlyLinear(a, r.setup().qPlane.base + r.setup().qPlane.dy * y, r.setup().sPlane.base + r.setup().sPlane.dy * y,
                 r.setup().tPlane.base + r.setup().tPlane.dy * y, r.setup().qPlane.dx, r.setup().sPlane.dx, r.setup().sPlane.dy, r.setup().tPlane.dx, r.setup().tPlane.dy,
                 r.setup().qPlane.dx, r.setup().qPlane.dy, true)) {
             return Double.NaN;
@@ -190,9 +242,9 @@ class FilteredSpansTest {
         }
         double s = (r.setup().sPlane.base + r.setup().sPlane.dy * y + r.setup().sPlane.dx * x) / q;
         double t = (r.setup().tPlane.base + r.setup().tPlane.dy * y + r.setup().tPlane.dx * x) / q;
-        int lx = Lod.fixed(Lod.lambdaOf(Lod.rhoSquared(s, t, 1 / q, r.setup().sPlane.dx, r.setup().tPlane.dx, r.setup().qPlane.dx)),
+        int lx = Lod.fixedOfSquared(Lod.rhoSquared(s, t, 1 / q, r.setup().sPlane.dx, r.setup().tPlane.dx, r.setup().qPlane.dx),
                 mips.maxLevel());
-        int ly = Lod.fixed(Lod.lambdaOf(Lod.rhoSquared(s, t, 1 / q, r.setup().sPlane.dy, r.setup().tPlane.dy, r.setup().qPlane.dy)),
+        int ly = Lod.fixedOfSquared(Lod.rhoSquared(s, t, 1 / q, r.setup().sPlane.dy, r.setup().tPlane.dy, r.setup().qPlane.dy),
                 mips.maxLevel());
         return lx == Lod.NO_LAMBDA || ly == Lod.NO_LAMBDA ? null : new int[] {lx, ly};
     }
@@ -206,7 +258,7 @@ class FilteredSpansTest {
         // Steeply foreshortened triangles (depth ratios up to 20 across them), on power-of-two and other
         // textures: every pixel is the documented rule's colour, bit for bit, and where lambda is
         // interpolated it stays within 0.012 of the exact one (as it selects levels: clamped to the range
-        // of levels), the documented bound 3/256 (FilteredSpans.nearlyLinear).
+        // of levels), the documented bound 3/256 (LodRuns.nearlyLinear).
         Random rnd = new Random(10);
         Texture[] textures = {noise(64, 64, 7), noise(48, 20, 8)};
         double worst = 0;
