@@ -35,7 +35,22 @@ paths=("$@")
 src=$(cd "$(dirname "$0")/side-by-side" && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-javac -d "$tmp/a" -cp "$a" "$src/Frame.java"
-javac -d "$tmp/b" -cp "$b" "$src/Frame.java"
+# Frame.java imports the frame's values from dev.trisect.render; builds before commit 1c5f986 had
+# them in pipeline, tessellate and raster: compile a copy with those imports for such a jar.
+frame_for() {
+  local jar=$1 dir=$2
+  mkdir -p "$dir/src"
+  if unzip -l "$jar" 'dev/trisect/render/RenderSettings.class' >/dev/null 2>&1; then
+    cp "$src/Frame.java" "$dir/src/Frame.java"
+  else
+    sed -e 's/dev\.trisect\.render\.\(RenderSettings\|RenderMode\|CullMode\|FrameStats\);/dev.trisect.pipeline.\1;/' \
+        -e 's/dev\.trisect\.render\.\(TessellationSettings\|SplitPolicy\|SplitPoint\);/dev.trisect.tessellate.\1;/' \
+        -e 's/dev\.trisect\.render\.\(Framebuffer\|BorderStyle\);/dev.trisect.raster.\1;/' \
+        "$src/Frame.java" >"$dir/src/Frame.java"
+  fi
+  javac -d "$dir" -cp "$jar" "$dir/src/Frame.java"
+}
+frame_for "$a" "$tmp/a"
+frame_for "$b" "$tmp/b"
 javac -d "$tmp/run" "$src/SideBySide.java"
 java -cp "$tmp/run" SideBySide "$tmp/a" "$tmp/b" "$a" "$b" "$scene" "$size" "$pairs" "$frames" "${paths[@]}"
