@@ -1,6 +1,8 @@
 package dev.trisect;
 
+import java.awt.AWTException;
 import java.awt.GraphicsEnvironment;
+import java.awt.Robot;
 import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicReference;
 import javax.swing.SwingUtilities;
@@ -12,6 +14,40 @@ import org.junit.jupiter.api.Assumptions;
  */
 public final class GuiTests {
     private GuiTests() {
+    }
+
+    /** A robot that pauses 20 ms after each event, or null without a display (saying why the tests of {@code who} skip). */
+    public static Robot robot(String who) throws AWTException {
+        if (headless(who)) {
+            return null;
+        }
+        Robot robot = new Robot();
+        robot.setAutoDelay(20);
+        return robot;
+    }
+
+    /**
+     * Catches exceptions no thread handled, from {@link #start} until {@link #check}: a GUI test
+     * asserts there were none on the event thread, the render thread or any other.
+     */
+    public static final class Uncaught {
+        private final AtomicReference<Throwable> first = new AtomicReference<>();
+        private Thread.UncaughtExceptionHandler previous;
+
+        /** Starts catching; call before the test opens its windows. */
+        public void start() {
+            previous = Thread.getDefaultUncaughtExceptionHandler();
+            Thread.setDefaultUncaughtExceptionHandler((t, e) -> first.compareAndSet(null, e));
+        }
+
+        /** Stops catching and fails if anything was caught. */
+        public void check() {
+            Thread.setDefaultUncaughtExceptionHandler(previous);
+            Throwable t = first.get();
+            if (t != null) {
+                throw new AssertionError("uncaught exception: " + t, t);
+            }
+        }
     }
 
     /** Whether there is no display; prints once why the tests of {@code who} will be skipped. */

@@ -1,5 +1,7 @@
 package dev.trisect.devtools;
 
+import dev.trisect.content.AssetScenes;
+import dev.trisect.content.SceneAsset;
 import dev.trisect.view.internal.ViewController;
 import dev.trisect.view.internal.ViewSettings;
 import dev.trisect.view.internal.ViewState;
@@ -32,7 +34,13 @@ final class RenderSection implements ToolSection {
                 owner.message("Nothing measured yet: tick \"Measure against the per-pixel path\" first.");
                 return;
             }
-            String cmd = CliArgs.compareCommand(owner.state().scene(), m);
+            SceneAsset asset = AssetScenes.assetOf(owner.state().scene()).orElse(null);
+            if (asset == null) {
+                owner.message("The command line draws built-in scenes and OBJ files; this scene was made by the "
+                        + "program, so there is no command that reproduces it.");
+                return;
+            }
+            String cmd = CliArgs.compareCommand(asset, m);
             Toolkit.getDefaultToolkit().getSystemClipboard().setContents(new StringSelection(cmd), null);
             owner.message("Copied the compare command of the measured frame; run it from the repository root "
                     + "after mvn -q package -DskipTests.");

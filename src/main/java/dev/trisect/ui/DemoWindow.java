@@ -1,6 +1,8 @@
 package dev.trisect.ui;
 
 import dev.trisect.base.InputException;
+import dev.trisect.content.AssetScenes;
+import dev.trisect.render.RenderSettings;
 import dev.trisect.content.SceneAsset;
 import dev.trisect.content.SceneLoader;
 import dev.trisect.render.RenderSettings;
@@ -71,7 +73,8 @@ final class DemoWindow {
     DemoWindow(SceneAsset scene, int threads) {
         frame = new JFrame(title(scene));
         frame.setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
-        view = new TrisectView(scene, threads);
+        view = new TrisectView(AssetScenes.scene(scene), threads);
+        view.setCamera(scene.camera());
         view.setPreferredSize(new Dimension(1280, 720));
         view.addFrameListener(f -> latest = f);
         view.addMessageListener(this::status);
@@ -287,7 +290,7 @@ final class DemoWindow {
             protected void done() {
                 try {
                     SceneAsset s = get();
-                    view.setScene(s);
+                    view.setScene(AssetScenes.scene(s));
                     view.setCamera(s.camera());
                     frame.setTitle(title(s));
                     status("Loaded " + file.getFileName() + " (" + s.mesh().triangleCount() + " triangles)"

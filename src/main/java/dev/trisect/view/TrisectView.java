@@ -4,7 +4,10 @@ import dev.trisect.content.SceneAsset;
 import dev.trisect.devtools.DevToolsDialog;
 import dev.trisect.devtools.DevToolsPanel;
 import dev.trisect.render.RenderSettings;
+import dev.trisect.math.Vec3;
 import dev.trisect.scene.Camera;
+import dev.trisect.scene.Pick;
+import dev.trisect.scene.Scene;
 import dev.trisect.view.internal.FramePainter;
 import dev.trisect.view.internal.FrameReport;
 import dev.trisect.view.internal.FrameSlot;
@@ -24,6 +27,7 @@ import java.awt.event.FocusEvent;
 import java.awt.event.HierarchyEvent;
 import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
+import java.awt.event.MouseEvent;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
 import java.awt.image.BufferedImage;
@@ -41,14 +45,18 @@ import javax.swing.KeyStroke;
 import javax.swing.SwingUtilities;
 
 /**
- * A Swing component that shows a scene and renders it continuously on a thread of its own.
+ * A Swing component that shows a {@link Scene} and renders it continuously on a thread of its own.
  *
  * <pre>{@code
  * TrisectView view = new TrisectView(scene);
  * view.setCamera(Camera.looking(new Vec3(3, 2, 4), Vec3.ZERO));
  * frame.add(view);                       // rendering starts when it is shown
  * view.addFrameListener(f -> System.out.println(f.framesPerSecond() + " fps"));
+ * view.addPickListener((pick, click) -> System.out.println("clicked " + pick.object().name()));
  * }</pre>
+ *
+ * <p>The scene may change at any time from any thread — objects added, moved, hidden, removed — and
+ * the next frame shows it (see {@link Scene} for how changes reach a frame).
  *
  * <p><b>Threads.</b> Build it, add it and call its Swing methods on the event thread, as with any
  * component. The setters of what it shows — scene, camera, render settings, render scale, camera
@@ -73,6 +81,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
     private final transient ViewController controller;
     private final transient ViewMouse mouse;
     private final transient List<FrameListener> frameListeners = new CopyOnWriteArrayList<>();
+    private final transient List<PickListener> pickListeners = new CopyOnWriteArrayList<>();
     private final transient List<Action> movement = new ArrayList<>();
     private transient DevToolsDialog devTools;
     private transient Window window;
@@ -95,24 +104,32 @@ public class TrisectView extends JComponent implements AutoCloseable {
     };
     private volatile boolean closed;
 
-    /** A view of {@code scene}, from its own camera, rendering with one thread per processor. */
-    public TrisectView(SceneAsset scene) {
+    /** The camera a new view starts with: 6 units back and 2 up from the origin, looking at it. */
+    public static final Camera DEFAULT_CAMERA = Camera.looking(new Vec3(0, 2, 6), Vec3.ZERO);
+
+    /** A view of an empty scene (add objects to {@link #getScene()}), rendering with one thread per processor. */
+    public TrisectView() {
+        this(new Scene());
+    }
+
+    /** A view of {@code scene} from {@link #DEFAULT_CAMERA}, rendering with one thread per processor. */
+    public TrisectView(Scene scene) {
         this(scene, Runtime.getRuntime().availableProcessors());
     }
 
     /**
-     * A view of {@code scene}, from its own camera.
+     * A view of {@code scene} from {@link #DEFAULT_CAMERA}.
      *
      * @param renderThreads threads that fill each frame, 1 to 256
      */
-    public TrisectView(SceneAsset scene, int renderThreads) {
-        Objects.requireNonNull(scene, "scene");
+    public TrisectView(Scene scene, int renderThreads) {
+        Objects.requireNonNull(scene, "scene is null: use new Scene() for an empty one");
         if (renderThreads < 1 || renderThreads > 256) {
             throw new IllegalArgumentException("render threads must be between 1 and 256, got " + renderThreads);
         }
-        state = new ViewState(scene);
+        state = new ViewState(scene, DEFAULT_CAMERA);
         controller = new ViewController(state, new Surface(), renderThreads);
-        mouse = new ViewMouse(this, controller, (x, y) -> { });
+        mouse = new ViewMouse(this, controller, this::clicked);
         // The view's engine room, for the developer tools and for tests; not API.
         putClientProperty(ViewController.class, controller);
         putClientProperty(ViewMouse.class, mouse);
@@ -161,12 +178,12 @@ public class TrisectView extends JComponent implements AutoCloseable {
     // ---- What it shows -----------------------------------------------------------------------
 
     /** Shows {@code scene} from the next frame on; the camera stays where it is. Any thread. */
-    public void setScene(SceneAsset scene) {
-        state.scene(Objects.requireNonNull(scene, "scene"));
+    public void setScene(Scene scene) {
+        state.scene(Objects.requireNonNull(scene, "scene is null: use new Scene() for an empty one"));
     }
 
-    /** The scene shown. */
-    public SceneAsset getScene() {
+    /** The scene shown: change it from any thread, and the next frame shows the change. */
+    public Scene getScene() {
         return state.scene();
     }
 
@@ -175,7 +192,10 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * (reset) brings it back here. Any thread.
      */
     public void setCamera(Camera camera) {
-        state.camera(Objects.requireNonNull(camera, "camera"));
+        state.camera(Objects.requireNonNull(camera, "camera is null"));
+        // A camera put somewhere by the program ends an auto-orbit.
+        state.input.orbit(false);
+        controller.settingsChangedLater();
     }
 
     /** The camera of the newest frame (as the user moved it), or the one just set if it is not drawn yet. */
@@ -287,6 +307,41 @@ public class TrisectView extends JComponent implements AutoCloseable {
         controller.removeMessageListener(listener);
     }
 
+    /**
+     * Hears about clicks on objects, on the event thread (see {@link PickListener}). While any pick
+     * listener is registered, frames also record what picking reads (the texel coordinates and
+     * triangle of every pixel: 24 bytes a pixel written per frame).
+     */
+    public void addPickListener(PickListener listener) {
+        pickListeners.add(Objects.requireNonNull(listener, "listener"));
+        state.picking(true);
+    }
+
+    public void removePickListener(PickListener listener) {
+        pickListeners.remove(listener);
+        state.picking(!pickListeners.isEmpty());
+    }
+
+    /** A click (not a drag) at view point (x, y): tell the pick listeners what the frame on screen shows there. */
+    private void clicked(MouseEvent e) {
+        FrameSlot f = controller.front();
+        if (pickListeners.isEmpty() || f == null || f.drawn == null || f.frame.uv() == null) {
+            return;
+        }
+        int x = mouse.frameX(f, e.getX());
+        int y = mouse.frameY(f, e.getY());
+        double[] uv = f.frame.uv();
+        int i = 3 * (y * f.width() + x);
+        int id = (int) uv[i + 2] - 1;
+        if (id < 0) {
+            return;
+        }
+        Pick pick = f.drawn.pick(id, uv[i], uv[i + 1], x, y);
+        for (PickListener l : pickListeners) {
+            l.picked(pick, e);
+        }
+    }
+
     private void frameDone(FrameReport r) {
         if (frameListeners.isEmpty()) {
             return;
@@ -301,12 +356,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
     /** A copy of the frame on screen (with its borders, without legends), or null before the first. Event thread. */
     public BufferedImage frameImage() {
         FrameSlot f = controller.front();
-        if (f == null) {
-            return null;
-        }
-        BufferedImage copy = new BufferedImage(f.width(), f.height(), BufferedImage.TYPE_INT_RGB);
-        copy.setRGB(0, 0, f.width(), f.height(), f.frame.color(), 0, f.width());
-        return copy;
+        return f == null ? null : f.frame.toImage();
     }
 
     // ---- Commands and developer tools -----------------------------------------------------

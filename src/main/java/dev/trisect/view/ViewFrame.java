@@ -1,6 +1,7 @@
 package dev.trisect.view;
 
-import dev.trisect.content.SceneAsset;
+import dev.trisect.scene.Camera;
+import dev.trisect.scene.Scene;
 import java.awt.BorderLayout;
 import java.util.concurrent.atomic.AtomicReference;
 import javax.swing.JFrame;
@@ -11,7 +12,7 @@ import javax.swing.WindowConstants;
  * A window holding one {@link TrisectView}, for the quick case:
  *
  * <pre>{@code
- * ViewFrame.open("My scene", scene);
+ * ViewFrame.open("My scene", scene, Camera.looking(new Vec3(3, 2, 4), Vec3.ZERO));
  * }</pre>
  *
  * <p>It closes (and stops rendering) with its close button; the program ends when its last window
@@ -38,13 +39,15 @@ public final class ViewFrame extends JFrame {
     }
 
     /**
-     * Opens a window titled {@code title} showing {@code scene}, with the fly controls, and returns it.
-     * Any thread (it builds the window on the event thread and waits for it).
+     * Opens a window titled {@code title} showing {@code scene} from {@code camera}, with the fly
+     * controls, and returns it. Any thread (it builds the window on the event thread and waits for it).
      */
-    public static ViewFrame open(String title, SceneAsset scene) {
+    public static ViewFrame open(String title, Scene scene, Camera camera) {
         AtomicReference<ViewFrame> frame = new AtomicReference<>();
         Runnable build = () -> {
-            ViewFrame f = new ViewFrame(title, new TrisectView(scene));
+            TrisectView view = new TrisectView(scene);
+            view.setCamera(camera);
+            ViewFrame f = new ViewFrame(title, view);
             f.setVisible(true);
             f.view().requestFocusInWindow();
             frame.set(f);

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import dev.trisect.content.AssetScenes;
 import dev.trisect.cli.Cli;
 import dev.trisect.content.DemoScenes;
 import dev.trisect.devtools.CliArgs;
@@ -296,7 +297,7 @@ class DemoWindowGuiTest {
         assertEquals(String.format(Locale.ROOT, "%.3f px", c.meanDisplacement()),
                 onEdt(() -> tools().readout("Mean displacement")));
         assertNotNull(onEdt(() -> tools().readout("PSNR")));
-        List<String> args = CliArgs.compare(state().scene(), m);
+        List<String> args = CliArgs.compare(AssetScenes.assetOf(state().scene()).orElseThrow(), m);
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();
         assertEquals(0, Cli.run(new PrintWriter(out, true), new PrintWriter(err, true), args.toArray(String[]::new)),

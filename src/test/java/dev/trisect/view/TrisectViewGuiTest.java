@@ -7,10 +7,13 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
-import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.GuiTests;
+import dev.trisect.content.AssetScenes;
+import dev.trisect.math.Vec3;
+import dev.trisect.render.RenderMode;
+import dev.trisect.scene.Camera;
 import dev.trisect.content.DemoScenes;
 import dev.trisect.math.Vec3;
 import dev.trisect.render.RenderMode;
@@ -26,7 +29,6 @@ import java.awt.image.BufferedImage;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicInteger;
-import java.util.concurrent.atomic.AtomicReference;
 import javax.swing.AbstractAction;
 import javax.swing.JButton;
 import javax.swing.JComponent;
@@ -50,25 +52,20 @@ class TrisectViewGuiTest {
     private JFrame host;
     private TrisectView view;
     private final List<FrameInfo> frames = new CopyOnWriteArrayList<>();
-    private final AtomicReference<Throwable> uncaught = new AtomicReference<>();
-    private Thread.UncaughtExceptionHandler previousHandler;
+    private final GuiTests.Uncaught uncaught = new GuiTests.Uncaught();
 
     @BeforeAll
     static void robot() throws Exception {
-        if (!GuiTests.headless("TrisectViewGuiTest")) {
-            robot = new Robot();
-            robot.setAutoDelay(20);
-        }
+        robot = GuiTests.robot("TrisectViewGuiTest");
     }
 
     @BeforeEach
     void open() throws Exception {
         GuiTests.requireDisplay();
-        previousHandler = Thread.getDefaultUncaughtExceptionHandler();
-        Thread.setDefaultUncaughtExceptionHandler((t, e) -> uncaught.compareAndSet(null, e));
+        uncaught.start();
         edt(() -> {
             host = new JFrame("host");
-            view = new TrisectView(DemoScenes.boxes(), 2);
+            view = new TrisectView(AssetScenes.scene(DemoScenes.boxes()), 2);
             view.setPreferredSize(new Dimension(400, 300));
             view.addFrameListener(frames::add);
             JPanel side = new JPanel();
@@ -87,8 +84,7 @@ class TrisectViewGuiTest {
         if (host != null) {
             edt(() -> host.dispose());
         }
-        Thread.setDefaultUncaughtExceptionHandler(previousHandler);
-        assertNull(uncaught.get(), "no uncaught exception on any thread");
+        uncaught.check();
     }
 
     private Thread renderThread() throws Exception {
@@ -185,7 +181,7 @@ class TrisectViewGuiTest {
         assertEquals(before, frames.size(), "a closed view draws no more, even when added again");
 
         TrisectView second = onEdt(() -> {
-            TrisectView v = new TrisectView(DemoScenes.floor(), 1);
+            TrisectView v = new TrisectView(AssetScenes.scene(DemoScenes.floor()), 1);
             host.getContentPane().add(v, BorderLayout.NORTH);
             v.setPreferredSize(new Dimension(100, 80));
             host.pack();

@@ -1,10 +1,12 @@
 package dev.trisect.view.internal;
 
 import dev.trisect.metrics.HeatScale;
+import dev.trisect.pipeline.Draws;
 import dev.trisect.render.FrameStats;
-import dev.trisect.render.Framebuffer;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.scene.Camera;
+import dev.trisect.scene.internal.DrawnFrame;
+import dev.trisect.render.Framebuffer;
 import java.awt.image.BufferedImage;
 import java.awt.image.DataBufferInt;
 import java.awt.image.DirectColorModel;
@@ -40,6 +42,10 @@ public final class FrameSlot {
     public long serial;
     /** The camera the frame was drawn with. */
     public Camera camera;
+    /** What the frame drew: a draw per visible object (reused by the render thread for this slot). */
+    public final Draws draws = new Draws();
+    /** The objects the frame drew and the way back from its pixels to them, for picking. */
+    public DrawnFrame drawn;
 
     public FrameSlot(int width, int height) {
         frame = new Framebuffer(width, height);

@@ -8,6 +8,7 @@ import dev.trisect.texture.Lod;
 import dev.trisect.texture.MipChain;
 import dev.trisect.texture.Texture;
 import dev.trisect.texture.TextureFilter;
+import java.util.function.IntFunction;
 
 /**
  * The pixel inspector's numbers for one pixel, read from the renderer's own buffers of the frame just
@@ -44,8 +45,7 @@ public final class PixelInspector {
 
     /** Inspects pixel (x, y) of {@code frame}, against {@code reference} (the per-pixel path's frame, with UV). */
     static Inspection inspect(FrameRenderer renderer, Framebuffer frame, Framebuffer reference, TexelToScreen exact,
-                              Texture[] textures, int[] triangleMaterials, TextureFilter filter, boolean perspective,
-                              int x, int y) {
+                              IntFunction<Texture> textureOf, TextureFilter filter, boolean perspective, int x, int y) {
         int i = y * frame.width() + x;
         double[] uv = frame.uv();
         int id = (int) uv[3 * i + 2] - 1;
@@ -69,7 +69,7 @@ public final class PixelInspector {
                     : piece.affineDerivatives();
             lambda = Lod.lambda(d[0], d[1], d[2], d[3]);
         }
-        Texture tex = textures[triangleMaterials[id]];
+        Texture tex = textureOf.apply(id);
         MipChain chain = tex.mipChain();
         int level = 0;
         if (filter == TextureFilter.TRILINEAR && lambda > 0) {

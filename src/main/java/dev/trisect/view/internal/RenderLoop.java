@@ -1,13 +1,12 @@
 package dev.trisect.view.internal;
 
 import dev.trisect.base.InputException;
-import dev.trisect.content.SceneAsset;
-import dev.trisect.math.Mat4;
 import dev.trisect.math.Viewport;
 import dev.trisect.metrics.Comparison;
 import dev.trisect.metrics.HeatMap;
 import dev.trisect.metrics.ImageComparison;
 import dev.trisect.metrics.TexelToScreen;
+import dev.trisect.pipeline.Draws;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.render.BorderStyle;
 import dev.trisect.render.FrameStats;
@@ -15,6 +14,7 @@ import dev.trisect.render.Framebuffer;
 import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.scene.Camera;
+import dev.trisect.scene.internal.DrawnFrame;
 
 /**
  * The render thread: draws frames continuously into the engine's framebuffers and hands them to the
@@ -206,12 +206,15 @@ public final class RenderLoop implements Runnable {
     }
 
     private void drawFrame(ViewSettings settings, int fw, int fh, FreezeGate.Action action, double dt) {
-        SceneAsset scene = state.scene();
         Camera camera = cameras.next(action == FreezeGate.Action.REDRAW, dt);
         long homeSerial = cameras.homeSerial();
         if (back == null || !back.is(fw, fh)) {
             back = new FrameSlot(fw, fh);
         }
+        // One consistent snapshot of the scene for every render of this frame; the draws are the slot's
+        // own, so that a click on the frame on screen is picked against what that frame drew.
+        DrawnFrame drawn = new DrawnFrame(state.scene().snapshot(), camera, fw, fh, back.draws);
+        Draws draws = back.draws;
         if (!state.toolsOpen() && settings.view() != ViewKind.IMAGE) {
             // The comparison views belong to the developer tools: never shown (nor paid for) without them.
             settings = settings.withView(ViewKind.IMAGE);
@@ -224,10 +227,8 @@ public final class RenderLoop implements Runnable {
         long inspected = state.inspected();
         boolean needReference = settings.view() != ViewKind.IMAGE || compareDue || inspected >= 0;
         Framebuffer fb = back.frame;
-        fb.recordUv(needReference);
+        fb.recordUv(needReference || state.picking());
         Viewport viewport = new Viewport(fw, fh);
-        Mat4 vp = camera.viewProjection(viewport);
-        var textures = scene.textureArray();
         long compareStart = System.nanoTime();
         long perspectiveNanos = 0;
         double[] paths = null;
@@ -237,8 +238,7 @@ public final class RenderLoop implements Runnable {
                 reference.recordUv(true);
                 displacement = new float[fw * fh];
             }
-            renderer.render(scene.mesh(), textures, vp,
-                    settings.render().withMode(RenderMode.PERSPECTIVE).withBorders(false), reference);
+            renderer.render(draws, settings.render().withMode(RenderMode.PERSPECTIVE).withBorders(false), reference);
             perspectiveNanos = System.nanoTime() - compareStart;
         }
         if (compareDue) {
@@ -252,8 +252,7 @@ public final class RenderLoop implements Runnable {
                         scratch = new Framebuffer(fw, fh);
                     }
                     long t0 = System.nanoTime();
-                    renderer.render(scene.mesh(), textures, vp, settings.render().withMode(m).withBorders(false),
-                            scratch);
+                    renderer.render(draws, settings.render().withMode(m).withBorders(false), scratch);
                     paths[m.ordinal()] = (System.nanoTime() - t0) / 1e6;
                 }
             }
@@ -262,7 +261,7 @@ public final class RenderLoop implements Runnable {
         // This path last, so that its pieces are the ones the overlay outlines; the overlay comes after
         // the comparison, which measures the rendered image and never the borders.
         RenderSettings render = budget.apply(settings.render(), state.budget());
-        back.stats = renderer.render(scene.mesh(), textures, vp, render.withBorders(false), fb);
+        back.stats = renderer.render(draws, render.withBorders(false), fb);
         if (paths != null) {
             paths[settings.render().mode().ordinal()] = back.stats.totalNanos() / 1e6;
             state.pathMs(paths);
@@ -272,6 +271,7 @@ public final class RenderLoop implements Runnable {
         frames++;
         back.serial = frames;
         back.camera = camera;
+        back.drawn = drawn;
         state.drawnWith(camera, homeSerial);
         back.render = settings.render();
         back.drawnRender = render;
@@ -281,7 +281,7 @@ public final class RenderLoop implements Runnable {
         if (compareDue) {
             long t0 = System.nanoTime();
             // The exact displacement: the loop knows the geometry (maps are built per visible triangle).
-            TexelToScreen exact = new TexelToScreen(scene.mesh(), textures, vp, viewport);
+            TexelToScreen exact = new TexelToScreen(draws, viewport);
             Comparison c = ImageComparison.compare(fw, fh, fb.color(), fb.uv(), reference.color(), reference.uv(),
                     exact, displacement);
             compareMs = (System.nanoTime() - t0) / 1e6;
@@ -293,7 +293,7 @@ public final class RenderLoop implements Runnable {
         } else if (settings.view() == ViewKind.DIFFERENCE) {
             // Between measurements the heat map needs only the displacements, at a fraction of the cost.
             ImageComparison.displacements(fw, fh, fb.uv(), reference.uv(),
-                    new TexelToScreen(scene.mesh(), textures, vp, viewport), displacement);
+                    new TexelToScreen(draws, viewport), displacement);
         }
         compareNanos += System.nanoTime() - afterThisPath;
         back.inspection = null;
@@ -303,8 +303,7 @@ public final class RenderLoop implements Runnable {
             int iy = (int) inspected;
             if (ix < fw && iy < fh) {
                 back.inspection = PixelInspector.inspect(renderer, fb, reference,
-                        new TexelToScreen(scene.mesh(), textures, vp, viewport), textures,
-                        scene.mesh().triangleMaterials(), settings.render().filter(),
+                        new TexelToScreen(draws, viewport), drawn::textureOf, settings.render().filter(),
                         settings.render().mode() == RenderMode.PERSPECTIVE, ix, iy);
             }
             back.inspectNanos = System.nanoTime() - t0;

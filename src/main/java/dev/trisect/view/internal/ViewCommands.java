@@ -36,9 +36,10 @@ public final class ViewCommands {
     /** Image, Difference, Split: what the view shows, by {@link ViewKind} ordinal. */
     public final List<Command> views;
     private final Map<String, Command> byId = new LinkedHashMap<>();
+    private final ViewState state;
 
     ViewCommands(ViewController c) {
-        ViewState state = c.state();
+        state = c.state();
         devTools = add("dev-tools", Command.toggle("Developer tools", "Show or hide the developer tools window",
                 key(KeyEvent.VK_F12), cmd -> c.showDevTools(cmd.selected())));
         borders = add("borders", Command.toggle("Polygon borders", "Outline every piece filled in yellow",
@@ -133,6 +134,8 @@ public final class ViewCommands {
             c.show(c == views.get(s.view().ordinal()));
         }
         borders.show(r.borders());
+        // Moving by hand or a camera set by the program ends the auto-orbit.
+        orbit.show(state.input.orbit());
         filter.putValue(Action.NAME, "Texture filter: " + r.filter().id());
         borderColour.putValue(Action.NAME, "Border colour: " + r.borderStyle().colouring().id());
         splitPolicy.putValue(Action.NAME, "Split policy: " + r.tessellation().policy().name().toLowerCase(Locale.ROOT));

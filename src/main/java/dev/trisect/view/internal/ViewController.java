@@ -41,6 +41,8 @@ public final class ViewController {
     private FrameSlot front;
     private int toolsShowing;
     private boolean syncQueued;
+    /** Whether the auto-orbit command shows on, for the render thread to compare with the input. */
+    private volatile boolean orbitShown;
 
     public ViewController(ViewState state, Surface surface, int threads) {
         this.state = state;
@@ -72,6 +74,9 @@ public final class ViewController {
         loop.listener(new RenderLoop.LoopListener() {
             @Override
             public void frameDone(FrameReport report) {
+                if (state.input.orbit() != orbitShown) {
+                    settingsChangedLater();
+                }
                 for (Consumer<FrameReport> l : frameListeners) {
                     try {
                         l.accept(report);
@@ -138,6 +143,7 @@ public final class ViewController {
     public void settingsChanged() {
         ViewSettings s = state.settings();
         commands.sync(s);
+        orbitShown = commands.orbit.selected();
         for (Consumer<ViewSettings> l : settingsListeners) {
             l.accept(s);
         }

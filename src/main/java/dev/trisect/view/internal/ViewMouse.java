@@ -4,7 +4,7 @@ import java.awt.Point;
 import java.awt.event.MouseAdapter;
 import java.awt.event.MouseEvent;
 import java.awt.event.MouseWheelEvent;
-import java.util.function.BiConsumer;
+import java.util.function.Consumer;
 import javax.swing.JComponent;
 
 /**
@@ -18,7 +18,7 @@ public final class ViewMouse extends MouseAdapter {
 
     private final JComponent view;
     private final ViewController controller;
-    private final BiConsumer<Integer, Integer> clicked;
+    private final Consumer<MouseEvent> clicked;
     private int lastX;
     private int lastY;
     private boolean draggingDivider;
@@ -29,9 +29,9 @@ public final class ViewMouse extends MouseAdapter {
     /**
      * @param view       the component it listens to
      * @param controller the view's controller
-     * @param clicked    called with the view point (logical pixels) of each click that was not a drag
+     * @param clicked    called with each click that was not a drag (view coordinates, logical pixels)
      */
-    public ViewMouse(JComponent view, ViewController controller, BiConsumer<Integer, Integer> clicked) {
+    public ViewMouse(JComponent view, ViewController controller, Consumer<MouseEvent> clicked) {
         this.view = view;
         this.controller = controller;
         this.clicked = clicked;
@@ -75,7 +75,7 @@ public final class ViewMouse extends MouseAdapter {
             pinned = !pinned;
             inspectAt(e.getX(), e.getY());
         }
-        clicked.accept(e.getX(), e.getY());
+        clicked.accept(e);
     }
 
     @Override

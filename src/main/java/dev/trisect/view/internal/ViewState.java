@@ -2,7 +2,9 @@ package dev.trisect.view.internal;
 
 import dev.trisect.metrics.Comparison;
 import dev.trisect.scene.Camera;
+import dev.trisect.content.AssetScenes;
 import dev.trisect.content.SceneAsset;
+import dev.trisect.scene.Scene;
 
 /**
  * What the event thread and the render thread of one view share. Each field is an immutable value
@@ -26,7 +28,7 @@ public final class ViewState {
     /** Freeze and step: set by the event thread, obeyed by the render loop. */
     public final FreezeGate freeze = new FreezeGate();
     private volatile ViewSettings settings = ViewSettings.defaults();
-    private volatile SceneAsset scene;
+    private volatile Scene scene;
     /** The camera set by the host (and the one R returns to), with a serial so the loop sees each setting. */
     private volatile CameraRequest home;
     private volatile Controls controls = Controls.FLY;
@@ -44,6 +46,8 @@ public final class ViewState {
     private volatile double[] pathMs;
     /** Whether developer tools are showing, so that their numbers are worth measuring. */
     private volatile boolean toolsOpen;
+    /** Whether someone listens for picks, so that frames keep what picking needs (their UV output). */
+    private volatile boolean picking;
 
     private volatile Budget budget = new Budget(false, Budget.DEFAULT_TARGET_MS);
     /** The split threshold the budget controller chose for the last frame, pixels; NaN when off. */
@@ -74,10 +78,15 @@ public final class ViewState {
     public record Progress(long frames, double fps, double compareMs) {
     }
 
-    /** A view of {@code scene} from the scene's own camera. */
-    public ViewState(SceneAsset scene) {
+    /** A view of {@code scene} from {@code camera}. */
+    public ViewState(Scene scene, Camera camera) {
         this.scene = scene;
-        camera(scene.camera());
+        camera(camera);
+    }
+
+    /** A view of a built-in scene or an OBJ file, from its own camera (the command line draws the same). */
+    public ViewState(SceneAsset asset) {
+        this(AssetScenes.scene(asset), asset.camera());
     }
 
     public ViewSettings settings() {
@@ -94,12 +103,12 @@ public final class ViewState {
         return settings;
     }
 
-    public SceneAsset scene() {
+    public Scene scene() {
         return scene;
     }
 
     /** Shows another scene from the next frame on; the camera stays where it is. */
-    public void scene(SceneAsset s) {
+    public void scene(Scene s) {
         scene = s;
     }
 
@@ -171,6 +180,14 @@ public final class ViewState {
 
     public void pathMs(double[] ms) {
         pathMs = ms;
+    }
+
+    public boolean picking() {
+        return picking;
+    }
+
+    public void picking(boolean on) {
+        picking = on;
     }
 
     public boolean toolsOpen() {

@@ -4,6 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import dev.trisect.content.AssetScenes;
+import dev.trisect.devtools.CliArgs;
 import dev.trisect.cli.Cli;
 import dev.trisect.content.DemoScenes;
 import dev.trisect.devtools.CliArgs;
@@ -61,7 +63,7 @@ class RenderLoopTest {
                         .withMaxError(0.7)));
         ViewState.Measurement m = measure(state, settings);
         assertEquals(320, m.width());
-        List<String> args = CliArgs.compare(state.scene(), m);
+        List<String> args = CliArgs.compare(AssetScenes.assetOf(state.scene()).orElseThrow(), m);
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();
         int status = Cli.run(new PrintWriter(out, true), new PrintWriter(err, true), args.toArray(String[]::new));
@@ -145,7 +147,7 @@ class RenderLoopTest {
             t.join(5000);
         }
         assertNotNull(m);
-        List<String> args = CliArgs.compare(state.scene(), m);
+        List<String> args = CliArgs.compare(AssetScenes.assetOf(state.scene()).orElseThrow(), m);
         StringWriter out = new StringWriter();
         StringWriter err = new StringWriter();
         assertEquals(0, Cli.run(new PrintWriter(out, true), new PrintWriter(err, true), args.toArray(String[]::new)),
