@@ -308,37 +308,39 @@ public class TrisectView extends JComponent implements AutoCloseable {
     }
 
     /**
-     * Hears about clicks on objects, on the event thread (see {@link PickListener}). While any pick
-     * listener is registered, frames also record what picking reads (the texel coordinates and
-     * triangle of every pixel: 24 bytes a pixel written per frame).
+     * Hears about clicks on objects, on the event thread (see {@link PickListener}). A click is picked
+     * against the frame on screen; when that frame kept no per-pixel texel coordinates (it does only
+     * while the developer tools measure), the render thread draws it once more to read them, so a
+     * click costs about one frame and frames cost nothing extra.
      */
     public void addPickListener(PickListener listener) {
         pickListeners.add(Objects.requireNonNull(listener, "listener"));
-        state.picking(true);
     }
 
     public void removePickListener(PickListener listener) {
         pickListeners.remove(listener);
-        state.picking(!pickListeners.isEmpty());
     }
 
-    /** A click (not a drag) at view point (x, y): tell the pick listeners what the frame on screen shows there. */
+    /** A click (not a drag): tell the pick listeners what the frame on screen shows there. */
     private void clicked(MouseEvent e) {
         FrameSlot f = controller.front();
-        if (pickListeners.isEmpty() || f == null || f.drawn == null || f.frame.uv() == null) {
+        if (pickListeners.isEmpty() || f == null || f.drawn == null) {
             return;
         }
-        int x = mouse.frameX(f, e.getX());
-        int y = mouse.frameY(f, e.getY());
-        double[] uv = f.frame.uv();
-        int i = 3 * (y * f.width() + x);
-        int id = (int) uv[i + 2] - 1;
-        if (id < 0) {
-            return;
-        }
-        Pick pick = f.drawn.pick(id, uv[i], uv[i + 1], x, y);
+        state.picks.request(f, mouse.frameX(f, e.getX()), mouse.frameY(f, e.getY()), pick -> {
+            if (pick != null) {
+                if (SwingUtilities.isEventDispatchThread()) {
+                    tellPickListeners(pick, e);
+                } else {
+                    SwingUtilities.invokeLater(() -> tellPickListeners(pick, e));
+                }
+            }
+        });
+    }
+
+    private void tellPickListeners(Pick pick, MouseEvent click) {
         for (PickListener l : pickListeners) {
-            l.picked(pick, e);
+            l.picked(pick, click);
         }
     }
 

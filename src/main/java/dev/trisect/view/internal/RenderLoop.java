@@ -129,6 +129,7 @@ public final class RenderLoop implements Runnable {
         double fps = 0;
         try {
             while (running) {
+                servePicks();
                 int w = state.viewWidth();
                 int h = state.viewHeight();
                 ViewSettings settings = state.settings();
@@ -227,7 +228,7 @@ public final class RenderLoop implements Runnable {
         long inspected = state.inspected();
         boolean needReference = settings.view() != ViewKind.IMAGE || compareDue || inspected >= 0;
         Framebuffer fb = back.frame;
-        fb.recordUv(needReference || state.picking());
+        fb.recordUv(needReference);
         Viewport viewport = new Viewport(fw, fh);
         long compareStart = System.nanoTime();
         long perspectiveNanos = 0;
@@ -329,6 +330,18 @@ public final class RenderLoop implements Runnable {
                 for (int y = 0; y < fh; y++) {
                     System.arraycopy(src, y * fw + divider, dst, y * fw + divider, fw - divider);
                 }
+            }
+        }
+    }
+
+    /** Answers a click on the frame on screen, between frames (a failure is said once, as a frame's). */
+    private void servePicks() {
+        try {
+            state.picks.serve(renderer);
+        } catch (RuntimeException | OutOfMemoryError e) {
+            LoopListener l = listener;
+            if (l != null) {
+                l.problem("picking failed: " + message(e));
             }
         }
     }

@@ -27,6 +27,8 @@ public final class ViewState {
     public final InputState input = new InputState();
     /** Freeze and step: set by the event thread, obeyed by the render loop. */
     public final FreezeGate freeze = new FreezeGate();
+    /** Clicks to pick: asked by the event thread, answered by the render loop between frames. */
+    public final Picks picks = new Picks();
     private volatile ViewSettings settings = ViewSettings.defaults();
     private volatile Scene scene;
     /** The camera set by the host (and the one R returns to), with a serial so the loop sees each setting. */
@@ -46,8 +48,6 @@ public final class ViewState {
     private volatile double[] pathMs;
     /** Whether developer tools are showing, so that their numbers are worth measuring. */
     private volatile boolean toolsOpen;
-    /** Whether someone listens for picks, so that frames keep what picking needs (their UV output). */
-    private volatile boolean picking;
 
     private volatile Budget budget = new Budget(false, Budget.DEFAULT_TARGET_MS);
     /** The split threshold the budget controller chose for the last frame, pixels; NaN when off. */
@@ -180,14 +180,6 @@ public final class ViewState {
 
     public void pathMs(double[] ms) {
         pathMs = ms;
-    }
-
-    public boolean picking() {
-        return picking;
-    }
-
-    public void picking(boolean on) {
-        picking = on;
     }
 
     public boolean toolsOpen() {
