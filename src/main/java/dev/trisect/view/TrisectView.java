@@ -404,8 +404,10 @@ public class TrisectView extends JComponent implements AutoCloseable {
     /** Stops rendering for good and closes the developer tools window. Any thread; closing twice does nothing. */
     @Override
     public void close() {
-        closed = true;
-        controller.stop();
+        synchronized (controller) {
+            closed = true;
+            controller.stop();
+        }
         SwingUtilities.invokeLater(this::disposeTools);
     }
 
@@ -423,8 +425,11 @@ public class TrisectView extends JComponent implements AutoCloseable {
             window.addWindowListener(windowWatcher);
         }
         publishSize();
-        if (!closed) {
-            controller.start();
+        synchronized (controller) {
+            // Against a close() from another thread: either it sees this loop and stops it, or this sees it closed.
+            if (!closed) {
+                controller.start();
+            }
         }
     }
 

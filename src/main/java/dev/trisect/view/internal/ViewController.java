@@ -36,8 +36,9 @@ public final class ViewController {
     private final List<Consumer<FrameReport>> frameListeners = new CopyOnWriteArrayList<>();
     private final List<Consumer<String>> messageListeners = new CopyOnWriteArrayList<>();
     private final List<Consumer<ViewSettings>> settingsListeners = new CopyOnWriteArrayList<>();
-    private RenderLoop loop;
-    private Thread thread;
+    /** Read by {@link #stop}, which may run on any thread (a view closed from elsewhere). */
+    private volatile RenderLoop loop;
+    private volatile Thread thread;
     private FrameSlot front;
     private int toolsShowing;
     private boolean syncQueued;
@@ -65,8 +66,8 @@ public final class ViewController {
         return threads;
     }
 
-    /** Starts the render thread, unless it runs. */
-    public void start() {
+    /** Starts the render thread, unless it runs. Event thread. */
+    public synchronized void start() {
         if (thread != null && thread.isAlive() && !loop.stopping()) {
             return;
         }
@@ -93,14 +94,16 @@ public final class ViewController {
             }
         });
         thread = new Thread(loop, "trisect-render");
-        thread.setDaemon(false);
+        // A library's thread never keeps a program alive: the windows (the event thread) decide.
+        thread.setDaemon(true);
         thread.start();
     }
 
-    /** Asks the render thread to stop after its frame; it closes its renderer as it ends. */
-    public void stop() {
-        if (loop != null) {
-            loop.stop();
+    /** Asks the render thread to stop after its frame; it closes its renderer as it ends. Any thread. */
+    public synchronized void stop() {
+        RenderLoop l = loop;
+        if (l != null) {
+            l.stop();
         }
     }
 
