@@ -235,6 +235,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
         controller.settingsChangedLater();
     }
 
+    /** The share of the view's device pixels rendered, (0, 1]. */
     public double getRenderScale() {
         return state.settings().renderScale();
     }
@@ -274,6 +275,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
         }
     }
 
+    /** How the mouse and keys move the camera now. */
     public CameraControls getCameraControls() {
         return CameraControls.valueOf(state.controls().name());
     }
@@ -290,6 +292,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
         frameListeners.add(Objects.requireNonNull(listener, "listener"));
     }
 
+    /** Stops telling {@code listener} about frames; it may still hear of one being reported now. */
     public void removeFrameListener(FrameListener listener) {
         frameListeners.remove(listener);
     }
@@ -303,6 +306,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
         controller.addMessageListener(Objects.requireNonNull(listener, "listener"));
     }
 
+    /** Stops passing messages to {@code listener}. */
     public void removeMessageListener(Consumer<String> listener) {
         controller.removeMessageListener(listener);
     }
@@ -317,6 +321,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
         pickListeners.add(Objects.requireNonNull(listener, "listener"));
     }
 
+    /** Stops telling {@code listener} about clicks on objects. */
     public void removePickListener(PickListener listener) {
         pickListeners.remove(listener);
     }
