@@ -10,6 +10,10 @@ package dev.trisect.view;
  */
 @FunctionalInterface
 public interface FrameListener {
-    /** A frame was drawn. */
+    /**
+     * A frame was drawn.
+     *
+     * @param frame what was drawn and how long it took
+     */
     void frameDrawn(FrameInfo frame);
 }

@@ -14,6 +14,11 @@ import java.awt.event.MouseEvent;
  */
 @FunctionalInterface
 public interface PickListener {
-    /** The user clicked the object {@code pick} names. */
+    /**
+     * The user clicked an object.
+     *
+     * @param pick  the object, its triangle, the 3D point and the texel under the mouse
+     * @param click the mouse event (view coordinates, buttons, modifiers)
+     */
     void picked(Pick pick, MouseEvent click);
 }

@@ -102,7 +102,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
             state.input.releaseAll();
         }
     };
-    private volatile boolean closed;
+    private transient volatile boolean closed;
 
     /** The camera a new view starts with: 6 units back and 2 up from the origin, looking at it. */
     public static final Camera DEFAULT_CAMERA = Camera.looking(new Vec3(0, 2, 6), Vec3.ZERO);
@@ -112,7 +112,11 @@ public class TrisectView extends JComponent implements AutoCloseable {
         this(new Scene());
     }
 
-    /** A view of {@code scene} from {@link #DEFAULT_CAMERA}, rendering with one thread per processor. */
+    /**
+     * A view of {@code scene} from {@link #DEFAULT_CAMERA}, rendering with one thread per processor.
+     *
+     * @param scene what to show; it may change while the view draws it
+     */
     public TrisectView(Scene scene) {
         this(scene, Runtime.getRuntime().availableProcessors());
     }
@@ -120,6 +124,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
     /**
      * A view of {@code scene} from {@link #DEFAULT_CAMERA}.
      *
+     * @param scene         what to show; it may change while the view draws it
      * @param renderThreads threads that fill each frame, 1 to 256
      */
     public TrisectView(Scene scene, int renderThreads) {
@@ -177,19 +182,29 @@ public class TrisectView extends JComponent implements AutoCloseable {
 
     // ---- What it shows -----------------------------------------------------------------------
 
-    /** Shows {@code scene} from the next frame on; the camera stays where it is. Any thread. */
+    /**
+     * Shows another scene from the next frame on; the camera stays where it is. Any thread.
+     *
+     * @param scene what to show
+     */
     public void setScene(Scene scene) {
         state.scene(Objects.requireNonNull(scene, "scene is null: use new Scene() for an empty one"));
     }
 
-    /** The scene shown: change it from any thread, and the next frame shows the change. */
+    /**
+     * The scene shown.
+     *
+     * @return the scene: change it from any thread, and the next frame shows the change
+     */
     public Scene getScene() {
         return state.scene();
     }
 
     /**
      * Puts the camera here from the next frame on; the camera controls move it from there, and R
-     * (reset) brings it back here. Any thread.
+     * (reset) brings it back here. It also ends an auto-orbit. Any thread.
+     *
+     * @param camera where to look from, world space
      */
     public void setCamera(Camera camera) {
         state.camera(Objects.requireNonNull(camera, "camera is null"));
@@ -198,7 +213,11 @@ public class TrisectView extends JComponent implements AutoCloseable {
         controller.settingsChangedLater();
     }
 
-    /** The camera of the newest frame (as the user moved it), or the one just set if it is not drawn yet. */
+    /**
+     * The camera of the newest frame.
+     *
+     * @return the camera as the user moved it, or the one just set if no frame has been drawn with it yet
+     */
     public Camera getCamera() {
         return state.currentCamera();
     }
@@ -206,6 +225,8 @@ public class TrisectView extends JComponent implements AutoCloseable {
     /**
      * Draws with these settings from the next frame on: texturing path, split policy, filter,
      * borders, background... Any thread.
+     *
+     * @param settings how to draw; change the current ones with {@code getRenderSettings().with...}
      */
     public void setRenderSettings(RenderSettings settings) {
         Objects.requireNonNull(settings, "settings");
@@ -216,6 +237,8 @@ public class TrisectView extends JComponent implements AutoCloseable {
     /**
      * The settings frames are drawn with. A new view draws tessellated with trilinear filtering on
      * a sky-blue background, borders off (faded yellow when turned on).
+     *
+     * @return the settings in force
      */
     public RenderSettings getRenderSettings() {
         return state.settings().render();
@@ -235,7 +258,11 @@ public class TrisectView extends JComponent implements AutoCloseable {
         controller.settingsChangedLater();
     }
 
-    /** The share of the view's device pixels rendered, (0, 1]. */
+    /**
+     * The share of the view's device pixels rendered.
+     *
+     * @return the render scale, greater than 0 and at most 1
+     */
     public double getRenderScale() {
         return state.settings().renderScale();
     }
@@ -259,13 +286,21 @@ public class TrisectView extends JComponent implements AutoCloseable {
         controller.settingsChangedLater();
     }
 
-    /** The frame-time target in milliseconds, or 0 when off. */
+    /**
+     * The frame-time target.
+     *
+     * @return milliseconds of engine time per frame, or 0 when off
+     */
     public double getFrameTimeTarget() {
         ViewState.Budget b = state.budget();
         return b.on() ? b.targetMs() : 0;
     }
 
-    /** How the mouse and keys move the camera; {@link CameraControls#NONE} leaves it to the program. Any thread. */
+    /**
+     * How the mouse and keys move the camera. Any thread.
+     *
+     * @param controls fly (the default), orbit, or {@link CameraControls#NONE} to leave the camera to the program
+     */
     public void setCameraControls(CameraControls controls) {
         state.controls(ViewState.Controls.valueOf(Objects.requireNonNull(controls, "controls").name()));
         if (SwingUtilities.isEventDispatchThread()) {
@@ -275,24 +310,40 @@ public class TrisectView extends JComponent implements AutoCloseable {
         }
     }
 
-    /** How the mouse and keys move the camera now. */
+    /**
+     * How the mouse and keys move the camera now.
+     *
+     * @return the camera controls in force
+     */
     public CameraControls getCameraControls() {
         return CameraControls.valueOf(state.controls().name());
     }
 
-    /** Threads that fill each frame. */
+    /**
+     * Threads that fill each frame.
+     *
+     * @return the render threads, as given when the view was made
+     */
     public int getRenderThreads() {
         return controller.threads();
     }
 
     // ---- What it tells ---------------------------------------------------------------------
 
-    /** Hears about every frame drawn, on the render thread (see {@link FrameListener}). */
+    /**
+     * Hears about every frame drawn, on the render thread (see {@link FrameListener}).
+     *
+     * @param listener told of each frame
+     */
     public void addFrameListener(FrameListener listener) {
         frameListeners.add(Objects.requireNonNull(listener, "listener"));
     }
 
-    /** Stops telling {@code listener} about frames; it may still hear of one being reported now. */
+    /**
+     * Stops telling a listener about frames; it may still hear of one being reported now.
+     *
+     * @param listener one added before
+     */
     public void removeFrameListener(FrameListener listener) {
         frameListeners.remove(listener);
     }
@@ -301,12 +352,18 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * Hears one-line messages meant for the user, on the event thread: a frame that could not be
      * drawn (the view goes on with the next), a command the developer tools copied. A status bar is
      * a good place for them.
+     *
+     * @param listener given each message, one line
      */
     public void addMessageListener(Consumer<String> listener) {
         controller.addMessageListener(Objects.requireNonNull(listener, "listener"));
     }
 
-    /** Stops passing messages to {@code listener}. */
+    /**
+     * Stops passing messages to a listener.
+     *
+     * @param listener one added before
+     */
     public void removeMessageListener(Consumer<String> listener) {
         controller.removeMessageListener(listener);
     }
@@ -316,12 +373,18 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * against the frame on screen; when that frame kept no per-pixel texel coordinates (it does only
      * while the developer tools measure), the render thread draws it once more to read them, so a
      * click costs about one frame and frames cost nothing extra.
+     *
+     * @param listener told of each click on an object
      */
     public void addPickListener(PickListener listener) {
         pickListeners.add(Objects.requireNonNull(listener, "listener"));
     }
 
-    /** Stops telling {@code listener} about clicks on objects. */
+    /**
+     * Stops telling a listener about clicks on objects.
+     *
+     * @param listener one added before
+     */
     public void removePickListener(PickListener listener) {
         pickListeners.remove(listener);
     }
@@ -360,7 +423,11 @@ public class TrisectView extends JComponent implements AutoCloseable {
         }
     }
 
-    /** A copy of the frame on screen (with its borders, without legends), or null before the first. Event thread. */
+    /**
+     * The frame on screen, as an image. Event thread.
+     *
+     * @return a copy of the frame (with its borders, without the legends painted over it), or null before the first
+     */
     public BufferedImage frameImage() {
         FrameSlot f = controller.front();
         return f == null ? null : f.frame.toImage();
@@ -368,17 +435,30 @@ public class TrisectView extends JComponent implements AutoCloseable {
 
     // ---- Commands and developer tools -----------------------------------------------------
 
-    /** The view's command {@code which}, to put in a menu or on a button (see {@link ViewAction}). */
+    /**
+     * One of the view's commands, to put in a menu or on a button (see {@link ViewAction}).
+     *
+     * @param which the command
+     * @return its action: the same object each time, shared with the view's key and the developer tools
+     */
     public Action action(ViewAction which) {
         return controller.commands().byId(which.id);
     }
 
-    /** Opens (beside the view's window) or closes the developer tools window, as F12 does. Event thread. */
+    /**
+     * Opens (beside the view's window) or closes the developer tools window, as F12 does. Event thread.
+     *
+     * @param on whether to show it
+     */
     public void showDevTools(boolean on) {
         controller.showDevTools(on);
     }
 
-    /** Whether the developer tools window shows. */
+    /**
+     * Whether the developer tools window shows.
+     *
+     * @return true while it is open
+     */
     public boolean isDevToolsShowing() {
         return devTools != null && devTools.isVisible();
     }
@@ -387,6 +467,8 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * The developer tools as a panel to place in your own window (it scrolls; about 420 pixels wide
      * suits it). Each call makes a new panel; while one shows, the view also measures what it displays,
      * which costs frame time. Event thread.
+     *
+     * @return a new panel of the developer tools
      */
     public JComponent createDevToolsPanel() {
         return new DevToolsPanel(controller);
@@ -416,7 +498,11 @@ public class TrisectView extends JComponent implements AutoCloseable {
         SwingUtilities.invokeLater(this::disposeTools);
     }
 
-    /** Whether {@link #close} was called. */
+    /**
+     * Whether the view was closed.
+     *
+     * @return true once {@link #close} was called
+     */
     public boolean isClosed() {
         return closed;
     }

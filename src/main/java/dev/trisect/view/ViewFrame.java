@@ -21,9 +21,14 @@ import javax.swing.WindowConstants;
 public final class ViewFrame extends JFrame {
     private static final long serialVersionUID = 1L;
 
-    private final TrisectView view;
+    private final transient TrisectView view;
 
-    /** A window titled {@code title} around {@code view}, sized to the view's preferred size. Event thread. */
+    /**
+     * A window around a view, sized to the view's preferred size. Event thread.
+     *
+     * @param title the window's title
+     * @param view  the view to show in it
+     */
     public ViewFrame(String title, TrisectView view) {
         super(title);
         this.view = view;
@@ -33,14 +38,23 @@ public final class ViewFrame extends JFrame {
         setLocationByPlatform(true);
     }
 
-    /** The view in this window. */
+    /**
+     * The view in this window.
+     *
+     * @return the view
+     */
     public TrisectView view() {
         return view;
     }
 
     /**
-     * Opens a window titled {@code title} showing {@code scene} from {@code camera}, with the fly
-     * controls, and returns it. Any thread (it builds the window on the event thread and waits for it).
+     * Opens a window showing a scene, with the fly controls. Any thread (it builds the window on the
+     * event thread and waits for it).
+     *
+     * @param title  the window's title
+     * @param scene  what to show; it may change while the window is open
+     * @param camera where to look from
+     * @return the window, shown
      */
     public static ViewFrame open(String title, Scene scene, Camera camera) {
         AtomicReference<ViewFrame> frame = new AtomicReference<>();
