@@ -3,7 +3,8 @@
 # ../shared/tools/glref) and prints, per frame, how many pixels differ in colour and how far the
 # UV outputs are apart (the diff command's JSON line), then the share of covered pixels within 2/255
 # and their PSNR (scripts/within.py). Usage: [FILTER=nearest|bilinear|trilinear] [JAR=trisect.jar]
-#   scripts/compare-with-opengl.sh [glref-binary] [WxH]
+#   [TEXTURE=picture.ppm] scripts/compare-with-opengl.sh [glref-binary] [WxH]
+# TEXTURE (a binary PPM, absolute path) replaces the scenes' own texture in both renderers.
 # FILTER (default nearest) is passed to both: --filter for Trisect, GLREF_FILTER for glref.
 # Build glref first: gcc -O2 -o /tmp/glref ../shared/tools/glref/glref.c -lEGL -lGL -lGLU -lm
 set -euo pipefail
@@ -23,7 +24,7 @@ frame() { # name scene eye target cull [far]
   mkdir -p "$OUT/$scene"
   java -jar "$JAR" export --scene "$scene" --to "$OUT/$scene/$scene.obj" >/dev/null
   local tex
-  tex=$(ls "$OUT/$scene/$scene"-*.ppm | head -n 1)
+  tex=${TEXTURE:-$(ls "$OUT/$scene/$scene"-*.ppm | head -n 1)}
   # glref takes one texture, so Trisect gets the same one for every material.
   java -jar "$JAR" render --obj "$OUT/$scene/$scene.obj" --texture "$tex" --size "$SIZE" --mode perspective --filter "$FILTER" \
     --eye "$eye" --target "$target" --near 0.1 --far "$far" --cull "$cull" \
