@@ -133,7 +133,8 @@ public final class MipChain {
      * level per pixel loads one int instead of four values: bits 0–7 {@code log2(W / width(d))}, the
      * right shift taking a level-0 texel coordinate in fixed point to level d's ({@link #scaleS} is
      * 2 to minus that); bits 8–15 the same for heights; bits 16–23 {@code log2(width(d))}; bits 24–31
-     * {@code log2(height(d))}. Zero for chains that are not power-of-two.
+     * {@code log2(height(d))}. Zero for chains that are not power-of-two. (The pixel loops now read
+     * {@link TexelLanes#levels()} instead; this stays for {@link Sampler}'s reference samples.)
      */
     public int shape(int d) {
         return shapes[d];

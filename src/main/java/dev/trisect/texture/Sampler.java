@@ -1,8 +1,11 @@
 package dev.trisect.texture;
 
 /**
- * Bilinear and trilinear sampling with repeat, as static methods small enough for the JIT to inline
- * into the rasterizer's span loops: no allocation, no virtual call.
+ * Bilinear and trilinear sampling with repeat on the int texels of a level, with exact 16-bit weights:
+ * the rule the pixel loops used until issue 16, kept as the reference that {@link LaneSampler}'s packed
+ * blend with 8-bit weights is tested against (each channel within 1/255 of it) and as the "before" of
+ * {@code SampleCostBenchmark}. The pixel loops sample through {@link LaneSampler}; {@link #position}
+ * and the fixed-point constants here are shared by both.
  *
  * <p>Bilinear is OpenGL's {@code GL_LINEAR} with {@code GL_REPEAT} (OpenGL 4.6 core spec, §8.14.2,
  * eq. 8.9–8.10): on a level of {@code W x H} texels, the sample point in texel coordinates

@@ -13,8 +13,9 @@ import java.util.Objects;
  * {@code floorMod(floor(s), width)}, the row from the bottom {@code floorMod(floor(t), height)}.
  * The rasterizer inlines the same arithmetic; {@link #texelIndex} is the reference for it.
  *
- * <p>Bilinear and trilinear sampling ({@link TextureFilter}) use {@link Sampler} on the levels of
- * {@link #mipChain()}, which is built here, once, when the texture is created.
+ * <p>Bilinear and trilinear sampling ({@link TextureFilter}) use {@link LaneSampler} on the levels of
+ * {@link #mipChain()}, which is built here, once, when the texture is created, laid out in lanes
+ * ({@link MipChain#lanes()}) on the first filtered use.
  */
 public final class Texture {
     /** Largest width or height accepted, in texels. */
