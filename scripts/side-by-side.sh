@@ -13,6 +13,9 @@
 # be followed by @bilinear or @trilinear (the texture filter; nearest without), then by +borders or
 # +fade to draw the border overlay (plain or faded) with the frame, so that "edge edge+borders"
 # shows what the overlay adds and "error@trilinear" times the tessellated path with trilinear.
+# Caution: each build is compiled once per run, and some loops' compiled speed is decided per JVM
+# (the nearest affine loop runs in two modes ~2x apart on the floor scene, in every build so far):
+# repeat the run, or use scripts/separate-jvms.sh, which shows the spread over many JVMs.
 # Both jars must have the API Frame.java uses (DemoScenes in dev.trisect.scene or dev.trisect.content,
 # RenderSettings, FrameRenderer).
 set -euo pipefail
@@ -35,21 +38,7 @@ paths=("$@")
 src=$(cd "$(dirname "$0")/side-by-side" && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-# Frame.java imports the frame's values from dev.trisect.render; builds before commit 1c5f986 had
-# them in pipeline, tessellate and raster: compile a copy with those imports for such a jar.
-frame_for() {
-  local jar=$1 dir=$2
-  mkdir -p "$dir/src"
-  if unzip -l "$jar" 'dev/trisect/render/RenderSettings.class' >/dev/null 2>&1; then
-    cp "$src/Frame.java" "$dir/src/Frame.java"
-  else
-    sed -e 's/dev\.trisect\.render\.\(RenderSettings\|RenderMode\|CullMode\|FrameStats\);/dev.trisect.pipeline.\1;/' \
-        -e 's/dev\.trisect\.render\.\(TessellationSettings\|SplitPolicy\|SplitPoint\);/dev.trisect.tessellate.\1;/' \
-        -e 's/dev\.trisect\.render\.\(Framebuffer\|BorderStyle\);/dev.trisect.raster.\1;/' \
-        "$src/Frame.java" >"$dir/src/Frame.java"
-  fi
-  javac -d "$dir" -cp "$jar" "$dir/src/Frame.java"
-}
+. "$src/frame-for.sh"
 frame_for "$a" "$tmp/a"
 frame_for "$b" "$tmp/b"
 javac -d "$tmp/run" "$src/SideBySide.java"
