@@ -14,7 +14,7 @@ import javax.swing.JComponent;
 import javax.swing.JRadioButton;
 
 /**
- * Developer tools: the texturing path, bound to the same commands as keys 1 to 3 and the Render menu,
+ * Developer tools: the texturing path, bound to the same commands as keys 1 to 4 and the Render menu,
  * and the texture filter (key F and the View menu step through the same choices).
  */
 final class ModeSection implements ToolSection {

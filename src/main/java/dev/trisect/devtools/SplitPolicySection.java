@@ -1,5 +1,6 @@
 package dev.trisect.devtools;
 
+import dev.trisect.render.RenderMode;
 import dev.trisect.render.SplitPolicy;
 import dev.trisect.render.TessellationSettings;
 import dev.trisect.view.internal.ViewController;
@@ -22,7 +23,7 @@ final class SplitPolicySection implements ToolSection {
     private static final double MAX_ERROR = 8;
 
     private final ViewController owner;
-    private final ToolsForm form = new ToolsForm("Split policy (tessellated path)");
+    private final ToolsForm form = new ToolsForm("Split policy (tessellated path), Max error (span path)");
     private boolean syncing;
     private final JRadioButton edgePolicy = new JRadioButton("Edge");
     private final JRadioButton errorPolicy = new JRadioButton("Error");
@@ -44,7 +45,8 @@ final class SplitPolicySection implements ToolSection {
         edgePolicy.addActionListener(e -> setPolicy(SplitPolicy.EDGE));
         errorPolicy.addActionListener(e -> setPolicy(SplitPolicy.ERROR));
         maxEdge.setToolTipText("Longest edge a piece may have on screen, in pixels");
-        maxError.setToolTipText("Largest affine displacement allowed, in pixels (logarithmic scale)");
+        maxError.setToolTipText("Largest affine displacement allowed, in pixels (logarithmic scale): the Error "
+                + "policy's threshold, and the span path's knot spacing");
         maxDepth.setToolTipText("How many times an edge may be halved; an edge at this depth is not split again "
                 + "(the cap is per edge, so it never opens cracks)");
         ToolsForm.listen(maxEdge, () -> syncing, this::showValues, v -> tessellation(t -> t.withMaxEdge(v)));
@@ -98,7 +100,7 @@ final class SplitPolicySection implements ToolSection {
             maxError.setValue(errorToSlider(t.maxError()));
             maxDepth.setValue(t.maxDepth());
             maxEdge.setEnabled(t.policy() == SplitPolicy.EDGE);
-            maxError.setEnabled(t.policy() == SplitPolicy.ERROR);
+            maxError.setEnabled(t.policy() == SplitPolicy.ERROR || s.render().mode() == RenderMode.SPANS);
             showValues();
         } finally {
             syncing = false;

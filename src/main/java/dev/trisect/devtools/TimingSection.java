@@ -134,7 +134,7 @@ final class TimingSection implements ToolSection {
             for (double p : paths) {
                 top = Math.max(top, p);
             }
-            String[] names = {"persp", "affine", "tess"};
+            String[] names = {"persp", "affine", "tess", "spans"};
             int barW = 22;
             for (RenderMode m : RenderMode.values()) {
                 int bx = x + m.ordinal() * (barW + 4);

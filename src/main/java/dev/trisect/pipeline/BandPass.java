@@ -57,13 +57,16 @@ final class BandPass {
             lane.fillNanos = 0;
             lane.overlayNanos = 0;
         }
-        boolean perspective = settings.mode() == RenderMode.PERSPECTIVE;
+        boolean spans = settings.mode() == RenderMode.SPANS;
+        boolean perspective = settings.mode() == RenderMode.PERSPECTIVE || spans;
+        double spanError = spans ? settings.tessellation().maxError() : 0;
         int width = frame.width();
         int height = frame.height();
         int background = settings.background();
         boolean borders = settings.borders();
         if (borders) {
             outlines.begin(chunkCount);
+            outlines.ticks(chunks, spanError, settings.borderStyle());
         }
         int prepTasks = borders ? chunkCount : 0;
         int bands = BandBins.bandCount(height, FrameRenderer.BAND_ROWS);
@@ -81,6 +84,7 @@ final class BandPass {
             frame.clearRows(y0, y1, background);
             Rasterizer rasterizer = lane.rasterizer;
             rasterizer.filter(settings.filter());
+            rasterizer.spans(spanError);
             for (int c = 0; c < chunkCount; c++) {
                 Chunk chunk = chunks.get(c);
                 lane.pixels += rasterizer.fill(frame, chunk.out, chunk.bins.items(), chunk.bins.start(b),

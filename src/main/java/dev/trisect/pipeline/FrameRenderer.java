@@ -2,9 +2,11 @@ package dev.trisect.pipeline;
 
 import dev.trisect.math.Mat4;
 import dev.trisect.mesh.Mesh;
+import dev.trisect.raster.RowKnots;
 import dev.trisect.render.BorderStyle;
 import dev.trisect.render.FrameStats;
 import dev.trisect.render.Framebuffer;
+import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.render.TessellationSettings;
 import dev.trisect.texture.Texture;
@@ -52,6 +54,10 @@ public final class FrameRenderer implements AutoCloseable {
      * {@link #pieceAt} read; null before the first frame, after {@link #coverage} and after a failure.
      */
     private FrameGeometry.Result drawn;
+    /** The span path's max error of the frame last drawn by {@link #render}, 0 for the other paths. */
+    private double drawnSpanError;
+    /** The width of the frame last drawn by {@link #render}, pixels. */
+    private int drawnWidth;
     /** The one draw of {@link #render(Mesh, Texture[], Mat4, RenderSettings, Framebuffer)}, reused. */
     private final Draws single = new Draws();
 
@@ -111,6 +117,8 @@ public final class FrameRenderer implements AutoCloseable {
                 pool);
         long end = System.nanoTime();
         drawn = g;
+        drawnSpanError = settings.mode() == RenderMode.SPANS ? settings.tessellation().maxError() : 0;
+        drawnWidth = frame.width();
         return new FrameStatsBuilder(pool.threads(), start)
                 .geometry(draws.triangleCount(), geometry.chunks(), g, geometryDone)
                 .bands(b, end, settings.borders());
@@ -127,18 +135,34 @@ public final class FrameRenderer implements AutoCloseable {
     }
 
     /**
+     * The knots of row y of the filled triangle that shows pixel (x, y) in the last frame drawn by
+     * {@link #render}, when that frame took the span path, for the pixel inspector: found as
+     * {@link #pieceAt} finds the triangle, placed as the fill placed them.
+     *
+     * @return the row's knots, or null when the frame was not drawn in the span path or no triangle
+     *         holds the pixel
+     */
+    public RowKnots knotsAt(int x, int y, int triangle, double depth) {
+        if (drawnSpanError <= 0) {
+            return null;
+        }
+        return PieceLookup.knots(geometry.chunks(), drawnChunks(), x, y, triangle, depth, drawnWidth, drawnSpanError);
+    }
+
+    /**
      * Outlines the pieces of the frame last drawn by {@link #render} into {@code frame}, exactly as
      * rendering with borders on would have. Lets a caller measure the image before the overlay covers
      * it (the comparison with another path must never count the overlay), then add the overlay.
      * Valid until the next {@code render} or {@code coverage} call; {@code frame} must be the one rendered.
      * The style colours by split depth (red at {@code tessellation}'s depth cap) or by error bound
-     * (yellow at its Max error), and may fade outlines where pieces are dense.
+     * (yellow at its Max error), and may fade outlines where pieces are dense. A frame of the span path
+     * also gets its knot ticks, at the knots that frame's fill placed.
      *
      * @return nanoseconds it took
      */
     public long drawBorders(Framebuffer frame, BorderStyle style, TessellationSettings tessellation) {
         long start = System.nanoTime();
-        outlines.drawAll(frame, geometry.chunks(), drawnChunks(), style, tessellation, pool);
+        outlines.drawAll(frame, geometry.chunks(), drawnChunks(), style, tessellation, drawnSpanError, pool);
         return System.nanoTime() - start;
     }
 

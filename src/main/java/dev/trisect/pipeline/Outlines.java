@@ -2,6 +2,7 @@ package dev.trisect.pipeline;
 
 import dev.trisect.raster.BandBins;
 import dev.trisect.raster.BorderOverlay;
+import dev.trisect.raster.KnotTicks;
 import dev.trisect.raster.OutlinePlan;
 import dev.trisect.raster.ScreenTriangles;
 import dev.trisect.render.BorderStyle;
@@ -20,11 +21,15 @@ import java.util.concurrent.atomic.AtomicInteger;
  * for all preparations before {@link #drawBand drawing}. The pool hands out indices in order, so all
  * preparations are taken before any band is, and the wait ends. {@link BandPass} interleaves such a
  * pass with the fill; {@link #drawAll} is one on its own.
+ *
+ * <p>A frame of the span path also shows its knots ({@link KnotTicks}), drawn after the outlines of
+ * each band, in the same chunk order.
  */
 final class Outlines {
     /** Per-thread scratch. */
     private static final class Lane {
         final BorderOverlay overlay = new BorderOverlay();
+        final KnotTicks ticks = new KnotTicks();
         /** Keeps what {@link Framebuffer#touchRows} read. */
         long touched;
     }
@@ -34,6 +39,10 @@ final class Outlines {
     private int count;
     /** Preparations of the current pass that are done (or failed). */
     private final AtomicInteger prepared = new AtomicInteger();
+    /** The chunks whose knots the pass ticks, with the knots' max error, or null for no ticks. */
+    private Chunks tickChunks;
+    private double tickError;
+    private boolean tickByBound;
 
     /** @param threads the threads of the pool that will run its passes */
     Outlines(int threads) {
@@ -54,6 +63,19 @@ final class Outlines {
         }
         count = chunks;
         prepared.set(0);
+        tickChunks = null;
+    }
+
+    /**
+     * Makes the pass begun also tick the knots of the span path with max error {@code maxError} (0: no
+     * ticks) in the chunks' triangles, coloured by their segments' bound when the style colours by bound
+     * (the outlines are then yellow: the triangles' affine bound says nothing of this path). Call
+     * before the pass's preparations run.
+     */
+    void ticks(Chunks chunks, double maxError, BorderStyle style) {
+        tickChunks = maxError > 0 ? chunks : null;
+        tickError = maxError;
+        tickByBound = style.colouring() == BorderStyle.Colouring.BOUND;
     }
 
     /** The preparation tasks of the pass: one per chunk. */
@@ -64,7 +86,10 @@ final class Outlines {
     /** Prepares chunk {@code c}'s outlines for a frame {@code height} pixels high; counted done even if it fails. */
     void prepare(int c, ScreenTriangles triangles, BorderStyle style, TessellationSettings tessellation, int height) {
         try {
-            plans[c].prepare(triangles, style, tessellation.maxDepth(), tessellation.maxError(), height,
+            // In the span path the bound is the knots' (coloured on the ticks): the outlines stay yellow.
+            BorderStyle outlineStyle = tickChunks != null && tickByBound
+                    ? new BorderStyle(BorderStyle.Colouring.YELLOW, style.fade(), style.onlyFallback()) : style;
+            plans[c].prepare(triangles, outlineStyle, tessellation.maxDepth(), tessellation.maxError(), height,
                     FrameRenderer.BAND_ROWS);
         } finally {
             prepared.incrementAndGet();
@@ -94,16 +119,26 @@ final class Outlines {
         for (int c = 0; c < count; c++) {
             overlay.draw(frame, plans[c], band, 0, y0, frame.width(), y1);
         }
+        if (tickChunks != null) {
+            KnotTicks ticks = lanes[thread].ticks;
+            for (int c = 0; c < count; c++) {
+                Chunk chunk = tickChunks.get(c);
+                ticks.draw(frame, chunk.out, chunk.bins.items(), chunk.bins.start(band), chunk.bins.start(band + 1),
+                        plans[c], tickByBound, tickError, y0, y1);
+            }
+        }
     }
 
     /**
      * Outlines the screen triangles of chunks 0..chunkCount-1 into {@code frame}, a pass of its own
-     * (the frame's fill long done).
+     * (the frame's fill long done), with the knot ticks of a span-path frame drawn with max error
+     * {@code spanError} (0 for other paths).
      */
     void drawAll(Framebuffer frame, Chunks chunks, int chunkCount, BorderStyle style,
-                 TessellationSettings tessellation, WorkerPool pool) {
+                 TessellationSettings tessellation, double spanError, WorkerPool pool) {
         int height = frame.height();
         begin(chunkCount);
+        ticks(chunks, spanError, style);
         int bands = BandBins.bandCount(height, FrameRenderer.BAND_ROWS);
         pool.run(chunkCount + bands, (thread, task) -> {
             if (task < chunkCount) {

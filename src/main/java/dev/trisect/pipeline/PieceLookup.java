@@ -1,5 +1,6 @@
 package dev.trisect.pipeline;
 
+import dev.trisect.raster.RowKnots;
 import dev.trisect.raster.ScreenTriangles;
 import java.util.Arrays;
 
@@ -21,21 +22,49 @@ final class PieceLookup {
      * @return the piece, or null when none holds the pixel
      */
     static PieceInfo find(Chunks chunks, int chunkCount, int x, int y, int triangle, double depth) {
+        long at = locate(chunks, chunkCount, x, y, triangle, depth);
+        if (at < 0) {
+            return null;
+        }
+        int c = (int) (at >>> 32);
+        int i = (int) at;
+        int index = i;
+        for (int k = 0; k < c; k++) {
+            index += chunks.get(k).out.count();
+        }
+        ScreenTriangles t = chunks.get(c).out;
+        int s = i * ScreenTriangles.SCREEN_STRIDE;
+        int a = i * ScreenTriangles.ATTRIBUTE_STRIDE;
+        return new PieceInfo(index, triangle, t.levels()[i], t.perPixel()[i],
+                Arrays.copyOfRange(t.screen(), s, s + ScreenTriangles.SCREEN_STRIDE),
+                Arrays.copyOfRange(t.attributes(), a, a + ScreenTriangles.ATTRIBUTE_STRIDE));
+    }
+
+    /**
+     * The knots of row y of the filled triangle {@link #find} finds, as the span path with max error
+     * {@code maxError} placed them in a frame {@code width} pixels wide; null when none holds the pixel.
+     */
+    static RowKnots knots(Chunks chunks, int chunkCount, int x, int y, int triangle, double depth, int width,
+                          double maxError) {
+        long at = locate(chunks, chunkCount, x, y, triangle, depth);
+        return at < 0 ? null : RowKnots.of(chunks.get((int) (at >>> 32)).out, (int) at, width, y, maxError);
+    }
+
+    /** Where {@link #find}'s triangle is: its chunk in the high 32 bits, its index there in the low; -1 for none. */
+    private static long locate(Chunks chunks, int chunkCount, int x, int y, int triangle, double depth) {
         double cx = x + 0.5;
         double cy = y + 0.5;
-        PieceInfo best = null;
+        long best = -1;
         double bestGap = Double.POSITIVE_INFINITY;
-        int index = 0;
         for (int c = 0; c < chunkCount; c++) {
             ScreenTriangles t = chunks.get(c).out;
             double[] sc = t.screen();
             double[] at = t.attributes();
-            for (int i = 0; i < t.count(); i++, index++) {
+            for (int i = 0; i < t.count(); i++) {
                 if (t.ids()[i] != triangle) {
                     continue;
                 }
-                int s = i * ScreenTriangles.SCREEN_STRIDE;
-                double[] w = barycentric(sc, s, cx, cy);
+                double[] w = barycentric(sc, i * ScreenTriangles.SCREEN_STRIDE, cx, cy);
                 if (w == null) {
                     continue;
                 }
@@ -44,9 +73,7 @@ final class PieceLookup {
                 double gap = Math.abs(q - depth);
                 if (gap < bestGap) {
                     bestGap = gap;
-                    best = new PieceInfo(index, triangle, t.levels()[i], t.perPixel()[i],
-                            Arrays.copyOfRange(sc, s, s + ScreenTriangles.SCREEN_STRIDE),
-                            Arrays.copyOfRange(at, a, a + ScreenTriangles.ATTRIBUTE_STRIDE));
+                    best = (long) c << 32 | i;
                 }
             }
         }

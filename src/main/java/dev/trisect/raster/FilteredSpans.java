@@ -291,7 +291,7 @@ final class FilteredSpans {
     }
 
     /** The bilinear sample of level {@code d} of any chain at level-0 texel coordinates (s, t). */
-    private static long sample(long[] lanes, int[] levels, MipChain mips, int d, double s, double t) {
+    static long sample(long[] lanes, int[] levels, MipChain mips, int d, double s, double t) {
         int o = d * TexelLanes.LEVEL_INTS;
         return LaneSampler.bilinear(lanes, levels[o + TexelLanes.OFFSET], levels[o + TexelLanes.STRIDE],
                 levels[o + TexelLanes.WIDTH], levels[o + TexelLanes.HEIGHT],

@@ -8,7 +8,8 @@ import dev.trisect.texture.TextureFilter;
  * Fills screen-space triangles into a {@link Framebuffer}, restricted to a rectangle of the frame:
  * for each triangle, {@link TriangleSetup} (bounds and attribute planes), {@link SpanSolver} (the
  * covered pixels of each row), then the pixel loop of the texture filter and path
- * ({@link NearestSpans}, {@link FilteredSpans}).
+ * ({@link NearestSpans}, {@link FilteredSpans}; in the span path {@link KnotSpans} and
+ * {@link KnotFilteredSpans}, with knots placed by {@link KnotSpacing}).
  *
  * <p>Coverage is exact integer arithmetic on snapped corners: a pixel belongs to a triangle when its
  * centre is inside, and a centre exactly on an edge goes to the triangle for which that edge is a top
@@ -26,6 +27,8 @@ public final class Rasterizer {
     private final SpanSolver solver = new SpanSolver();
     /** How {@link #fill} samples textures. */
     private TextureFilter filter = TextureFilter.NEAREST;
+    /** The span path's largest displacement between knots, pixels; 0: perspective fills divide per pixel. */
+    private double spanError;
 
     /** Sets how the following {@link #fill} calls sample textures (nearest until set). */
     public void filter(TextureFilter f) {
@@ -36,11 +39,25 @@ public final class Rasterizer {
     }
 
     /**
+     * Sets the path of the following perspective {@link #fill} calls: with {@code maxError > 0} the
+     * span path, exact texel coordinates at knots along each row spaced so that no pixel between them
+     * is displaced by more than {@code maxError} pixels ({@link KnotSpacing}), affine between them; with
+     * 0 (until set) every pixel divides.
+     */
+    public void spans(double maxError) {
+        if (!(maxError >= 0) || Double.isInfinite(maxError)) {
+            throw new IllegalArgumentException("span error must be 0 (off) or a positive number of pixels, got "
+                    + maxError);
+        }
+        spanError = maxError;
+    }
+
+    /**
      * Fills triangles {@code order[from..to)} of {@code triangles}, in that order, into the pixels
      * {@code [x0, x1) x [y0, y1)} of the frame.
      *
      * @param perspective true: u/w, v/w and 1/w interpolate linearly on screen and every pixel
-     *                    divides; false: u and v interpolate linearly on screen (affine), except for
+     *                    divides (or, after {@link #spans} with a positive error, every knot); false: u and v interpolate linearly on screen (affine), except for
      *                    triangles flagged {@link ScreenTriangles#perPixel()}, which divide
      * @param textures    texture of each material index
      * @return the number of pixels written (depth test passed)
@@ -55,14 +72,29 @@ public final class Rasterizer {
         for (int n = from; n < to; n++) {
             int tri = order[n];
             boolean divide = perspective || perPixel[tri];
-            if (!t.prepare(triangles, tri, divide, x0, y0, x1, y1)) {
+            // The span path places its knots on each row's covered columns within the frame, whatever
+            // the rectangle, so that a pixel never depends on the rectangle being filled.
+            boolean knots = perspective && spanError > 0;
+            if (!t.prepare(triangles, tri, divide, knots ? 0 : x0, y0, knots ? frame.width() : x1, y1)) {
                 continue;
+            }
+            if (knots && !t.fixedPointSafe) {
+                // Texel coordinates beyond 32.32 fixed point: filled per pixel, over the rectangle.
+                knots = false;
+                if ((x0 != 0 || x1 != frame.width()) && !t.prepare(triangles, tri, true, x0, y0, x1, y1)) {
+                    continue;
+                }
             }
             solver.walk(t);
             int[] spans = solver.spans();
             Texture texture = textures[materials[tri]];
             int uvId = ids[tri] + 1;
-            if (filter != TextureFilter.NEAREST) {
+            if (knots) {
+                written += filter == TextureFilter.NEAREST
+                        ? KnotSpans.nearest(t, spans, frame, texture, uvId, spanError, x0, x1)
+                        : KnotFilteredSpans.fill(t, spans, frame, texture.mipChain(), uvId, spanError,
+                        filter == TextureFilter.TRILINEAR, x0, x1);
+            } else if (filter != TextureFilter.NEAREST) {
                 written += FilteredSpans.fill(t, spans, frame, texture.mipChain(), uvId, divide, filter);
             } else if (!divide && t.fixedPointSafe) {
                 written += NearestSpans.affineFixed(t, spans, frame, texture, uvId);

@@ -22,7 +22,8 @@ public record BorderStyle(Colouring colouring, boolean fade, boolean onlyFallbac
         DEPTH,
         /**
          * The piece's worst edge's affine error bound over the Max error threshold: green (far within),
-         * yellow (at it), red (above it).
+         * yellow (at it), red (above it). In the span path the outlines stay yellow and the knot ticks
+         * take the bound of their segments instead.
          */
         BOUND;
 

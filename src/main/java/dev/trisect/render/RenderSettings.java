@@ -8,7 +8,8 @@ import dev.trisect.texture.TextureFilter;
  * How a frame is drawn.
  *
  * @param mode         texturing path
- * @param tessellation split policy and caps, used by {@link RenderMode#TESSELLATED}
+ * @param tessellation split policy and caps, used by {@link RenderMode#TESSELLATED}; its max error also
+ *                     spaces the knots of {@link RenderMode#SPANS}
  * @param cull         back-face culling
  * @param background   background colour, 0xRRGGBB
  * @param borders      draw the yellow outline of every piece filled

@@ -5,8 +5,8 @@ package dev.trisect.render;
  *
  * @param policy    which measure decides a split
  * @param maxEdge   for {@link SplitPolicy#EDGE}: the longest edge allowed, screen pixels, &gt; 0
- * @param maxError  for {@link SplitPolicy#ERROR}: the largest affine displacement allowed, screen
- *                  pixels, &gt; 0
+ * @param maxError  for {@link SplitPolicy#ERROR}, and for the knots of {@link RenderMode#SPANS}: the
+ *                  largest affine displacement allowed, screen pixels, &gt; 0
  * @param maxDepth  how many times an edge of an input triangle may be halved (its level); an edge
  *                  at this level is never split again, 0..30. Capping per edge rather than per
  *                  piece keeps the cap crack-free: both triangles sharing an edge see the same level.

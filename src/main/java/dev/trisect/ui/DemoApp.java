@@ -33,7 +33,7 @@ public final class DemoApp implements Callable<Integer> {
     @Option(names = "--obj", paramLabel = "FILE", description = "Open this OBJ file instead of a built-in scene.")
     Path obj;
 
-    @Option(names = "--mode", paramLabel = "perspective|affine|tessellated", defaultValue = "tessellated",
+    @Option(names = "--mode", paramLabel = "perspective|affine|tessellated|spans", defaultValue = "tessellated",
             description = "Texturing path at start (default: ${DEFAULT-VALUE}).")
     String mode;
 
@@ -106,7 +106,7 @@ public final class DemoApp implements Callable<Integer> {
             }
         }
         if (start == null) {
-            throw InputException.usage("--mode must be perspective, affine or tessellated, got " + mode);
+            throw InputException.usage("--mode must be perspective, affine, tessellated or spans, got " + mode);
         }
         if (!(renderScale >= 0.25 && renderScale <= 1)) {
             throw InputException.usage("--render-scale must be between 0.25 and 1, got " + renderScale);

@@ -186,7 +186,7 @@ final class DemoWindow {
         radioGroup(viewMenu, ViewAction.SHOW_IMAGE, ViewAction.SHOW_DIFFERENCE, ViewAction.SHOW_SPLIT);
         JMenu render = new JMenu("Render");
         render.setMnemonic(KeyEvent.VK_R);
-        radioGroup(render, ViewAction.PERSPECTIVE, ViewAction.AFFINE, ViewAction.TESSELLATED);
+        radioGroup(render, ViewAction.PERSPECTIVE, ViewAction.AFFINE, ViewAction.TESSELLATED, ViewAction.SPANS);
         render.addSeparator();
         render.add(new JMenuItem(view.action(ViewAction.SPLIT_POLICY)));
         bar.add(file);

@@ -187,7 +187,7 @@ final class SoakRun {
         int choice = random.nextInt(16);
         switch (choice) {
             case 0 -> perform(ViewAction.BORDERS);
-            case 1 -> onEdt(w -> w.render(r -> r.withMode(RenderMode.values()[random.nextInt(3)])));
+            case 1 -> onEdt(w -> w.render(r -> r.withMode(RenderMode.values()[random.nextInt(RenderMode.values().length)])));
             case 2 -> perform(ViewAction.DEV_TOOLS);
             case 3 -> onEdt(w -> w.render(r -> r.withTessellation(r.tessellation()
                     .withPolicy(random.nextBoolean() ? SplitPolicy.EDGE : SplitPolicy.ERROR))));

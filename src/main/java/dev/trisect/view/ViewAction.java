@@ -22,6 +22,8 @@ public enum ViewAction {
     AFFINE("affine"),
     /** 3: the tessellated path. */
     TESSELLATED("tessellated"),
+    /** 4: the span path (exact knots along each row, affine between them, within Max error). */
+    SPANS("spans"),
     /** P: switch the tessellated path's split policy between edge and error. */
     SPLIT_POLICY("split-policy"),
     /** O: circle the camera slowly round the point ahead; any movement stops it. */

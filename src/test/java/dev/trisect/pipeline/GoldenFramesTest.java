@@ -11,6 +11,7 @@ import dev.trisect.content.SceneAsset;
 import dev.trisect.math.Mat4;
 import dev.trisect.math.Vec3;
 import dev.trisect.math.Viewport;
+import dev.trisect.raster.RowKnots;
 import dev.trisect.render.BorderStyle;
 import dev.trisect.render.Framebuffer;
 import dev.trisect.scene.Camera;
@@ -37,13 +38,14 @@ import org.junit.jupiter.api.Test;
 /**
  * Pins the output of the whole frame, bit for bit: for every built-in scene but the two largest, every
  * path (perspective, affine, tessellated under the default edge policy, tessellated under the error
- * policy at 0.5 px) and every filter (nearest, bilinear, trilinear), the SHA-256 of the colour, the
+ * policy at 0.5 px, spans at 0.5 px) and every filter (nearest, bilinear, trilinear), the SHA-256 of the colour, the
  * depth (float bits) and the UV output (double bits) of a 200x150 frame, with the frame's counts
  * (statistics without times), compared to hashes stored in {@code golden-frames.txt} next to this
  * class. Also, per path, the frame without UV output, the border overlay drawn with the frame, and the
- * coverage counts; for the tessellated paths the overlay coloured by depth and faded with trilinear
- * filtering, the overlay drawn afterwards ({@code drawBorders}, coloured by bound; only the fallback
- * pieces) and the pixel inspector's pieces; and a frame whose piece budget forces the depth-cap search.
+ * coverage counts; for the tessellated paths and spans the overlay coloured by depth and faded with
+ * trilinear filtering, the overlay drawn afterwards ({@code drawBorders}, coloured by bound; only the
+ * fallback pieces) and the pixel inspector's pieces; the inspector's knots of the span path; and a
+ * frame whose piece budget forces the depth-cap search.
  *
  * <p>Every case is rendered with 1, 2 and 3 threads, by renderers kept across cases as the demo keeps
  * its renderer, and each must give the same line, equal to the stored one: the thread count never
@@ -57,7 +59,8 @@ import org.junit.jupiter.api.Test;
  * triangles: building it and its frames would take longer than all the rest together).
  *
  * <p>The stored hashes were made by the build at fc91f7a, before the frame and raster code was split
- * into stages. To regenerate them, run
+ * into stages (the 69 filtered cases again at 6c89bdf, after the packed blend); the span path's were added
+ * with it, by the build that added it. To regenerate them, run
  * {@code mvn test -Dtest=GoldenFramesTest -Dtrisect.golden.regenerate=true}, which rewrites
  * {@code src/test/resources/dev/trisect/pipeline/golden-frames.txt}. Do that only for a deliberate,
  * justified change of the output (a new rule in docs/conventions.md, a fixed defect), and say in the
@@ -174,6 +177,8 @@ class GoldenFramesTest {
                 .withTessellation(TessellationSettings.defaults()));
         paths.put("error0.5", v.base().withMode(RenderMode.TESSELLATED)
                 .withTessellation(TessellationSettings.defaults().withPolicy(SplitPolicy.ERROR).withMaxError(0.5)));
+        paths.put("spans0.5", v.base().withMode(RenderMode.SPANS)
+                .withTessellation(TessellationSettings.defaults().withMaxError(0.5)));
         for (Map.Entry<String, RenderSettings> p : paths.entrySet()) {
             String path = p.getKey();
             RenderSettings s = p.getValue();
@@ -184,7 +189,7 @@ class GoldenFramesTest {
             cases.put(path + " nearest borders-plain", r -> render(r, v, s.withBorders(true), true));
             cases.put(path + " nearest coverage", r -> coverage(r, v, s));
         }
-        for (String path : List.of("edge", "error0.5")) {
+        for (String path : List.of("edge", "error0.5", "spans0.5")) {
             RenderSettings s = paths.get(path);
             cases.put(path + " trilinear borders-depth-fade", r -> render(r, v, s.withFilter(TextureFilter.TRILINEAR)
                     .withBorders(true).withBorderStyle(new BorderStyle(BorderStyle.Colouring.DEPTH, true)), true));
@@ -193,6 +198,7 @@ class GoldenFramesTest {
             cases.put(path + " nearest drawBorders-fallback", r -> drawBorders(r, v, s, BorderStyle.fallbackOnly()));
             cases.put(path + " nearest inspector", r -> inspector(r, v, s));
         }
+        cases.put("spans0.5 nearest knots", r -> knots(r, v, paths.get("spans0.5")));
         // A budget the configured depth cap cannot meet, so that the depth-cap search runs: what the
         // frame charges at that cap less half its splits (in a frame with no splits, a quarter of its
         // pieces, which only depth 0 is accepted at).
@@ -233,6 +239,54 @@ class GoldenFramesTest {
 
     /** The inspector's piece at every 7th pixel of every 5th row that shows a triangle. */
     private static String inspector(FrameRenderer r, View v, RenderSettings s) {
+        return "inspector " + probe(r, v, s, (x, y, triangle, depth, d) -> {
+            PieceInfo p = r.pieceAt(x, y, triangle, depth);
+            if (p == null) {
+                return false;
+            }
+            d.putInt(p.index());
+            d.putInt(p.triangle());
+            d.putInt(p.level());
+            d.putInt(p.fallback() ? 1 : 0);
+            for (double c : p.screen()) {
+                d.putLong(Double.doubleToRawLongBits(c));
+            }
+            for (double c : p.attributes()) {
+                d.putLong(Double.doubleToRawLongBits(c));
+            }
+            return true;
+        });
+    }
+
+    /** The inspector's knots of the row, in the span path, at the same pixels. */
+    private static String knots(FrameRenderer r, View v, RenderSettings s) {
+        return "knots " + probe(r, v, s, (x, y, triangle, depth, d) -> {
+            RowKnots k = r.knotsAt(x, y, triangle, depth);
+            if (k == null) {
+                return false;
+            }
+            d.putInt(k.segmentOf(x));
+            for (int c : k.columns()) {
+                d.putInt(c);
+            }
+            for (double b : k.bounds()) {
+                d.putLong(Double.doubleToRawLongBits(b));
+            }
+            return true;
+        });
+    }
+
+    /** A pixel inspector query at one pixel: hashes what it finds into d, or returns false for nothing. */
+    @FunctionalInterface
+    private interface Probe {
+        boolean hash(int x, int y, int triangle, double depth, Digest d);
+    }
+
+    /**
+     * Renders the frame and asks {@code probe} about every 7th pixel of every 5th row that shows a
+     * triangle (-1 hashed where it finds nothing): the hash and how many it found.
+     */
+    private static String probe(FrameRenderer r, View v, RenderSettings s, Probe probe) {
         Framebuffer fb = new Framebuffer(W, H);
         fb.recordUv(true);
         r.render(v.scene().mesh(), v.textures(), v.viewProjection(), s, fb);
@@ -245,25 +299,14 @@ class GoldenFramesTest {
                 if (id == 0) {
                     continue;
                 }
-                PieceInfo p = r.pieceAt(x, y, id - 1, fb.depth()[i]);
-                if (p == null) {
+                if (probe.hash(x, y, id - 1, fb.depth()[i], d)) {
+                    found++;
+                } else {
                     d.putInt(-1);
-                    continue;
-                }
-                found++;
-                d.putInt(p.index());
-                d.putInt(p.triangle());
-                d.putInt(p.level());
-                d.putInt(p.fallback() ? 1 : 0);
-                for (double c : p.screen()) {
-                    d.putLong(Double.doubleToRawLongBits(c));
-                }
-                for (double c : p.attributes()) {
-                    d.putLong(Double.doubleToRawLongBits(c));
                 }
             }
         }
-        return "inspector " + d.hex() + " found=" + found;
+        return d.hex() + " found=" + found;
     }
 
     private static String hashes(Framebuffer fb) {

@@ -232,9 +232,9 @@ class DemoWindowGuiTest {
 
     @Test
     @Order(4)
-    void oneTwoThreeSwitchThePathAndChangeTheFrame() throws Exception {
-        int[][] frames = new int[3][];
-        int[] keys = {KeyEvent.VK_1, KeyEvent.VK_2, KeyEvent.VK_3};
+    void oneToFourSwitchThePathAndChangeTheFrame() throws Exception {
+        int[][] frames = new int[4][];
+        int[] keys = {KeyEvent.VK_1, KeyEvent.VK_2, KeyEvent.VK_3, KeyEvent.VK_4};
         for (RenderMode m : RenderMode.values()) {
             press(keys[m.ordinal()]);
             waitFor(m.id(), () -> state().settings().render().mode() == m);
@@ -253,6 +253,12 @@ class DemoWindowGuiTest {
             affineDiffer += frames[0][i] != frames[1][i] ? 1 : 0;
         }
         assertTrue(differ < affineDiffer, "tessellated is closer to perspective than affine is");
+        long spansDiffer = 0;
+        for (int i = 0; i < frames[0].length; i++) {
+            spansDiffer += frames[0][i] != frames[3][i] ? 1 : 0;
+        }
+        assertTrue(spansDiffer > 0 && spansDiffer < affineDiffer, "spans differ from perspective, less than affine: "
+                + spansDiffer + " pixels against " + affineDiffer);
     }
 
     @Test

@@ -1,6 +1,7 @@
 package dev.trisect.view.internal;
 
 import dev.trisect.pipeline.PieceInfo;
+import dev.trisect.raster.RowKnots;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
@@ -37,9 +38,40 @@ public final class InspectorPainter {
                 : String.format(Locale.ROOT, "texel s,t per-pixel  %.3f, %.3f", in.refS(), in.refT()));
         l.add(Double.isNaN(in.displacement()) ? "displacement: undefined"
                 : String.format(Locale.ROOT, "exact displacement %.4f px", in.displacement()));
-        l.add(String.format(Locale.ROOT, "mip level %d (lambda %.2f), texel %d,%d", in.mipLevel(), in.lambda(),
-                in.texelX(), in.texelY()));
+        RowKnots knots = in.knots();
+        if (knots != null) {
+            int k = in.segment();
+            l.add(k < 0 ? String.format(Locale.ROOT, "span: a lone knot (%d knots on the row)", knots.columns().length)
+                    : String.format(Locale.ROOT, "span segment %d of %d: knots x %d..%d (%d px), bound %.3f px", k + 1,
+                    knots.bounds().length, knots.columns()[k], knots.columns()[k + 1],
+                    knots.columns()[k + 1] - knots.columns()[k], knots.bounds()[k]));
+        }
+        l.add(String.format(Locale.ROOT, "mip level %d (lambda %.2f%s), texel %d,%d", in.mipLevel(), in.lambda(),
+                in.segment() >= 0 ? " of the segment" : "", in.texelX(), in.texelY()));
         return l;
+    }
+
+    /**
+     * In the span path, the knots of the inspected row of its triangle: a short tick at each, the two
+     * of the pixel's segment taller and cyan, so the segment the pixel is interpolated on shows.
+     */
+    private static void paintKnots(Graphics2D g, PixelInspector.Inspection in, double sx, int py) {
+        RowKnots knots = in.knots();
+        if (knots == null) {
+            return;
+        }
+        int k = in.segment();
+        int[] columns = knots.columns();
+        for (int pass = 0; pass < 2; pass++) {
+            g.setStroke(new BasicStroke(pass == 0 ? 3 : 1));
+            for (int n = 0; n < columns.length; n++) {
+                boolean ends = n == k || n == k + 1;
+                int kx = (int) Math.round((columns[n] + 0.5) * sx);
+                int reach = ends ? 8 : 4;
+                g.setColor(pass == 0 ? new Color(0, 0, 0, 160) : ends ? Color.CYAN : Color.WHITE);
+                g.drawLine(kx, py - reach, kx, py + reach);
+            }
+        }
     }
 
     public static void paint(Graphics2D g, FrameSlot f, int viewW, int viewH, boolean pinned) {
@@ -59,6 +91,7 @@ public final class InspectorPainter {
             g.drawLine(px, py - 24, px, py - gap);
             g.drawLine(px, py + gap, px, py + 24);
         }
+        paintKnots(g, in, sx, py);
         // Magnifier, top right: the frame's own pixels around the inspected one, nearest-neighbour.
         int mx = viewW - MAGNIFIER_SIZE - 12;
         int my = 12;

@@ -3,6 +3,7 @@ package dev.trisect.view.internal;
 import dev.trisect.metrics.TexelToScreen;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.PieceInfo;
+import dev.trisect.raster.RowKnots;
 import dev.trisect.render.Framebuffer;
 import dev.trisect.texture.Lod;
 import dev.trisect.texture.MipChain;
@@ -38,12 +39,23 @@ public final class PixelInspector {
      * @param mipLevel     the mipmap level sampled (the lower of the two trilinear blends), 0 without mipmaps
      * @param texelX       nearest texel on that level, wrapped
      * @param texelY       and its row
+     * @param knots        in the span path, the knots of this pixel's row of the filled triangle; else null
      */
     public record Inspection(int x, int y, int argb, int triangle, double w, double s, double t, double refS, double refT,
-                      double displacement, PieceInfo piece, double lambda, int mipLevel, int texelX, int texelY) {
+                      double displacement, PieceInfo piece, double lambda, int mipLevel, int texelX, int texelY,
+                      RowKnots knots) {
+        /** The span segment holding the pixel (the index of its first knot), or -1 (not the span path, or a lone knot). */
+        public int segment() {
+            return knots == null ? -1 : knots.segmentOf(x);
+        }
     }
 
-    /** Inspects pixel (x, y) of {@code frame}, against {@code reference} (the per-pixel path's frame, with UV). */
+    /**
+     * Inspects pixel (x, y) of {@code frame}, against {@code reference} (the per-pixel path's frame, with UV).
+     *
+     * @param perspective the frame took the per-pixel path or the span path (whose knots
+     *                    {@link FrameRenderer#knotsAt} then gives)
+     */
     static Inspection inspect(FrameRenderer renderer, Framebuffer frame, Framebuffer reference, TexelToScreen exact,
                               IntFunction<Texture> textureOf, TextureFilter filter, boolean perspective, int x, int y) {
         int i = y * frame.width() + x;
@@ -52,7 +64,7 @@ public final class PixelInspector {
         int argb = frame.color()[i];
         if (id < 0) {
             return new Inspection(x, y, argb, -1, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN,
-                    Double.NaN, null, Double.NaN, 0, 0, 0);
+                    Double.NaN, null, Double.NaN, 0, 0, 0, null);
         }
         double q = frame.depth()[i];
         double s = uv[3 * i];
@@ -63,11 +75,19 @@ public final class PixelInspector {
         double refT = same ? ref[3 * i + 1] : Double.NaN;
         double displacement = exact == null ? Double.NaN : exact.displacement(id, s, t, x, y);
         PieceInfo piece = renderer.pieceAt(x, y, id, q);
+        RowKnots knots = renderer.knotsAt(x, y, id, q);
         double lambda = Double.NaN;
         if (piece != null) {
             double[] d = perspective || piece.fallback() ? perspectiveDerivatives(piece, x + 0.5, y + 0.5)
                     : piece.affineDerivatives();
             lambda = Lod.lambda(d[0], d[1], d[2], d[3]);
+            int k = knots == null ? -1 : knots.segmentOf(x);
+            if (k >= 0) {
+                // The span path's trilinear level is its segment's: the mean of its two knots'.
+                double[] a = perspectiveDerivatives(piece, knots.columns()[k] + 0.5, y + 0.5);
+                double[] b = perspectiveDerivatives(piece, knots.columns()[k + 1] + 0.5, y + 0.5);
+                lambda = 0.5 * (Lod.lambda(a[0], a[1], a[2], a[3]) + Lod.lambda(b[0], b[1], b[2], b[3]));
+            }
         }
         Texture tex = textureOf.apply(id);
         MipChain chain = tex.mipChain();
@@ -77,7 +97,8 @@ public final class PixelInspector {
         }
         int tx = Math.floorMod((int) Math.floor(s * chain.scaleS(level)), chain.width(level));
         int ty = Math.floorMod((int) Math.floor(t * chain.scaleT(level)), chain.height(level));
-        return new Inspection(x, y, argb, id, 1 / q, s, t, refS, refT, displacement, piece, lambda, level, tx, ty);
+        return new Inspection(x, y, argb, id, 1 / q, s, t, refS, refT, displacement, piece, lambda, level, tx, ty,
+                knots);
     }
 
     /**

@@ -305,7 +305,8 @@ public final class RenderLoop implements Runnable {
             if (ix < fw && iy < fh) {
                 back.inspection = PixelInspector.inspect(renderer, fb, reference,
                         new TexelToScreen(draws, viewport), drawn::textureOf, settings.render().filter(),
-                        settings.render().mode() == RenderMode.PERSPECTIVE, ix, iy);
+                        settings.render().mode() == RenderMode.PERSPECTIVE
+                                || settings.render().mode() == RenderMode.SPANS, ix, iy);
             }
             back.inspectNanos = System.nanoTime() - t0;
         }

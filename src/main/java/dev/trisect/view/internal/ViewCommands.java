@@ -31,7 +31,7 @@ public final class ViewCommands {
     public final Command freeze;
     public final Command step;
     public final Command splitPolicy;
-    /** Perspective, affine, tessellated, by {@link RenderMode} ordinal. */
+    /** Perspective, affine, tessellated, spans, by {@link RenderMode} ordinal. */
     public final List<Command> modes;
     /** Image, Difference, Split: what the view shows, by {@link ViewKind} ordinal. */
     public final List<Command> views;
@@ -85,7 +85,9 @@ public final class ViewCommands {
         String[] modeTips = {
             "Per-pixel perspective: u/w, v/w, 1/w interpolated and divided at every pixel (the reference)",
             "Affine: u, v interpolated linearly on screen (fast, visibly warped)",
-            "Tessellated: split into small pieces, each filled affinely"};
+            "Tessellated: split into small pieces, each filled affinely",
+            "Spans: exact texel coordinates at knots along each row, affine between them; the knots spaced so "
+                    + "that no pixel is more than Max error from the per-pixel path"};
         List<Command> m = new ArrayList<>();
         for (RenderMode mode : RenderMode.values()) {
             String name = mode.id().substring(0, 1).toUpperCase(Locale.ROOT) + mode.id().substring(1);

@@ -10,6 +10,7 @@ import dev.trisect.math.Viewport;
 import dev.trisect.metrics.TexelToScreen;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.PieceInfo;
+import dev.trisect.raster.RowKnots;
 import dev.trisect.render.Framebuffer;
 import dev.trisect.render.RenderMode;
 import dev.trisect.render.SplitPolicy;
@@ -83,6 +84,34 @@ class PixelInspectorTest {
         assertTrue(inside(p.screen(), x + 0.5, y + 0.5), "the piece holds the pixel centre");
         assertEquals(Math.max(0, (int) Math.floor(in.lambda())), in.mipLevel(), "trilinear's lower level");
         assertTrue(InspectorPainter.lines(in, false).stream().anyMatch(l -> l.contains("split level " + p.level())));
+    }
+
+    @Test
+    void theSpanPathShowsTheKnotsOfTheRowAndTheSegmentOfThePixel() throws Exception {
+        SceneAsset demo = DemoScenes.byName("demo").orElseThrow();
+        ViewState state = new ViewState(demo);
+        ViewSettings v = ViewSettings.defaults().withRender(ViewSettings.defaults().render().withMode(RenderMode.SPANS)
+                .withTessellation(ViewSettings.defaults().render().tessellation().withMaxError(0.5)));
+        state.settings(v);
+        // A pixel of the brick wall, whose depth changes along the rows.
+        int x = 130;
+        int y = 40;
+        FrameSlot f = inspected(state, x, y);
+        PixelInspector.Inspection in = f.inspection;
+        assertTrue(in.triangle() >= 0, "a triangle under the pixel");
+        RowKnots knots = in.knots();
+        assertNotNull(knots, "the span path's knots");
+        assertEquals(y, knots.y());
+        int k = in.segment();
+        assertTrue(k >= 0 && knots.columns()[k] <= x && x <= knots.columns()[k + 1], "the segment holds the pixel: "
+                + java.util.Arrays.toString(knots.columns()));
+        for (double b : knots.bounds()) {
+            assertTrue(b <= 0.5 * (1 + 1e-12), "every segment within Max error: " + b);
+        }
+        assertTrue(in.displacement() <= knots.bounds()[k] + 1e-6, "the pixel within its segment's bound: "
+                + in.displacement() + " > " + knots.bounds()[k]);
+        assertTrue(InspectorPainter.lines(in, false).stream().anyMatch(l -> l.startsWith("span segment " + (k + 1))),
+                InspectorPainter.lines(in, false).toString());
     }
 
     @Test
