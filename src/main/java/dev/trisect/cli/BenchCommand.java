@@ -41,7 +41,7 @@ import picocli.CommandLine.Option;
                 + "tools/glref with --glref) and print a table, or JSON lines with --json."})
 final class BenchCommand extends SceneCommand {
     @Option(names = "--modes", split = ",", paramLabel = "MODE[,MODE...]", converter = Converters.ModeConverter.class,
-            defaultValue = "perspective,affine,tessellated", description = "Paths to measure (default: all three).")
+            defaultValue = "perspective,affine,tessellated,spans", description = "Paths to measure (default: all four).")
     List<RenderMode> modes;
 
     /** Most frames measured, or rendered to warm up, per path. */
@@ -65,7 +65,8 @@ final class BenchCommand extends SceneCommand {
 
     @Option(names = "--sweep", description = "Measure the cost/quality curve instead: for each threshold of "
             + "--edges and --errors, the tessellated path's median ms, pieces and exact displacement against the "
-            + "per-pixel frame (max and p99, pixels), with the per-pixel and affine paths as references.")
+            + "per-pixel frame (max and p99, pixels), and the span path's at each of --errors as max error, with "
+            + "the per-pixel and affine paths as references.")
     boolean sweep;
 
     @Option(names = "--edges", split = ",", paramLabel = "PX[,PX...]", converter = Converters.PositiveConverter.class,
@@ -73,7 +74,8 @@ final class BenchCommand extends SceneCommand {
     List<Double> edges;
 
     @Option(names = "--errors", split = ",", paramLabel = "PX[,PX...]", converter = Converters.PositiveConverter.class,
-            description = "Error-policy thresholds for --sweep (default: 0.125,0.25,0.5,1,2,4,8).")
+            description = "Error-policy thresholds, and the span path's max errors, for --sweep "
+                    + "(default: 0.125,0.25,0.5,1,2,4,8).")
     List<Double> errors;
 
     @Option(names = "--plot", paramLabel = "FILE.png",

@@ -12,9 +12,10 @@ import picocli.CommandLine.Option;
 
 /** Which texturing path and how it splits. Shared by the commands. */
 final class PathOptions {
-    @Option(names = "--mode", paramLabel = "perspective|affine|tessellated", converter = Converters.ModeConverter.class,
-            defaultValue = "tessellated",
-            description = "Texturing path: per-pixel perspective, affine, or tessellated pieces filled affinely "
+    @Option(names = "--mode", paramLabel = "perspective|affine|tessellated|spans",
+            converter = Converters.ModeConverter.class, defaultValue = "tessellated",
+            description = "Texturing path: per-pixel perspective, affine, tessellated pieces filled affinely, or spans "
+                    + "(exact knots along each row, affine between them, spaced for --max-error) "
                     + "(default: ${DEFAULT-VALUE}).")
     RenderMode mode;
 
@@ -29,7 +30,8 @@ final class PathOptions {
 
     @Option(names = "--max-error", paramLabel = "PX", converter = Converters.PositiveConverter.class,
             defaultValue = "0.5",
-            description = "Error policy: largest affine displacement allowed, pixels (default: ${DEFAULT-VALUE}).")
+            description = "Error policy, and the span path's knots: largest affine displacement allowed, pixels "
+                    + "(default: ${DEFAULT-VALUE}).")
     double maxError;
 
     @Option(names = "--split-point", paramLabel = "screen|geometric|midpoint", converter = Converters.SplitPointConverter.class,

@@ -41,6 +41,9 @@ final class SweepOutput {
                     : String.format(Locale.ROOT, "%s policy: the finest threshold as fast as the per-pixel path is %s px",
                     name(policy), t));
         }
+        double s = r.spansBreakEven();
+        lines.add(Double.isNaN(s) ? "spans: no max error measured is as fast as the per-pixel path"
+                : String.format(Locale.ROOT, "spans: the finest max error as fast as the per-pixel path is %s px", s));
         return lines;
     }
 
@@ -70,6 +73,7 @@ final class SweepOutput {
                 .put("threads", threads)
                 .put("break_even_max_edge", r.breakEven(SplitPolicy.EDGE))
                 .put("break_even_max_error", r.breakEven(SplitPolicy.ERROR))
+                .put("break_even_spans_max_error", r.spansBreakEven())
                 .toString());
         return lines;
     }

@@ -17,10 +17,11 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * The cost/quality curve of the tessellated path: for a list of thresholds of each split policy, the
- * median frame time, the pieces, and the exact displacement against the per-pixel perspective frame
- * (largest and 99th percentile, pixels; see {@link ImageComparison}), with the per-pixel and affine
- * paths measured the same way as reference points.
+ * The cost/quality curve of the tessellated path and the span path: for a list of thresholds of each
+ * split policy, the median frame time, the pieces, and the exact displacement against the per-pixel
+ * perspective frame (largest and 99th percentile, pixels; see {@link ImageComparison}), and the same
+ * for the span path at each max error of the error policy's list, with the per-pixel and affine paths
+ * measured the same way as reference points.
  */
 public final class Sweep {
     /** Default thresholds of the edge policy: longest piece edge, pixels. */
@@ -33,7 +34,8 @@ public final class Sweep {
      *
      * @param mode             the path
      * @param policy           the split policy (tessellated path only, else null)
-     * @param threshold        the policy's threshold, pixels (NaN for the other paths)
+     * @param threshold        the policy's threshold, or the span path's max error, pixels (NaN for the
+     *                         per-pixel and affine paths)
      * @param times            frame times
      * @param pieces           triangles filled per frame
      * @param maxDisplacement  largest exact displacement against the per-pixel frame, pixels
@@ -41,9 +43,12 @@ public final class Sweep {
      */
     public record Point(RenderMode mode, SplitPolicy policy, double threshold, FrameTimes times, long pieces,
                         double maxDisplacement, double p99Displacement) {
-        /** Short label: the path, or the policy and threshold. */
+        /** Short label: the path, or the policy (or spans) and threshold. */
         public String label() {
-            return policy == null ? mode.id() : policy.name().toLowerCase(java.util.Locale.ROOT) + " " + threshold;
+            if (policy == null) {
+                return Double.isNaN(threshold) ? mode.id() : mode.id() + " " + threshold;
+            }
+            return policy.name().toLowerCase(java.util.Locale.ROOT) + " " + threshold;
         }
     }
 
@@ -52,7 +57,8 @@ public final class Sweep {
      *
      * @param perspective the per-pixel path (the reference: displacement 0)
      * @param affine      the affine path
-     * @param points      the tessellated settings, edge policy first, each policy's thresholds ascending
+     * @param points      the tessellated settings, edge policy first, each policy's thresholds ascending,
+     *                    then the span path's, max errors ascending
      */
     public record Result(Point perspective, Point affine, List<Point> points) {
         /** The points of one policy, thresholds ascending. */
@@ -60,12 +66,29 @@ public final class Sweep {
             return points.stream().filter(p -> p.policy() == policy).toList();
         }
 
+        /** The span path's points, max errors ascending. */
+        public List<Point> spans() {
+            return points.stream().filter(p -> p.mode() == RenderMode.SPANS).toList();
+        }
+
+        /**
+         * The finest max error of the span path whose median frame time is at most the per-pixel path's,
+         * or NaN when none is.
+         */
+        public double spansBreakEven() {
+            return breakEven(spans());
+        }
+
         /**
          * The finest threshold of {@code policy} (most pieces, least displacement) whose median frame
          * time is at most the per-pixel path's, or NaN when none is.
          */
         public double breakEven(SplitPolicy policy) {
-            for (Point p : of(policy)) {
+            return breakEven(of(policy));
+        }
+
+        private double breakEven(List<Point> ascending) {
+            for (Point p : ascending) {
                 if (p.times().medianMs() <= perspective.times().medianMs()) {
                     return p.threshold();
                 }
@@ -82,7 +105,7 @@ public final class Sweep {
      *
      * @param base     settings whose cull, background and caps are kept; mode and thresholds are set here
      * @param edges    edge-policy thresholds, pixels, each &gt; 0 (sorted here)
-     * @param errors   error-policy thresholds, pixels, each &gt; 0 (sorted here)
+     * @param errors   error-policy thresholds, and the span path's max errors, pixels, each &gt; 0 (sorted here)
      * @param progress told after every frame of the whole sweep
      */
     public static Result run(FrameRenderer renderer, SceneAsset scene, Texture[] textures, Mat4 viewProjection,
@@ -90,7 +113,7 @@ public final class Sweep {
                              int warmup, int frames, FrameBench.Progress progress) {
         List<Double> e = sortedPositive(edges, "edge");
         List<Double> r = sortedPositive(errors, "error");
-        int settingsCount = 2 + e.size() + r.size();
+        int settingsCount = 2 + e.size() + 2 * r.size();
         int perSetting = warmup + frames + 1;
         int total = settingsCount * perSetting;
         FrameBench bench = new FrameBench(renderer, scene, textures, viewProjection, new Framebuffer(width, height));
@@ -126,6 +149,10 @@ public final class Sweep {
         for (double error : r) {
             points.add(measure.run(plain.withMode(RenderMode.TESSELLATED).withTessellation(
                     t.withPolicy(SplitPolicy.ERROR).withMaxError(error)), SplitPolicy.ERROR, error));
+        }
+        for (double error : r) {
+            points.add(measure.run(plain.withMode(RenderMode.SPANS).withTessellation(t.withMaxError(error)), null,
+                    error));
         }
         return new Result(perspective, affine, List.copyOf(points));
     }

@@ -22,7 +22,8 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
  * Draws a {@link Sweep.Result} as a PNG with XChart: one panel per split policy, the threshold on the
  * x axis, the tessellated path's median frame time on the left axis against the per-pixel
  * and affine paths as flat reference lines, and the exact displacement (largest and p99) on the right
- * axis. Where the tessellated line crosses the per-pixel line is the break-even threshold.
+ * axis; the error panel also has the span path's time and largest displacement at each max error.
+ * Where the tessellated line crosses the per-pixel line is the break-even threshold.
  */
 public final class SweepChart {
     /** Size of one panel, pixels. */
@@ -90,6 +91,23 @@ public final class SweepChart {
         displacement(chart.addSeries("max displacement px", x, max), SeriesMarkers.DIAMOND, new Color(0x9467bd));
         displacement(chart.addSeries("p99 displacement px", x, p99), SeriesMarkers.TRIANGLE_UP,
                 new Color(0xff7f0e));
+        List<Sweep.Point> spans = policy == SplitPolicy.ERROR ? result.spans() : List.of();
+        if (!spans.isEmpty()) {
+            double[] sx = new double[spans.size()];
+            double[] sms = new double[sx.length];
+            double[] smax = new double[sx.length];
+            for (int i = 0; i < sx.length; i++) {
+                sx[i] = spans.get(i).threshold();
+                sms[i] = spans.get(i).times().medianMs();
+                smax[i] = finite(spans.get(i).maxDisplacement());
+            }
+            XYSeries s = chart.addSeries("spans ms", sx, sms);
+            s.setMarker(SeriesMarkers.SQUARE);
+            s.setLineColor(new Color(0x17becf));
+            s.setMarkerColor(new Color(0x17becf));
+            displacement(chart.addSeries("spans max displacement px", sx, smax), SeriesMarkers.CROSS,
+                    new Color(0x8c564b));
+        }
         return BitmapEncoder.getBufferedImage(chart);
     }
 

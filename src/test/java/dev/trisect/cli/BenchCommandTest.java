@@ -42,7 +42,8 @@ class BenchCommandTest {
                 "--threads", "2", "--json");
         assertEquals(0, r.status(), r.err());
         List<Map<String, Object>> rows = jsonLines(r.out());
-        assertEquals(List.of("perspective", "affine", "tessellated"), rows.stream().map(m -> m.get("path")).toList());
+        assertEquals(List.of("perspective", "affine", "tessellated", "spans"),
+                rows.stream().map(m -> m.get("path")).toList());
         for (Map<String, Object> row : rows) {
             for (String key : List.of("size", "frames", "median_ms", "mean_ms", "p95_ms", "fps", "pieces", "threads",
                     "min_ms", "pixels", "pixels_written")) {
@@ -67,7 +68,7 @@ class BenchCommandTest {
                 "--sweep", "--edges", "64,16,32", "--errors", "2,0.5", "--json", "--plot", plot.toString());
         assertEquals(0, r.status(), r.err());
         List<Map<String, Object>> rows = jsonLines(r.out());
-        assertEquals(2 + 3 + 2 + 1, rows.size(), r.out());
+        assertEquals(2 + 3 + 2 + 2 + 1, rows.size(), r.out());
         assertEquals("perspective", rows.get(0).get("path"));
         assertNull(rows.get(0).get("policy"));
         assertEquals(0, num(rows.get(0), "max_displacement"), "the reference is displaced by nothing");
@@ -90,8 +91,18 @@ class BenchCommandTest {
             assertTrue(num(row, "max_displacement") <= bound, "the error bound holds: " + row);
             assertTrue(num(row, "p99_displacement") <= num(row, "max_displacement"), row.toString());
         }
-        Map<String, Object> summary = rows.get(7);
-        assertTrue(summary.containsKey("break_even_max_edge") && summary.containsKey("break_even_max_error"));
+        List<Double> spans = new ArrayList<>();
+        for (Map<String, Object> row : rows.subList(7, 9)) {
+            assertEquals("spans", row.get("path"));
+            assertNull(row.get("policy"));
+            spans.add(num(row, "threshold"));
+            assertTrue(num(row, "max_displacement") <= num(row, "threshold") + 0.002, "the span bound holds: " + row);
+            assertEquals(num(rows.get(0), "pieces"), num(row, "pieces"), "no pieces but the triangles");
+        }
+        assertEquals(List.of(0.5, 2.0), spans, "max errors ascending");
+        Map<String, Object> summary = rows.get(9);
+        assertTrue(summary.containsKey("break_even_max_edge") && summary.containsKey("break_even_max_error")
+                && summary.containsKey("break_even_spans_max_error"), summary.toString());
         Texture chart = TextureReader.read(plot);
         assertEquals(1440, chart.width());
         assertEquals(480, chart.height());
@@ -103,8 +114,8 @@ class BenchCommandTest {
                 "--sweep", "--edges", "32", "--errors", "1");
         assertEquals(0, r.status(), r.err());
         String out = r.out();
-        for (String label : List.of("perspective", "affine", "edge 32.0", "error 1.0", "edge policy:",
-                "error policy:")) {
+        for (String label : List.of("perspective", "affine", "edge 32.0", "error 1.0", "spans 1.0", "edge policy:",
+                "error policy:", "spans:")) {
             assertTrue(out.contains(label), label + " in\n" + out);
         }
     }

@@ -68,7 +68,7 @@ class FilterCommandTest {
                 "--filter", "trilinear", "--json");
         assertEquals(0, r.status(), r.err());
         long rows = r.out().lines().filter(l -> l.contains("\"filter\":\"trilinear\"")).count();
-        assertEquals(3, rows, r.out());
+        assertEquals(4, rows, r.out());
     }
 
     @Test
