@@ -9,10 +9,13 @@
 #   scripts/side-by-side.sh OLD.jar NEW.jar [SCENE] [WxH] [PAIRS] [FRAMES] [PATH...]
 #   scripts/side-by-side.sh /tmp/old.jar target/trisect.jar demo 1920x1080 15 5 affine edge error perspective
 #
-# PATH: perspective, affine, edge (tessellated, 32 px edges), error (tessellated, 0.5 px); each may
+# PATH: perspective, affine, edge (tessellated, 32 px edges), error (tessellated, 0.5 px), spans
+# (0.5 px; builds from 3fa131c on); each may
 # be followed by @bilinear or @trilinear (the texture filter; nearest without), then by +borders or
 # +fade to draw the border overlay (plain or faded) with the frame, so that "edge edge+borders"
 # shows what the overlay adds and "error@trilinear" times the tessellated path with trilinear.
+# With perspective listed (with the same filter), each other path's time over the per-pixel path's
+# in the same build and pair is printed too: "spans perspective" gives spans / per-pixel.
 # Caution: each build is compiled once per run, and some loops' compiled speed is decided per JVM
 # (the nearest affine loop runs in two modes ~2x apart on the floor scene, in every build so far):
 # repeat the run, or use scripts/separate-jvms.sh, which shows the spread over many JVMs.

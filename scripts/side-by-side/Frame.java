@@ -27,7 +27,8 @@ public final class Frame {
     }
 
     /**
-     * @param path perspective, affine, edge (tessellated, 32 px edges) or error (tessellated, 0.5 px),
+     * @param path perspective, affine, edge (tessellated, 32 px edges), error (tessellated, 0.5 px) or
+     *             spans (0.5 px, builds that have it),
      *             each optionally with @nearest, @bilinear or @trilinear (the texture filter; nearest
      *             when left out), then +borders or +fade (the border overlay, plain or faded, drawn with
      *             the frame): "error@trilinear+borders"
@@ -71,6 +72,8 @@ public final class Frame {
                     .withTessellation(TessellationSettings.defaults().withPolicy(SplitPolicy.EDGE));
             case "error" -> base.withMode(RenderMode.TESSELLATED)
                     .withTessellation(TessellationSettings.defaults().withPolicy(SplitPolicy.ERROR));
+            // By name, so that this compiles against builds from before the span path.
+            case "spans" -> base.withMode(RenderMode.valueOf("SPANS"));
             default -> throw new IllegalArgumentException("no path " + path);
         };
         FrameRenderer renderer = new FrameRenderer(1);

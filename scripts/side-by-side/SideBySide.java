@@ -77,6 +77,23 @@ public final class SideBySide {
                         median(perPiece), min(perPiece), max(perPiece));
             }
         }
+        // Each path against the per-pixel path with the same filter, in the same build and the same pair.
+        for (int p = 0; p < paths.size(); p++) {
+            String path = paths.get(p);
+            String filter = path.contains("@") ? path.substring(path.indexOf('@')).split("\\+")[0] : "";
+            int reference = paths.indexOf("perspective" + filter);
+            if (reference < 0 || reference == p) {
+                continue;
+            }
+            for (int b = 0; b < 2; b++) {
+                double[] ratio = new double[reps];
+                for (int r = 0; r < reps; r++) {
+                    ratio[r] = ms[b][p][r] / ms[b][reference][r];
+                }
+                System.out.printf("%s / %s, %s: %.3f [%.3f..%.3f]%n", path, paths.get(reference), b == 0 ? "A" : "B",
+                        median(ratio), min(ratio), max(ratio));
+            }
+        }
         System.exit(0);
     }
 
