@@ -41,13 +41,43 @@ final class PieceLookup {
     }
 
     /**
-     * The knots of row y of the filled triangle {@link #find} finds, as the span path with max error
-     * {@code maxError} placed them in a frame {@code width} pixels wide; null when none holds the pixel.
+     * The knots of row y of the filled triangle of input triangle {@code triangle} that covers pixel
+     * (x, y) (by the fill's own coverage, so that a clipped triangle's fan gives the part that drew the
+     * pixel), as the span path with max error {@code maxError} placed them in a frame {@code width}
+     * pixels wide; among several, the one whose 1/w plane there is closest to {@code depth}. Null when
+     * none covers the pixel.
      */
     static RowKnots knots(Chunks chunks, int chunkCount, int x, int y, int triangle, double depth, int width,
                           double maxError) {
-        long at = locate(chunks, chunkCount, x, y, triangle, depth);
-        return at < 0 ? null : RowKnots.of(chunks.get((int) (at >>> 32)).out, (int) at, width, y, maxError);
+        RowKnots best = null;
+        double bestGap = Double.POSITIVE_INFINITY;
+        for (int c = 0; c < chunkCount; c++) {
+            ScreenTriangles t = chunks.get(c).out;
+            for (int i = 0; i < t.count(); i++) {
+                if (t.ids()[i] != triangle || y < t.firstRow(i) || y >= t.endRow(i)) {
+                    continue;
+                }
+                RowKnots k = RowKnots.of(t, i, width, y, maxError);
+                int[] columns = k.columns();
+                if (columns.length == 0 || x < columns[0] || x > columns[columns.length - 1]) {
+                    continue;
+                }
+                double gap = Math.abs(depthAt(t, i, x + 0.5, y + 0.5) - depth);
+                if (gap < bestGap) {
+                    bestGap = gap;
+                    best = k;
+                }
+            }
+        }
+        return best;
+    }
+
+    /** 1/w of screen triangle i's plane at (x, y), pixels. */
+    private static double depthAt(ScreenTriangles t, int i, double x, double y) {
+        double[] w = weights(t.screen(), i * ScreenTriangles.SCREEN_STRIDE, x, y);
+        double[] at = t.attributes();
+        int a = i * ScreenTriangles.ATTRIBUTE_STRIDE;
+        return w == null ? Double.NaN : w[0] * at[a] + w[1] * at[a + 3] + w[2] * at[a + 6];
     }
 
     /** Where {@link #find}'s triangle is: its chunk in the high 32 bits, its index there in the low; -1 for none. */
@@ -82,6 +112,13 @@ final class PieceLookup {
 
     /** Barycentric weights of (x, y) in the screen triangle at {@code s}, or null outside (with a hair of slack). */
     private static double[] barycentric(double[] sc, int s, double x, double y) {
+        double[] w = weights(sc, s, x, y);
+        double slack = -1e-9;
+        return w != null && w[0] >= slack && w[1] >= slack && w[2] >= slack ? w : null;
+    }
+
+    /** Barycentric weights of (x, y) on the plane of the screen triangle at {@code s}; null when it has no area. */
+    private static double[] weights(double[] sc, int s, double x, double y) {
         double x0 = sc[s];
         double y0 = sc[s + 1];
         double ex1 = sc[s + 2] - x0;
@@ -94,8 +131,6 @@ final class PieceLookup {
         }
         double b1 = ((x - x0) * ey2 - ex2 * (y - y0)) / det;
         double b2 = (ex1 * (y - y0) - (x - x0) * ey1) / det;
-        double b0 = 1 - b1 - b2;
-        double slack = -1e-9;
-        return b0 >= slack && b1 >= slack && b2 >= slack ? new double[] {b0, b1, b2} : null;
+        return new double[] {1 - b1 - b2, b1, b2};
     }
 }

@@ -4,6 +4,7 @@ import dev.trisect.metrics.HeatMap;
 import dev.trisect.metrics.HeatScale;
 import dev.trisect.raster.OverlayColours;
 import dev.trisect.render.BorderStyle;
+import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
 import java.awt.BasicStroke;
 import java.awt.Color;
@@ -92,7 +93,9 @@ public final class FramePainter {
         int x = 14;
         int y = h - 62;
         g.setFont(g.getFont().deriveFont(11f));
-        String note = depth ? "fallback (filled per pixel)" : "fallback; yellow = at max error, red = above";
+        String note = depth ? "fallback (filled per pixel)"
+                : r.mode() == RenderMode.SPANS ? "knot ticks by their segments' bound; yellow = at max error"
+                : "fallback; yellow = at max error, red = above";
         int boxW = Math.max(barW, 18 + g.getFontMetrics().stringWidth(note)) + 16;
         g.setColor(new Color(0, 0, 0, 160));
         g.fillRoundRect(x - 8, y - 8, boxW, 60, 10, 10);
