@@ -5,6 +5,9 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.render.Framebuffer;
+import dev.trisect.texture.LaneSampler;
+import dev.trisect.texture.Lod;
+import dev.trisect.texture.TexelLanes;
 import dev.trisect.texture.Texture;
 import dev.trisect.texture.TextureFilter;
 import java.util.Random;
@@ -179,6 +182,67 @@ class KnotSpansTest {
             }
         }
         assertTrue(worstRatio <= 1 + 1e-6 && worstRatio > 0.9, "worst displacement over the error: " + worstRatio);
+    }
+
+    /**
+     * Trilinear takes one level of detail per segment, the mean of its knots' lambdas (each OpenGL's
+     * lambda from the exact derivatives there; the row's last pixel, a knot that starts no segment, its
+     * own), and samples the chord's coordinates: every pixel is that rule, bit for bit.
+     */
+    @Test
+    void trilinearTakesTheMeanOfTheKnotsLambdasPerSegment() {
+        Random rnd = new Random(21);
+        Texture texture = TEXTURES[0];
+        TexelLanes lanes = texture.mipChain().lanes();
+        int maxLevel = texture.mipChain().maxLevel();
+        long pixels = 0;
+        for (int k = 0; k < 200; k++) {
+            ScreenTriangles t = new ScreenTriangles();
+            add(t, rnd, 2 * k);
+            Rasterizer r = new Rasterizer();
+            double error = k % 2 == 0 ? 0.5 : 2;
+            Framebuffer fb = fill(t, TextureFilter.TRILINEAR, error, r);
+            TriangleSetup setup = r.setup();
+            int[] sp = r.spans();
+            double sDx = setup.sPlane.dx;
+            double sDy = setup.sPlane.dy;
+            double tDx = setup.tPlane.dx;
+            double tDy = setup.tPlane.dy;
+            double qDx = setup.qPlane.dx;
+            double qDy = setup.qPlane.dy;
+            for (int y = setup.rowStart, j = 0; y < setup.rowEnd; y++, j += 2) {
+                if (sp[j] >= sp[j + 1]) {
+                    continue;
+                }
+                RowKnots knots = RowKnots.of(t, 0, W, y, error);
+                double qRow = setup.qPlane.base + qDy * y;
+                double sRow = setup.sPlane.base + sDy * y;
+                double tRow = setup.tPlane.base + tDy * y;
+                int[] lambdas = new int[knots.columns().length];
+                for (int n = 0; n < lambdas.length; n++) {
+                    int x = knots.columns()[n];
+                    double rq = 1 / (qRow + qDx * x);
+                    lambdas[n] = KnotFilteredSpans.lambdaAt((sRow + sDx * x) * rq, (tRow + tDx * x) * rq, rq, sDx, sDy,
+                            tDx, tDy, qDx, qDy, maxLevel);
+                }
+                for (int x = sp[j]; x < sp[j + 1]; x++) {
+                    // The last knot at or before the pixel starts its segment; the row's last knot starts
+                    // none and keeps its own lambda.
+                    int found = java.util.Arrays.binarySearch(knots.columns(), x);
+                    int seg = found >= 0 ? found : -found - 2;
+                    int a = lambdas[seg];
+                    int b = lambdas[Math.min(seg + 1, lambdas.length - 1)];
+                    int selection = a == Lod.NO_LAMBDA || b == Lod.NO_LAMBDA ? 0 : Lod.select(a + b >> 1, maxLevel);
+                    int i = y * W + x;
+                    long s8 = Math.round(fb.uv()[3 * i] * FIXED) >> 24;
+                    long t8 = Math.round(fb.uv()[3 * i + 1] * FIXED) >> 24;
+                    assertEquals(LaneSampler.trilinearPowerOfTwo(lanes.lanes(), lanes.levels(), selection, s8, t8),
+                            fb.color()[i], "triangle " + k + " pixel " + x + "," + y);
+                    pixels++;
+                }
+            }
+        }
+        assertTrue(pixels > 50_000, pixels + " pixels");
     }
 
     @Test
