@@ -142,6 +142,8 @@ class SceneInViewGuiTest {
                 Thread.yield();
             }
         }, "swapper");
+        // Only frames started after swapA was added: one already drawing the empty scene may still arrive.
+        frameAtLeast(nextFrame());
         int before = frames.size();
         swapper.start();
         workers.forEach(Thread::start);
