@@ -54,7 +54,8 @@ public final class EmbeddedView {
         controls.setBorder(BorderFactory.createEmptyBorder(8, 8, 8, 8));
         controls.add(new JLabel("Path"));
         ButtonGroup paths = new ButtonGroup();
-        for (ViewAction a : new ViewAction[] {ViewAction.PERSPECTIVE, ViewAction.AFFINE, ViewAction.TESSELLATED}) {
+        for (ViewAction a : new ViewAction[] {ViewAction.PERSPECTIVE, ViewAction.AFFINE, ViewAction.TESSELLATED,
+                ViewAction.SPANS}) {
             JRadioButton b = new JRadioButton(view.action(a));
             paths.add(b);
             controls.add(b);

@@ -96,6 +96,32 @@ class CommandsTest {
     }
 
     @Test
+    void theSpanPathKeepsEveryPixelWithinItsMaxErrorAndUsesIt() throws IOException {
+        for (String maxError : new String[] {"0.25", "2"}) {
+            CliRun r = CliRun.of("compare", "--scene", "demo", "--size", "480x270", "--mode", "spans", "--max-error",
+                    maxError, "--filter", "trilinear");
+            assertEquals(0, r.status(), r.err());
+            String json = r.out().strip();
+            assertTrue(json.startsWith("{\"mode\":\"spans\",\"against\":\"perspective\","), json);
+            double bound = Double.parseDouble(maxError);
+            double max = number(json, "max_displacement");
+            // Exact: no slack for snapping; the brick wall's rows use the error allowed.
+            assertTrue(max <= bound + 0.002 && max > 0.9 * bound, maxError + ": max displacement " + max);
+        }
+        Path uv = dir.resolve("spans.pfm");
+        CliRun render = CliRun.of("render", "--scene", "demo", "--size", "160x90", "--mode", "spans", "--borders",
+                "--out", dir.resolve("spans.png").toString(), "--uv-out", uv.toString(), "--stats");
+        assertEquals(0, render.status(), render.err());
+        assertEquals(160 * 90 * 3, Pfm.read(uv).data().length);
+        CliRun perPixel = CliRun.of("render", "--scene", "demo", "--size", "160x90", "--mode", "perspective",
+                "--out", dir.resolve("pp.png").toString(), "--stats");
+        // No geometry of its own: the per-pixel path's triangles, the same pixels written.
+        for (String key : new String[] {"pieces", "splits", "pixels_written"}) {
+            assertEquals(number(perPixel.out(), key), number(render.out(), key), key + ": " + render.out());
+        }
+    }
+
+    @Test
     void affineIsFarFromPerspectiveAndPerspectiveFromItselfNot() {
         CliRun affine = CliRun.of("compare", "--scene", "floor", "--size", "320x180", "--mode", "affine");
         assertTrue(number(affine.out(), "max_displacement") > 10, affine.out());
