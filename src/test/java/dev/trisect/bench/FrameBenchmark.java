@@ -28,8 +28,8 @@ import org.openjdk.jmh.annotations.TearDown;
 import org.openjdk.jmh.annotations.Warmup;
 
 /**
- * Time of one whole frame (transform to overlay) of a built-in scene at 1280x720, per path, split
- * policy and thread count. Run with {@code mvn -q test-compile exec:exec@jmh}; not part of the tests.
+ * Time of one whole frame (transform to overlay) of a built-in scene at 1280x720, per path (spans at
+ * the default max error, 0.5 px), split policy and thread count. Run with {@code mvn -q test-compile exec:exec@jmh}; not part of the tests.
  */
 @State(Scope.Benchmark)
 @BenchmarkMode(Mode.AverageTime)
@@ -41,7 +41,7 @@ public class FrameBenchmark {
     @Param({"demo", "floor"})
     public String scene;
 
-    @Param({"perspective", "affine", "tessellated", "tessellated-error"})
+    @Param({"perspective", "affine", "tessellated", "tessellated-error", "spans"})
     public String path;
 
     @Param({"1", "2"})
