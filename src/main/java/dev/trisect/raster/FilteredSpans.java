@@ -141,15 +141,17 @@ final class FilteredSpans {
             int stepX = 0;
             int stepY = 0;
             boolean interpolate = false;
-            for (int x = spanStart; x < spanEnd; x++) {
-                double q = qRow + qDx * x;
+            // The column as a double counter, not (double) x: see NearestSpans.perPixel.
+            double xd = spanStart;
+            for (int x = spanStart; x < spanEnd; x++, xd++) {
+                double q = qRow + qDx * xd;
                 float qf = (float) q;
                 int i = rowOffset + x;
                 if (qf > depth[i]) {
                     depth[i] = qf;
                     double rq = perspective ? 1.0 / q : 1.0;
-                    double s = (sRow + sDx * x) * rq;
-                    double t = (tRow + tDx * x) * rq;
+                    double s = (sRow + sDx * xd) * rq;
+                    double t = (tRow + tDx * xd) * rq;
                     long sFixed = (long) Math.floor(s * Sampler.ONE);
                     long tFixed = (long) Math.floor(t * Sampler.ONE);
                     int selection = 0;
@@ -266,15 +268,17 @@ final class FilteredSpans {
             double sRow = sBase + sDy * y;
             double tRow = tBase + tDy * y;
             int rowOffset = y * width;
-            for (int x = spanStart; x < spanEnd; x++) {
-                double q = qRow + qDx * x;
+            // The column as a double counter, not (double) x: see NearestSpans.perPixel.
+            double xd = spanStart;
+            for (int x = spanStart; x < spanEnd; x++, xd++) {
+                double q = qRow + qDx * xd;
                 float qf = (float) q;
                 int i = rowOffset + x;
                 if (qf > depth[i]) {
                     depth[i] = qf;
                     double rq = perspective ? 1.0 / q : 1.0;
-                    double s = (sRow + sDx * x) * rq;
-                    double t = (tRow + tDx * x) * rq;
+                    double s = (sRow + sDx * xd) * rq;
+                    double t = (tRow + tDx * xd) * rq;
                     color[i] = TexelLanes.argb(LaneSampler.bilinearPowerOfTwo(lz, 0, stride, wMask, hMask,
                             (long) Math.floor(s * Sampler.ONE) - Sampler.ONE / 2,
                             (long) Math.floor(t * Sampler.ONE) - Sampler.ONE / 2));
@@ -370,8 +374,11 @@ final class FilteredSpans {
             long s2 = (long) Math.floor(sAnchor * ks2) - half + ds2 * skip;
             long t2 = (long) Math.floor(tAnchor * kt2) - half + dt2 * skip;
             int rowOffset = y * width;
-            for (int x = spanStart; x < spanEnd; x++, s0 += ds0, t0 += dt0, s += ds, t += dt, s2 += ds2, t2 += dt2) {
-                float qf = (float) (qRow + qDx * x);
+            // The column as a double counter, not (double) x: see NearestSpans.perPixel.
+            double xd = spanStart;
+            for (int x = spanStart; x < spanEnd; x++, xd++, s0 += ds0, t0 += dt0, s += ds, t += dt, s2 += ds2,
+                    t2 += dt2) {
+                float qf = (float) (qRow + qDx * xd);
                 int i = rowOffset + x;
                 if (qf > depth[i]) {
                     depth[i] = qf;

@@ -110,7 +110,9 @@ final class KnotFilteredSpans {
             long ds = 0;
             long dt = 0;
             int rowOffset = y * width;
-            for (int x = from; x < to; x++, s += ds, t += dt) {
+            // The column as a double counter, not (double) x: see NearestSpans.perPixel.
+            double xd = from;
+            for (int x = from; x < to; x++, xd++, s += ds, t += dt) {
                 if (x == b) {
                     s = sb;
                     t = tb;
@@ -157,7 +159,7 @@ final class KnotFilteredSpans {
                         ts2 = lv[o2 + TexelLanes.SHIFT_T] + TO_SAMPLER;
                     }
                 }
-                float qf = (float) (qRow + qDx * x);
+                float qf = (float) (qRow + qDx * xd);
                 int i = rowOffset + x;
                 if (qf > depth[i]) {
                     depth[i] = qf;

@@ -84,7 +84,9 @@ final class KnotSpans {
             long ds = 0;
             long dt = 0;
             int rowOffset = y * width;
-            for (int x = from; x < to; x++, s += ds, t += dt) {
+            // The column as a double counter, not (double) x: see NearestSpans.perPixel.
+            double xd = from;
+            for (int x = from; x < to; x++, xd++, s += ds, t += dt) {
                 if (x == b) {
                     // Knot a's exact coordinates, then the step to the next knot (a is x itself, except
                     // at a tile's first pixel inside a segment).
@@ -104,7 +106,7 @@ final class KnotSpans {
                         a = b;
                     }
                 }
-                float qf = (float) (qRow + qDx * x);
+                float qf = (float) (qRow + qDx * xd);
                 int i = rowOffset + x;
                 if (qf > depth[i]) {
                     depth[i] = qf;

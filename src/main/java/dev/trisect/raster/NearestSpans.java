@@ -62,16 +62,20 @@ final class NearestSpans {
             double tRow = tBase + tDy * y;
             int rowOffset = y * width;
             // Every value comes from the plane at this pixel, not by accumulation along the row, so
-            // no rounding error builds up across a wide triangle.
-            for (int x = spanStart; x < spanEnd; x++) {
-                double q = qRow + qDx * x;
+            // no rounding error builds up across a wide triangle. The column is counted as a double too
+            // (exact): C2 compiles (double) x to cvtsi2sd, which merges into its register's old value;
+            // where that value waits on the previous pixel's division, every pixel waits for the one
+            // before, about 40 cycles a pixel instead of 14 (docs/performance.md, "The false dependency").
+            double xd = spanStart;
+            for (int x = spanStart; x < spanEnd; x++, xd++) {
+                double q = qRow + qDx * xd;
                 float qf = (float) q;
                 int i = rowOffset + x;
                 if (qf > depth[i]) {
                     depth[i] = qf;
                     double r = perspective ? 1.0 / q : 1.0;
-                    double s = (sRow + sDx * x) * r;
-                    double t = (tRow + tDx * x) * r;
+                    double s = (sRow + sDx * xd) * r;
+                    double t = (tRow + tDx * xd) * r;
                     int si = (int) Math.floor(s);
                     int ti = (int) Math.floor(t);
                     int column = pot ? si & wMask : Math.floorMod(si, tw);
@@ -136,8 +140,10 @@ final class NearestSpans {
             long s = (long) Math.floor((sBase + sDy * y + sDx * firstColumn) * FIXED_SCALE) + ds * skip;
             long t = (long) Math.floor((tBase + tDy * y + tDx * firstColumn) * FIXED_SCALE) + dt * skip;
             int rowOffset = y * width;
-            for (int x = spanStart; x < spanEnd; x++, s += ds, t += dt) {
-                float qf = (float) (qRow + qDx * x);
+            // The column as a double counter, not (double) x: see perPixel.
+            double xd = spanStart;
+            for (int x = spanStart; x < spanEnd; x++, xd++, s += ds, t += dt) {
+                float qf = (float) (qRow + qDx * xd);
                 int i = rowOffset + x;
                 if (qf > depth[i]) {
                     depth[i] = qf;
