@@ -16,8 +16,21 @@ public final class CliArgs {
 
     /** {@code compare} arguments for the measured frame: same scene, size, camera and path settings. */
     public static List<String> compare(SceneAsset scene, ViewState.Measurement m) {
+        return frame("compare", scene, m.camera(), m.settings().render(), m.width(), m.height());
+    }
+
+    /**
+     * {@code render} arguments (without {@code --out}) for a frame of {@code scene} drawn with camera
+     * {@code c} and settings {@code r} at {@code width x height}: the command-line twin of a view's frame.
+     */
+    public static List<String> render(SceneAsset scene, Camera c, RenderSettings r, int width, int height) {
+        return frame("render", scene, c, r, width, height);
+    }
+
+    private static List<String> frame(String command, SceneAsset scene, Camera c, RenderSettings r, int width,
+                                      int height) {
         List<String> a = new ArrayList<>();
-        a.add("compare");
+        a.add(command);
         if (scene.source() != null) {
             a.add("--obj");
             a.add(scene.source().toString());
@@ -25,10 +38,8 @@ public final class CliArgs {
             a.add("--scene");
             a.add(scene.name());
         }
-        Camera c = m.camera();
-        RenderSettings r = m.settings().render();
         TessellationSettings t = r.tessellation();
-        a.addAll(List.of("--size", m.width() + "x" + m.height(),
+        a.addAll(List.of("--size", width + "x" + height,
                 "--eye", c.eye().toString(), "--target", c.target().toString(), "--up", c.up().toString(),
                 "--fov", Double.toString(c.fovY()), "--near", Double.toString(c.near()), "--far", Double.toString(c.far()),
                 "--cull", r.cull().name().toLowerCase(Locale.ROOT),

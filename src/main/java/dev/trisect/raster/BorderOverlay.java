@@ -26,6 +26,8 @@ public final class BorderOverlay {
     private double qBase;
     private double qDx;
     private double qDy;
+    private double qMin;
+    private double qMax;
     private int colour;
     private double alpha;
     /** The earlier triangle sharing the edge, applied first at each pixel, when {@link #shared}. */
@@ -33,6 +35,8 @@ public final class BorderOverlay {
     private double qBaseEarlier;
     private double qDxEarlier;
     private double qDyEarlier;
+    private double qMinEarlier;
+    private double qMaxEarlier;
     private int colourEarlier;
     private double alphaEarlier;
 
@@ -44,6 +48,7 @@ public final class BorderOverlay {
      */
     public long draw(Framebuffer frame, OutlinePlan plan, int band, int x0, int y0, int x1, int y1) {
         double[] planes = plan.planes;
+        double[] ranges = plan.depthRange;
         int[] colours = plan.colours;
         double[] alphas = plan.alphas;
         int[] items = plan.bins.items();
@@ -57,6 +62,8 @@ public final class BorderOverlay {
             qBase = planes[3 * tri];
             qDx = planes[3 * tri + 1];
             qDy = planes[3 * tri + 2];
+            qMin = ranges[2 * tri];
+            qMax = ranges[2 * tri + 1];
             colour = colours[tri];
             alpha = alphas[tri];
             int earlier = plan.edgeEarlier[edge];
@@ -65,6 +72,8 @@ public final class BorderOverlay {
                 qBaseEarlier = planes[3 * earlier];
                 qDxEarlier = planes[3 * earlier + 1];
                 qDyEarlier = planes[3 * earlier + 2];
+                qMinEarlier = ranges[2 * earlier];
+                qMaxEarlier = ranges[2 * earlier + 1];
                 colourEarlier = colours[earlier];
                 alphaEarlier = alphas[earlier];
             }
@@ -177,15 +186,20 @@ public final class BorderOverlay {
         double limit = frame.depth()[i] * (1 - DEPTH_TOLERANCE);
         int[] color = frame.color();
         int painted = 0;
-        if (shared && !(qBaseEarlier + qDxEarlier * x + qDyEarlier * y < limit)) {
+        if (shared && !(held(qBaseEarlier + qDxEarlier * x + qDyEarlier * y, qMinEarlier, qMaxEarlier) < limit)) {
             color[i] = alphaEarlier >= 1 ? colourEarlier : blend(color[i], colourEarlier, alphaEarlier);
             painted++;
         }
-        if (!(qBase + qDx * x + qDy * y < limit)) {
+        if (!(held(qBase + qDx * x + qDy * y, qMin, qMax) < limit)) {
             color[i] = alpha >= 1 ? colour : blend(color[i], colour, alpha);
             painted++;
         }
         return painted;
+    }
+
+    /** {@code q} held to [min, max] (see {@link OutlinePlan#depthRange}); NaN stays NaN. */
+    private static double held(double q, double min, double max) {
+        return q < min ? min : q > max ? max : q;
     }
 
     /** {@code over} laid on {@code under} with opacity {@code a}, per sRGB channel, opaque result. */

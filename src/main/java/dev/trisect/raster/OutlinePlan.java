@@ -31,6 +31,14 @@ public final class OutlinePlan {
 
     /** Per triangle: the 1/w plane over pixel centres, base, dx, dy (as {@link Plane}). */
     double[] planes = new double[0];
+    /**
+     * Per triangle: the least and greatest 1/w its outline's depth test may take. A piece filled per
+     * pixel by the fallback is mostly a sliver, whose plane is steep or ill-conditioned: evaluated
+     * half a pixel off it, it can put the outline in front of a nearer surface. Its depth is then held
+     * to the range of its corners' 1/w, which every point of it lies within (1/w is affine on screen).
+     * Other triangles are not held (infinite range): their plane is their surface's, bit for bit.
+     */
+    double[] depthRange = new double[0];
     /** Per triangle: outline colour, opaque ARGB, or 0 for a triangle not outlined. */
     int[] colours = new int[0];
     /** Per triangle: outline opacity, 0..1. */
@@ -109,6 +117,9 @@ public final class OutlinePlan {
             planes[3 * tri] = depth.base;
             planes[3 * tri + 1] = depth.dx;
             planes[3 * tri + 2] = depth.dy;
+            boolean held = perPixel[tri];
+            depthRange[2 * tri] = held ? Math.min(at[a], Math.min(at[a + 3], at[a + 6])) : Double.NEGATIVE_INFINITY;
+            depthRange[2 * tri + 1] = held ? Math.max(at[a], Math.max(at[a + 3], at[a + 6])) : Double.POSITIVE_INFINITY;
             colours[tri] = style.colouring() == BorderStyle.Colouring.YELLOW ? OverlayColours.of(triangles, tri)
                     : OverlayColours.of(triangles, tri, style.colouring(), maxLevel, maxError);
             alphas[tri] = style.fade() ? BorderOverlay.fadeAlpha(Math.abs(det) / 2, perimeter(sc, s)) : 1;
@@ -285,6 +296,7 @@ public final class OutlinePlan {
         if (capacity < n || capacity > TRIM_FLOOR && capacity > 4 * n) {
             int size = capacity < n ? Math.max(n, 2 * capacity) : 2 * n;
             planes = new double[3 * size];
+            depthRange = new double[2 * size];
             colours = new int[size];
             alphas = new double[size];
             partner = new int[3 * size];

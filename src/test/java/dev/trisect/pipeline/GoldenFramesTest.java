@@ -60,7 +60,9 @@ import org.junit.jupiter.api.Test;
  *
  * <p>The stored hashes were made by the build at fc91f7a, before the frame and raster code was split
  * into stages (the 69 filtered cases again at 6c89bdf, after the packed blend); the span path's were added
- * with it, by the build that added it. To regenerate them, run
+ * with it, by the build that added it; the 30 cases whose borders outline fallback pieces again when
+ * those outlines' depth test was held to the pieces' corners (issue 18: a sliver's outline showed
+ * through nearer surfaces; colour hashes only, depth and UV unchanged). To regenerate them, run
  * {@code mvn test -Dtest=GoldenFramesTest -Dtrisect.golden.regenerate=true}, which rewrites
  * {@code src/test/resources/dev/trisect/pipeline/golden-frames.txt}. Do that only for a deliberate,
  * justified change of the output (a new rule in docs/conventions.md, a fixed defect), and say in the

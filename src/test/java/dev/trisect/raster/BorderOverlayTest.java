@@ -109,6 +109,31 @@ class BorderOverlayTest {
     }
 
     @Test
+    void theOutlineOfASliverSeenEdgeOnStaysBehindANearerSurface() {
+        ScreenTriangles t = new ScreenTriangles();
+        // A far sliver 0.03 px wide seen edge-on (1/w from 0.05 to 0.2 across it, as the side of a box far
+        // off), filled per pixel as slivers are, wholly behind a near triangle (1/w = 1). Its plane, half a
+        // pixel off it at the pixel centres its outline lights, reads 1/w = 2.5: nearer than the near one.
+        t.add(40, 5, 0.05, 0, 0, 40.03, 30, 0.2, 0, 0, 40, 55, 0.05, 0, 0, 0, 0, true);
+        t.add(0, 0, 1, 0, 0, 80, 0, 1, 0, 0, 0, 120, 1, 0, 0, 1, 1);
+        Framebuffer fb = draw(t, H);
+        for (int y = 0; y < H; y++) {
+            for (int x = 0; x < 60; x++) {
+                assertTrue(fb.color()[y * W + x] != OverlayColours.FALLBACK, "the hidden sliver's outline at " + x
+                        + "," + y);
+            }
+        }
+        // Alone, it is outlined.
+        ScreenTriangles alone = new ScreenTriangles();
+        alone.add(40, 5, 0.05, 0, 0, 40.03, 30, 0.2, 0, 0, 40, 55, 0.05, 0, 0, 0, 0, true);
+        int magenta = 0;
+        for (int c : draw(alone, H).color()) {
+            magenta += c == OverlayColours.FALLBACK ? 1 : 0;
+        }
+        assertTrue(magenta > 40, "a sliver in view is outlined: " + magenta);
+    }
+
+    @Test
     void fallbackPiecesAreOutlinedInTheirOwnColour() {
         ScreenTriangles t = new ScreenTriangles();
         // Two triangles side by side, the right one a per-pixel fallback piece.

@@ -8,7 +8,6 @@ import dev.trisect.metrics.ImageComparison;
 import dev.trisect.metrics.TexelToScreen;
 import dev.trisect.pipeline.Draws;
 import dev.trisect.pipeline.FrameRenderer;
-import dev.trisect.render.BorderStyle;
 import dev.trisect.render.FrameStats;
 import dev.trisect.render.Framebuffer;
 import dev.trisect.render.RenderMode;
@@ -314,10 +313,8 @@ public final class RenderLoop implements Runnable {
         if (settings.view() == ViewKind.DIFFERENCE) {
             back.overlayNanos = 0;
         } else if (settings.render().borders()) {
-            back.overlayNanos = renderer.drawBorders(fb, settings.render().borderStyle(), settings.render().tessellation());
-        } else if (back.stats.piecesFallback() > 0) {
-            // A cap was reached: the status bar says so, and the pieces concerned are outlined even without B.
-            back.overlayNanos = renderer.drawBorders(fb, BorderStyle.fallbackOnly(), settings.render().tessellation());
+            // The fallback pieces' magenta outlines come with the others (B), as on the command line, never alone.
+            back.overlayNanos = renderer.drawBorders(fb, settings.render().borderStyle(), render.tessellation());
         } else {
             back.overlayNanos = 0;
         }

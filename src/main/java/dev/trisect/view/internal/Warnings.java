@@ -20,7 +20,7 @@ public final class Warnings {
         StringBuilder w = new StringBuilder();
         if (stats.capsReached() > 0) {
             w.append(String.format(Locale.ROOT, "Cap reached on %d triangle%s: %d piece%s filled per pixel "
-                    + "(slivers included; outlined in magenta)", stats.capsReached(), stats.capsReached() == 1 ? "" : "s",
+                    + "(slivers included; outlined in magenta with the borders, B)", stats.capsReached(), stats.capsReached() == 1 ? "" : "s",
                     stats.piecesFallback(), stats.piecesFallback() == 1 ? "" : "s"));
         }
         double ceiling = t.policy() == SplitPolicy.EDGE ? t.maxEdge() : t.maxError();

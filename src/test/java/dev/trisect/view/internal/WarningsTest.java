@@ -46,36 +46,4 @@ class WarningsTest {
         assertNull(Warnings.of(s, impossible, 0.25, t), "the controller still has room: no warning");
         assertNull(Warnings.of(s, new ViewState.Budget(true, 1e6), 0.5, t), "within budget");
     }
-
-    @Test
-    void theTrianglesConcernedAreOutlinedEvenWithTheBordersOff() throws Exception {
-        ViewState state = new ViewState(DemoScenes.floor());
-        state.viewSize(320, 180);
-        TessellationSettings capped = TessellationSettings.defaults().withPolicy(SplitPolicy.ERROR).withMaxError(0.05)
-                .withMaxDepth(2);
-        state.settings(ViewSettings.defaults().withRender(ViewSettings.defaults().render().withTessellation(capped)));
-        TripleBuffer buffers = new TripleBuffer();
-        RenderLoop loop = new RenderLoop(state, buffers, () -> { }, 1);
-        Thread t = new Thread(loop, "test-render");
-        t.start();
-        FrameSlot f = null;
-        try {
-            for (int poll = 0; poll < 1000 && (f == null || f.serial < 2); poll++) {
-                f = buffers.acquire(f);
-                Thread.sleep(10);
-            }
-        } finally {
-            loop.stop();
-            t.join(5000);
-        }
-        assertTrue(f.stats.piecesFallback() > 0);
-        int magenta = 0;
-        int yellow = 0;
-        for (int p : f.frame.color()) {
-            magenta += p == dev.trisect.raster.OverlayColours.FALLBACK ? 1 : 0;
-            yellow += p == dev.trisect.raster.OverlayColours.PIECE ? 1 : 0;
-        }
-        assertTrue(magenta > 100, "fallback pieces highlighted: " + magenta);
-        assertTrue(yellow == 0, "and nothing else outlined: " + yellow);
-    }
 }
