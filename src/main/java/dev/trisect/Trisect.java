@@ -2,7 +2,6 @@ package dev.trisect;
 
 import dev.trisect.cli.Cli;
 import dev.trisect.ui.DemoApp;
-import java.io.PrintWriter;
 import java.util.Arrays;
 import java.util.List;
 
@@ -23,8 +22,7 @@ public final class Trisect {
             }
         } else {
             // The demo joins the command list so that --help shows it; it is started above.
-            status = Cli.run(new PrintWriter(System.out, true), new PrintWriter(System.err, true),
-                    List.of(new DemoApp()), args);
+            status = Cli.run(List.of(new DemoApp()), args);
         }
         System.exit(status);
     }

@@ -4,6 +4,7 @@ import dev.trisect.base.InputException;
 import dev.trisect.base.JsonObject;
 import dev.trisect.content.SceneAsset;
 import dev.trisect.io.ObjWriter;
+import dev.trisect.io.OutputBatch;
 import dev.trisect.math.Mat4;
 import dev.trisect.math.Vec3;
 import dev.trisect.perf.BudgetChart;
@@ -143,11 +144,14 @@ final class BenchCommand extends SceneCommand {
                 progress.close();
                 SweepOutput output = new SweepOutput(scene.name(), frame.size.toString(), threads);
                 lines.addAll(json ? output.json(result) : output.table(result));
-                if (plot != null) {
-                    SweepChart.write(result, scene.name() + " " + frame.size + ", " + threads + " threads", plot);
+                try (OutputBatch batch = new OutputBatch()) {
+                    Results.deliver(common.out(), batch, b -> {
+                        if (plot != null) {
+                            SweepChart.write(b, result, scene.name() + " " + frame.size + ", " + threads + " threads",
+                                    plot);
+                        }
+                    }, lines);
                 }
-                lines.forEach(common.out()::println);
-                common.out().flush();
                 return 0;
             }
             if (targetMs != null) {
@@ -156,12 +160,14 @@ final class BenchCommand extends SceneCommand {
                         progress.task("budget"));
                 progress.close();
                 lines.addAll(new BudgetOutput(scene.name(), frame.size.toString(), threads).lines(trace, json));
-                if (plot != null) {
-                    BudgetChart.write(trace, String.format(Locale.ROOT, "%s %s, %d threads: budget %.1f ms%s",
-                            scene.name(), frame.size, threads, targetMs, orbit ? ", orbiting" : ""), plot);
+                try (OutputBatch batch = new OutputBatch()) {
+                    Results.deliver(common.out(), batch, b -> {
+                        if (plot != null) {
+                            BudgetChart.write(b, trace, String.format(Locale.ROOT, "%s %s, %d threads: budget %.1f ms%s",
+                                    scene.name(), frame.size, threads, targetMs, orbit ? ", orbiting" : ""), plot);
+                        }
+                    }, lines);
                 }
-                lines.forEach(common.out()::println);
-                common.out().flush();
                 return 0;
             }
             if (!json) {
@@ -181,8 +187,7 @@ final class BenchCommand extends SceneCommand {
         if (glref != null) {
             lines.add(glrefRow(scene, textures[0], camera, threads));
         }
-        lines.forEach(common.out()::println);
-        common.out().flush();
+        Results.print(common.out(), lines);
         return 0;
     }
 

@@ -17,7 +17,16 @@ public final class Cli {
 
     /** Runs {@code args} with the process's streams and returns the exit status. */
     public static int run(String... args) {
-        return run(new PrintWriter(System.out, true), new PrintWriter(System.err, true), args);
+        return run(List.of(), args);
+    }
+
+    /**
+     * Runs {@code args} with the process's streams and further subcommands (see
+     * {@link #run(PrintWriter, PrintWriter, List, String...)}). Standard output is written through a
+     * stream that reports failures (a full disk, a closed pipe): they end the command with exit status 1.
+     */
+    public static int run(List<Object> moreCommands, String... args) {
+        return run(OutputWriter.standardOutput(), new PrintWriter(System.err, true), moreCommands, args);
     }
 
     /** Runs {@code args} writing to the given streams; returns the exit status. */
@@ -60,7 +69,16 @@ public final class Cli {
             return status;
         });
         try {
-            return cl.execute(args);
+            int status = cl.execute(args);
+            // Whatever a command printed (help, a scene list) must have arrived; a command that failed
+            // has said why already.
+            String failure = status == 0 ? OutputWriter.failure(out) : null;
+            if (failure != null) {
+                err.println("trisect: " + Results.cannotWrite(failure));
+                err.flush();
+                return 1;
+            }
+            return status;
         } catch (OutOfMemoryError e) {
             err.println("trisect: out of memory (lower --max-frame-pieces or --size, or give Java more with -Xmx)");
             err.flush();

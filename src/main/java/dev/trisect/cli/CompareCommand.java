@@ -16,6 +16,7 @@ import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.scene.Camera;
 import java.nio.file.Path;
+import java.util.List;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -91,24 +92,25 @@ final class CompareCommand extends SceneCommand {
                 renderer.drawBorders(test, settings.borderStyle(), settings.tessellation());
             }
         }
-        try (OutputBatch batch = new OutputBatch()) {
-            if (heatmap != null) {
-                int[] argb = new int[w * h];
-                HeatScale scale = new HeatScale(heatmapScale.equals("log"), heatmapMax);
-                HeatMap.render(displacement, test.uv(), reference.uv(), w, h, scale, argb);
-                HeatMap.drawLegend(argb, w, h, scale);
-                ImageFiles.write(batch, heatmap, w, h, argb);
-            }
-            if (out != null) {
-                ImageFiles.write(batch, out, w, h, test.color());
-            }
-            batch.commit();
-        }
-        common.out().println(new JsonObject()
+        String json = new JsonObject()
                 .put("mode", path.mode.id())
                 .put("against", against.id())
-                .putAll(c.json()));
-        common.out().flush();
+                .putAll(c.json())
+                .toString();
+        try (OutputBatch batch = new OutputBatch()) {
+            Results.deliver(common.out(), batch, b -> {
+                if (heatmap != null) {
+                    int[] argb = new int[w * h];
+                    HeatScale scale = new HeatScale(heatmapScale.equals("log"), heatmapMax);
+                    HeatMap.render(displacement, test.uv(), reference.uv(), w, h, scale, argb);
+                    HeatMap.drawLegend(argb, w, h, scale);
+                    ImageFiles.write(b, heatmap, w, h, argb);
+                }
+                if (out != null) {
+                    ImageFiles.write(b, out, w, h, test.color());
+                }
+            }, List.of(json));
+        }
         return 0;
     }
 }

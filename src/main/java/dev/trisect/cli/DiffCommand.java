@@ -3,6 +3,7 @@ package dev.trisect.cli;
 import dev.trisect.base.InputException;
 import dev.trisect.base.JsonObject;
 import dev.trisect.io.ImageFiles;
+import dev.trisect.io.OutputBatch;
 import dev.trisect.io.Pfm;
 import dev.trisect.metrics.Comparison;
 import dev.trisect.metrics.HeatMap;
@@ -10,6 +11,7 @@ import dev.trisect.metrics.ImageComparison;
 import dev.trisect.texture.Texture;
 import dev.trisect.texture.TextureReader;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -79,16 +81,20 @@ final class DiffCommand implements Callable<Integer> {
                 differ++;
             }
         }
-        if (heatmap != null) {
-            int[] argb = new int[w * h];
-            HeatMap.render(displacement, uvA, uvB, w, h, heatmapMax, argb);
-            ImageFiles.write(heatmap, w, h, argb);
-        }
-        common.out().println(new JsonObject()
+        String json = new JsonObject()
                 .put("colour_differ_pixels", differ)
                 .put("colour_differ_share", (double) differ / (w * h))
-                .putAll(c.json()));
-        common.out().flush();
+                .putAll(c.json())
+                .toString();
+        try (OutputBatch batch = new OutputBatch()) {
+            Results.deliver(common.out(), batch, files -> {
+                if (heatmap != null) {
+                    int[] argb = new int[w * h];
+                    HeatMap.render(displacement, uvA, uvB, w, h, heatmapMax, argb);
+                    ImageFiles.write(files, heatmap, w, h, argb);
+                }
+            }, List.of(json));
+        }
         return 0;
     }
 

@@ -1,8 +1,10 @@
 package dev.trisect.cli;
 
 import dev.trisect.io.ObjWriter;
+import dev.trisect.io.OutputBatch;
 import dev.trisect.content.SceneAsset;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
@@ -33,12 +35,15 @@ final class ExportCommand implements Callable<Integer> {
         SceneAsset scene = frame.loadScene(common::note);
         var camera = frame.camera(scene);
         Outputs.createParent("--to", to);
-        List<Path> maps = ObjWriter.write(to, scene.mesh(), scene.textures());
-        common.out().printf("wrote %s (%d triangles, %d materials: %s)%n", to, scene.mesh().triangleCount(),
-                maps.size(), maps);
-        common.out().printf("camera: --eye %s --target %s --up %s --fov %s --near %s --far %s%n", camera.eye(),
-                camera.target(), camera.up(), camera.fovY(), camera.near(), camera.far());
-        common.out().flush();
+        String cameraLine = String.format("camera: --eye %s --target %s --up %s --fov %s --near %s --far %s",
+                camera.eye(), camera.target(), camera.up(), camera.fovY(), camera.near(), camera.far());
+        try (OutputBatch batch = new OutputBatch()) {
+            List<Path> maps = new ArrayList<>();
+            // The camera is printed even when the files fail: it is what was computed.
+            Results.deliver(common.out(), batch, b -> maps.addAll(ObjWriter.write(b, to, scene.mesh(), scene.textures())),
+                    written -> written ? List.of(String.format("wrote %s (%d triangles, %d materials: %s)", to,
+                            scene.mesh().triangleCount(), maps.size(), maps), cameraLine) : List.of(cameraLine));
+        }
         return 0;
     }
 }

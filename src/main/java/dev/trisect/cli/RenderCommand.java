@@ -10,6 +10,7 @@ import dev.trisect.render.Framebuffer;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.scene.Camera;
 import java.nio.file.Path;
+import java.util.List;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -53,15 +54,12 @@ final class RenderCommand extends SceneCommand {
         }
         // The image and its UV output belong together: both are written, or neither is changed.
         try (OutputBatch batch = new OutputBatch()) {
-            ImageFiles.write(batch, out, fb.width(), fb.height(), fb.color());
-            if (uvOut != null) {
-                Pfm.write(batch, uvOut, fb.width(), fb.height(), fb.uv());
-            }
-            batch.commit();
-        }
-        if (stats) {
-            common.out().println(s.toJson());
-            common.out().flush();
+            Results.deliver(common.out(), batch, b -> {
+                ImageFiles.write(b, out, fb.width(), fb.height(), fb.color());
+                if (uvOut != null) {
+                    Pfm.write(b, uvOut, fb.width(), fb.height(), fb.uv());
+                }
+            }, stats ? List.of(s.toJson()) : List.of());
         }
         return 0;
     }

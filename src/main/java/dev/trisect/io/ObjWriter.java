@@ -35,7 +35,11 @@ public final class ObjWriter {
         }
     }
 
-    private static List<Path> write(OutputBatch batch, Path obj, Mesh mesh, List<Texture> textures) {
+    /**
+     * As {@link #write(Path, Mesh, List)}, as part of {@code batch}: the files appear only when the batch
+     * is committed.
+     */
+    public static List<Path> write(OutputBatch batch, Path obj, Mesh mesh, List<Texture> textures) {
         Path dir = obj.toAbsolutePath().getParent();
         String base = obj.getFileName().toString().replaceFirst("\\.[^.]*$", "");
         Path mtl = dir.resolve(base + ".mtl");

@@ -1,6 +1,7 @@
 package dev.trisect.perf;
 
 import dev.trisect.io.ImageFiles;
+import dev.trisect.io.OutputBatch;
 import java.awt.Color;
 import java.awt.image.BufferedImage;
 import java.nio.file.Path;
@@ -21,8 +22,8 @@ public final class BudgetChart {
     private BudgetChart() {
     }
 
-    /** Writes the chart; the file appears complete or not at all. */
-    public static void write(BudgetRun.Trace trace, String title, Path out) {
+    /** Writes the chart as part of {@code batch}: the file appears when the batch is committed. */
+    public static void write(OutputBatch batch, BudgetRun.Trace trace, String title, Path out) {
         int n = trace.ms().length;
         double[] frame = new double[n];
         double[] target = new double[n];
@@ -47,7 +48,7 @@ public final class BudgetChart {
         line(chart.addSeries("threshold px", frame, trace.thresholds()), new Color(0xd62728), SeriesLines.SOLID, 1);
         line(chart.addSeries("ceiling px", frame, ceiling), new Color(0xd62728), SeriesLines.DASH_DASH, 1);
         BufferedImage image = BitmapEncoder.getBufferedImage(chart);
-        ImageFiles.write(out, image.getWidth(), image.getHeight(),
+        ImageFiles.write(batch, out, image.getWidth(), image.getHeight(),
                 image.getRGB(0, 0, image.getWidth(), image.getHeight(), null, 0, image.getWidth()));
     }
 

@@ -1,6 +1,7 @@
 package dev.trisect.perf;
 
 import dev.trisect.io.ImageFiles;
+import dev.trisect.io.OutputBatch;
 import dev.trisect.render.SplitPolicy;
 import java.awt.Color;
 import java.awt.Graphics2D;
@@ -33,8 +34,8 @@ public final class SweepChart {
     private SweepChart() {
     }
 
-    /** Writes the chart; the file appears complete or not at all. */
-    public static void write(Sweep.Result result, String title, Path out) {
+    /** Writes the chart as part of {@code batch}: the file appears when the batch is committed. */
+    public static void write(OutputBatch batch, Sweep.Result result, String title, Path out) {
         BufferedImage edge = panel(result, SplitPolicy.EDGE, title + " - edge policy", "max edge (px)");
         BufferedImage error = panel(result, SplitPolicy.ERROR, title + " - error policy", "max error (px)");
         int w = edge.getWidth() + error.getWidth();
@@ -49,7 +50,7 @@ public final class SweepChart {
         } finally {
             g.dispose();
         }
-        ImageFiles.write(out, w, h, both.getRGB(0, 0, w, h, null, 0, w));
+        ImageFiles.write(batch, out, w, h, both.getRGB(0, 0, w, h, null, 0, w));
     }
 
     /** One policy's panel. */

@@ -1,5 +1,7 @@
 package dev.trisect.cli;
 
+import java.io.IOException;
+import java.io.OutputStream;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 
@@ -11,6 +13,22 @@ record CliRun(int status, String out, String err) {
         StringWriter err = new StringWriter();
         int status = Cli.run(new PrintWriter(out, true), new PrintWriter(err, true), args);
         return new CliRun(status, out.toString(), err.toString());
+    }
+
+    /**
+     * Runs {@code args} with a standard output that fails as a full disk does: every write throws
+     * "No space left on device", as writing to /dev/full does.
+     */
+    static CliRun withFullStdout(String... args) {
+        StringWriter err = new StringWriter();
+        OutputWriter out = OutputWriter.over(new OutputStream() {
+            @Override
+            public void write(int b) throws IOException {
+                throw new IOException("No space left on device");
+            }
+        });
+        int status = Cli.run(out, new PrintWriter(err, true), args);
+        return new CliRun(status, "", err.toString());
     }
 
     /** Standard error as one line, or fails if it is more (or a stack trace). */
