@@ -31,14 +31,16 @@ final class BudgetOutput {
         if (!json) {
             lines.add(String.format(Locale.ROOT, "scene %s, %s, %d threads, target %.3f ms, %s policy, ceiling %s px",
                     scene, size, threads, t.targetMs(), policy, t.ceiling()));
-            lines.add(String.format(Locale.ROOT, "%6s %12s %10s %10s", "frame", "threshold", "ms", "pieces"));
+            lines.add(String.format(Locale.ROOT, "%6s %12s %10s %10s %6s", "frame", "threshold", "ms", "pieces",
+                    "over"));
         }
         for (int i = 0; i < n; i++) {
             lines.add(json
                     ? new JsonObject().put("frame", i).put("threshold", t.thresholds()[i], 4)
-                    .put("ms", t.ms()[i], 3).put("pieces", t.pieces()[i]).toString()
-                    : String.format(Locale.ROOT, "%6d %12.4f %10.3f %10d", i, t.thresholds()[i], t.ms()[i],
-                    t.pieces()[i]));
+                    .put("ms", t.ms()[i], 3).put("pieces", t.pieces()[i]).put("budget_reached", t.overBudget()[i])
+                    .toString()
+                    : String.format(Locale.ROOT, "%6d %12.4f %10.3f %10d %6s", i, t.thresholds()[i], t.ms()[i],
+                    t.pieces()[i], t.overBudget()[i] ? "over" : ""));
         }
         int half = n / 2;
         FrameTimes late = FrameTimes.of(Arrays.copyOfRange(t.ms(), half, n));
@@ -52,10 +54,15 @@ final class BudgetOutput {
                     .put("second_half_median_ms", late.medianMs(), 3)
                     .put("second_half_median_threshold", medianThreshold, 4)
                     .put("final_threshold", t.thresholds()[n - 1], 4)
+                    .put("piece_budget", t.pieceBudget())
+                    .put("frames_over_piece_budget", t.framesOverBudget())
+                    .put("second_half_reversals", t.reversals(half))
                     .toString());
         } else {
             lines.add(String.format(Locale.ROOT, "second half: median %.3f ms (target %.3f), median threshold %.4f px,"
                     + " final %.4f px", late.medianMs(), t.targetMs(), medianThreshold, t.thresholds()[n - 1]));
+            lines.add(String.format(Locale.ROOT, "frames over the piece budget (%d): %d of %d; threshold reversals in "
+                    + "the second half: %d", t.pieceBudget(), t.framesOverBudget(), n, t.reversals(half)));
         }
         return lines;
     }

@@ -33,7 +33,8 @@ final class BudgetSection implements ToolSection {
         form.row(auto);
         form.row(ToolsForm.label("Target ms", target.getToolTipText()), target);
         form.readouts(new String[][] {
-            {"Chosen threshold", "The threshold the controller chose for the last frame (px); - when off"}});
+            {"Chosen threshold", "The threshold the controller chose for the last frame (px), and what holds it "
+                + "there: your threshold (target out of reach), the finest allowed, or the piece budget; - when off"}});
         sync(null);
     }
 
@@ -63,8 +64,9 @@ final class BudgetSection implements ToolSection {
 
     @Override
     public void refresh(ViewState.Progress progress, FrameSlot front, ViewState.Measurement measurement) {
-        double t = state.chosenThreshold();
-        form.set("Chosen threshold", Double.isNaN(t) ? "-" : String.format(Locale.ROOT, "%.3f px", t));
+        ViewState.BudgetChoice c = state.budgetChoice();
+        form.set("Chosen threshold", c == null ? "-" : String.format(Locale.ROOT, "%.3f px", c.threshold())
+                + (c.reason().isEmpty() ? "" : " (" + c.reason() + ")"));
     }
 
     @Override

@@ -24,10 +24,34 @@ public final class BudgetRun {
      *
      * @param thresholds the threshold each frame was rendered with, pixels
      * @param ms         each frame's wall-clock time, milliseconds
-     * @param pieces     each frame's pieces
+     * @param pieces     each frame's pieces (filled and dropped off screen: what the piece budget counts)
+     * @param overBudget whether each frame went over its piece budget (and was redone with a lower depth cap)
+     * @param pieceBudget the frames' piece budget
      */
     public record Trace(SplitPolicy policy, double targetMs, double ceiling, double[] thresholds, double[] ms,
-                        long[] pieces) {
+                        long[] pieces, boolean[] overBudget, long pieceBudget) {
+        /** Frames that went over their piece budget. */
+        public int framesOverBudget() {
+            int n = 0;
+            for (boolean b : overBudget) {
+                n += b ? 1 : 0;
+            }
+            return n;
+        }
+
+        /** Times the threshold turned from falling to rising or back, from frame {@code from} on. */
+        public int reversals(int from) {
+            int n = 0;
+            int last = 0;
+            for (int i = Math.max(1, from + 1); i < thresholds.length; i++) {
+                int d = Double.compare(thresholds[i], thresholds[i - 1]);
+                if (d != 0) {
+                    n += last != 0 && d != last ? 1 : 0;
+                    last = d;
+                }
+            }
+            return n;
+        }
     }
 
     private BudgetRun() {
@@ -44,8 +68,8 @@ public final class BudgetRun {
         TessellationSettings t = base.tessellation();
         boolean edge = t.policy() == SplitPolicy.EDGE;
         double ceiling = edge ? t.maxEdge() : t.maxError();
-        BudgetController controller = new BudgetController(targetMs, ceiling, BudgetController.defaultFloor(ceiling),
-                ceiling);
+        BudgetController controller = new BudgetController(targetMs, ceiling, BudgetController.floorFor(t.policy(),
+                ceiling), ceiling);
         Framebuffer frame = new Framebuffer(width, height);
         Viewport viewport = new Viewport(width, height);
         for (int i = 0; i < warmup; i++) {
@@ -55,6 +79,8 @@ public final class BudgetRun {
         double[] thresholds = new double[frames];
         double[] ms = new double[frames];
         long[] pieces = new long[frames];
+        boolean[] over = new boolean[frames];
+        long pieceBudget = 0;
         for (int i = 0; i < frames; i++) {
             double threshold = controller.threshold();
             RenderSettings s = base.withTessellation(edge ? t.withMaxEdge(threshold) : t.withMaxError(threshold));
@@ -63,11 +89,13 @@ public final class BudgetRun {
             FrameStats stats = renderer.render(scene.mesh(), textures, c.viewProjection(viewport), s, frame);
             ms[i] = (System.nanoTime() - t0) / 1e6;
             thresholds[i] = threshold;
-            pieces[i] = stats.pieces();
-            controller.update(ms[i]);
+            pieces[i] = stats.pieces() + stats.piecesOffScreen();
+            over[i] = stats.budgetReached();
+            pieceBudget = stats.pieceBudget();
+            controller.update(ms[i], pieces[i], pieceBudget, over[i]);
             progress.frameDone(warmup + i + 1, warmup + frames);
         }
-        return new Trace(t.policy(), targetMs, ceiling, thresholds, ms, pieces);
+        return new Trace(t.policy(), targetMs, ceiling, thresholds, ms, pieces, over, pieceBudget);
     }
 
     /** The camera with its eye turned by {@code angle} radians about the vertical through its target. */

@@ -57,6 +57,8 @@ import javax.swing.filechooser.FileNameExtensionFilter;
  * as any program may: only its public API. Built and used on the event thread only.
  */
 final class DemoWindow {
+    /** How a frame's warning (FrameInfo.warning) starts. */
+    private static final String WARNING_MARK = "\u26a0";
     private final JFrame frame;
     private final TrisectView view;
     private final JLabel status = new JLabel(" ");
@@ -226,6 +228,9 @@ final class DemoWindow {
         String warning = f == null ? null : f.warning();
         if (warning != null && !warning.equals(statusLine.text())) {
             status(warning);
+        } else if (warning == null) {
+            // A warning lasts while its frames do: none stays after the frame on screen stopped earning it.
+            statusLine.withdraw(WARNING_MARK);
         }
     }
 

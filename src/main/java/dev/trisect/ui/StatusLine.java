@@ -41,6 +41,14 @@ final class StatusLine {
         }
     }
 
+    /** Gives way to the resting hint now if a passing message starting with {@code prefix} shows. */
+    void withdraw(String prefix) {
+        if (clearAt != Long.MAX_VALUE && label.getText().startsWith(prefix)) {
+            show(resting);
+            clearAt = Long.MAX_VALUE;
+        }
+    }
+
     String text() {
         return label.getText();
     }

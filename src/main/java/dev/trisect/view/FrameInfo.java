@@ -17,8 +17,9 @@ import dev.trisect.scene.Camera;
  * @param frameMillis     milliseconds the render thread spent on the frame: the engine's time plus the
  *                        overlay and anything the developer tools measured
  * @param framesPerSecond frames handed to the screen per second, over the last second
- * @param warning         one line for the user when a cap was reached (pieces filled per pixel) or the
- *                        frame missed its time target even at the user's threshold; null when all is well
+ * @param warning         one line for the user, starting with the sign "\u26a0", when a cap was reached
+ *                        (pieces filled per pixel) or the frame budget's target is out of reach even at the
+ *                        user's threshold; null when all is well
  */
 public record FrameInfo(long number, int width, int height, Camera camera, RenderSettings settings,
                         FrameStats stats, double frameMillis, double framesPerSecond, String warning) {

@@ -27,7 +27,7 @@ class BudgetControllerTest {
         return thresholds;
     }
 
-    private static int reversals(double[] t, int from) {
+    static int reversals(double[] t, int from) {
         int n = 0;
         int last = 0;
         for (int i = from + 1; i < t.length; i++) {

@@ -1,6 +1,7 @@
 package dev.trisect.view.internal;
 
 import dev.trisect.perf.BudgetController;
+import dev.trisect.render.FrameStats;
 import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.render.SplitPolicy;
@@ -11,11 +12,13 @@ import dev.trisect.render.TessellationSettings;
  * tessellated, it replaces the user's threshold (of the chosen split policy) by the one a
  * {@link BudgetController} chooses, the user's threshold being the ceiling, and feeds the controller
  * each frame's engine time. A change of target, policy or ceiling starts a new controller from the
- * ceiling. Render thread only.
+ * ceiling. The frame's piece budget is a floor on the threshold it chooses
+ * ({@link BudgetController#update(double, long, long, boolean)}). Render thread only.
  */
 public final class BudgetHook {
     private BudgetController controller;
     private SplitPolicy policy;
+    private double targetMs;
 
     /** The settings to render this frame with. */
     RenderSettings apply(RenderSettings user, ViewState.Budget budget) {
@@ -28,24 +31,28 @@ public final class BudgetHook {
         double ceiling = edge ? t.maxEdge() : t.maxError();
         if (controller == null || policy != t.policy() || controller.ceiling() != ceiling
                 || controller.targetMs() != budget.targetMs()) {
-            controller = new BudgetController(budget.targetMs(), ceiling, BudgetController.defaultFloor(ceiling),
+            controller = new BudgetController(budget.targetMs(), ceiling, BudgetController.floorFor(t.policy(), ceiling),
                     ceiling);
             policy = t.policy();
+            targetMs = budget.targetMs();
         }
         double chosen = controller.threshold();
         return user.withTessellation(edge ? t.withMaxEdge(chosen) : t.withMaxError(chosen));
     }
 
     /**
-     * Feeds the engine time (milliseconds) of the frame just rendered with {@link #apply}'s settings;
-     * returns the threshold that frame used, or NaN when the budget is off.
+     * Feeds the frame just rendered with {@link #apply}'s settings (its engine time, pieces and piece
+     * budget) to the controller; returns the threshold that frame used and why, or null when the
+     * budget is off.
      */
-    double frameDone(double engineMs) {
+    ViewState.BudgetChoice frameDone(FrameStats stats) {
         if (controller == null) {
-            return Double.NaN;
+            return null;
         }
-        double used = controller.threshold();
-        controller.update(engineMs);
+        ViewState.BudgetChoice used = new ViewState.BudgetChoice(controller.threshold(), controller.limit(),
+                controller.lastMedianMs(), targetMs, controller.ceiling());
+        controller.update(stats.totalNanos() / 1e6, stats.pieces() + stats.piecesOffScreen(), stats.pieceBudget(),
+                stats.budgetReached());
         return used;
     }
 }

@@ -201,8 +201,7 @@ public final class RenderLoop implements Runnable {
     /** What the listener hears of a frame just drawn into {@code slot}. */
     private FrameReport report(FrameSlot slot, ViewSettings settings, double frameMs, double fps) {
         return new FrameReport(slot.serial, slot.width(), slot.height(), slot.camera, slot.drawnRender, slot.stats,
-                frameMs, fps, Warnings.of(slot.stats, state.budget(), state.chosenThreshold(),
-                        settings.render().tessellation()));
+                frameMs, fps, Warnings.of(slot.stats, state.budgetChoice()));
     }
 
     private void drawFrame(ViewSettings settings, int fw, int fh, FreezeGate.Action action, double dt) {
@@ -267,7 +266,7 @@ public final class RenderLoop implements Runnable {
             state.pathMs(paths);
         }
         long afterThisPath = System.nanoTime();
-        state.chosenThreshold(budget.frameDone(back.stats.totalNanos() / 1e6));
+        state.budgetChoice(budget.frameDone(back.stats));
         frames++;
         back.serial = frames;
         back.camera = camera;

@@ -1,5 +1,6 @@
 package dev.trisect.view.internal;
 
+import dev.trisect.perf.BudgetController;
 import dev.trisect.metrics.Comparison;
 import dev.trisect.scene.Camera;
 import dev.trisect.content.AssetScenes;
@@ -50,8 +51,8 @@ public final class ViewState {
     private volatile boolean toolsOpen;
 
     private volatile Budget budget = new Budget(false, Budget.DEFAULT_TARGET_MS);
-    /** The split threshold the budget controller chose for the last frame, pixels; NaN when off. */
-    private volatile double chosenThreshold = Double.NaN;
+    /** What the budget controller chose for the last frame; null when it is off. */
+    private volatile BudgetChoice budgetChoice;
 
     /** A camera the host set, numbered so that setting the same camera twice still moves the view back. */
     public record CameraRequest(Camera camera, long serial) {
@@ -64,6 +65,29 @@ public final class ViewState {
      */
     public record Budget(boolean on, double targetMs) {
         public static final double DEFAULT_TARGET_MS = 16.7;
+    }
+
+    /**
+     * What the budget controller chose for a frame, and why, in one value, so that every readout of it
+     * agrees: the status bar's warning and the tools' chosen threshold.
+     *
+     * @param threshold the split threshold the frame was drawn with, pixels
+     * @param limit     what held the controller there when it chose it
+     * @param medianMs  the median engine time of the window that decided it, milliseconds (NaN before one)
+     * @param targetMs  the target it holds, milliseconds
+     * @param ceiling   the user's threshold, the loosest it may choose, pixels
+     */
+    public record BudgetChoice(double threshold, BudgetController.Limit limit, double medianMs, double targetMs,
+                               double ceiling) {
+        /** Why the threshold is where it is, for a readout; empty when it simply follows the target. */
+        public String reason() {
+            return switch (limit) {
+                case CEILING -> "your threshold: the target is out of reach";
+                case FLOOR -> "the finest allowed: the target is met with room to spare";
+                case PIECE_BUDGET -> "held by the piece budget";
+                case TARGET -> "";
+            };
+        }
     }
 
     /** A comparison of one frame against the per-pixel path, and what it was made from. */
@@ -198,12 +222,13 @@ public final class ViewState {
         budget = b;
     }
 
-    public double chosenThreshold() {
-        return chosenThreshold;
+    /** What the budget controller chose for the last frame, or null when it is off. */
+    public BudgetChoice budgetChoice() {
+        return budgetChoice;
     }
 
-    public void chosenThreshold(double t) {
-        chosenThreshold = t;
+    public void budgetChoice(BudgetChoice c) {
+        budgetChoice = c;
     }
 
     public Progress progress() {

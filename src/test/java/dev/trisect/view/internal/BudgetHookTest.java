@@ -1,9 +1,12 @@
 package dev.trisect.view.internal;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import dev.trisect.perf.BudgetController;
+import dev.trisect.render.FrameStats;
 import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.render.SplitPolicy;
@@ -11,8 +14,15 @@ import org.junit.jupiter.api.Test;
 
 /** The demo's budget hook: it changes only the tessellated threshold, within the user's ceiling. */
 class BudgetHookTest {
-    private static double frame(double ms) {
-        return ms;
+    /** A frame of {@code ms} engine time with {@code pieces} of a budget of 100,000 (over it when more). */
+    private static FrameStats frame(double ms, long pieces) {
+        boolean over = pieces > 100_000;
+        return new FrameStats(1000, 0, 0, 0, 0, 0, over ? 100_000 : pieces, 0, 0, 0, 0, 0, 100_000, over ? 3 : -1, 0, 1,
+                0, 0, 0, 0, 0, false, Math.round(ms * 1e6));
+    }
+
+    private static FrameStats frame(double ms) {
+        return frame(ms, 1000);
     }
 
     private static final RenderSettings USER = RenderSettings.defaults().withMode(RenderMode.TESSELLATED);
@@ -21,10 +31,10 @@ class BudgetHookTest {
     void offOrOtherPathsLeaveTheSettingsAlone() {
         BudgetHook hook = new BudgetHook();
         assertSame(USER, hook.apply(USER, new ViewState.Budget(false, 10)));
-        assertTrue(Double.isNaN(hook.frameDone(frame(50))));
+        assertNull(hook.frameDone(frame(50)));
         RenderSettings perspective = USER.withMode(RenderMode.PERSPECTIVE);
         assertSame(perspective, hook.apply(perspective, new ViewState.Budget(true, 10)));
-        assertTrue(Double.isNaN(hook.frameDone(frame(50))));
+        assertNull(hook.frameDone(frame(50)));
     }
 
     @Test
@@ -34,7 +44,7 @@ class BudgetHookTest {
         double ceiling = USER.tessellation().maxEdge();
         for (int i = 0; i < 40; i++) {
             RenderSettings s = hook.apply(USER, budget);
-            assertEquals(s.tessellation().maxEdge(), hook.frameDone(frame(2)));
+            assertEquals(s.tessellation().maxEdge(), hook.frameDone(frame(2)).threshold());
         }
         double tightened = hook.apply(USER, budget).tessellation().maxEdge();
         assertTrue(tightened < ceiling, "fast frames buy finer pieces: " + tightened);
@@ -60,5 +70,22 @@ class BudgetHookTest {
         assertEquals(USER.tessellation().maxEdge(), chosen.tessellation().maxEdge(), "the other policy is untouched");
         RenderSettings lower = error.withTessellation(error.tessellation().withMaxError(1));
         assertEquals(1, hook.apply(lower, budget).tessellation().maxError(), "a new ceiling starts over from it");
+    }
+
+    @Test
+    void thePieceBudgetIsAFloorAndTheChoiceSaysSo() {
+        BudgetHook hook = new BudgetHook();
+        ViewState.Budget generous = new ViewState.Budget(true, 40);
+        double ceiling = USER.tessellation().maxEdge();
+        ViewState.BudgetChoice last = null;
+        for (int i = 0; i < 200; i++) {
+            double edge = hook.apply(USER, generous).tessellation().maxEdge();
+            // Pieces as 1000 + 4e7 / edge^2: 100,000 (the budget) at about 20 px; frames always fast.
+            last = hook.frameDone(frame(5, Math.round(1000 + 4e7 / (edge * edge))));
+            assertTrue(1000 + 4e7 / (edge * edge) <= 100_000, "over the piece budget at " + edge + " px, frame " + i);
+        }
+        assertTrue(last.threshold() < ceiling, "it refined: " + last.threshold());
+        assertEquals(BudgetController.Limit.PIECE_BUDGET, last.limit());
+        assertEquals("held by the piece budget", last.reason());
     }
 }
