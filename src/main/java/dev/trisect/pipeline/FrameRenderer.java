@@ -58,6 +58,8 @@ public final class FrameRenderer implements AutoCloseable {
     private double drawnSpanError;
     /** The width of the frame last drawn by {@link #render}, pixels. */
     private int drawnWidth;
+    /** The height of the frame last drawn by {@link #render}, pixels. */
+    private int drawnHeight;
     /** The one draw of {@link #render(Mesh, Texture[], Mat4, RenderSettings, Framebuffer)}, reused. */
     private final Draws single = new Draws();
 
@@ -119,6 +121,7 @@ public final class FrameRenderer implements AutoCloseable {
         drawn = g;
         drawnSpanError = settings.mode() == RenderMode.SPANS ? settings.tessellation().maxError() : 0;
         drawnWidth = frame.width();
+        drawnHeight = frame.height();
         return new FrameStatsBuilder(pool.threads(), start)
                 .geometry(draws.triangleCount(), geometry.chunks(), g, geometryDone)
                 .bands(b, end, settings.borders());
@@ -132,6 +135,18 @@ public final class FrameRenderer implements AutoCloseable {
      */
     public PieceInfo pieceAt(int x, int y, int triangle, double depth) {
         return PieceLookup.find(geometry.chunks(), drawnChunks(), x, y, triangle, depth);
+    }
+
+    /**
+     * The piece filled per pixel (the fallback: a sliver, or one a cap stopped short) whose outline
+     * lights pixel (x, y) in the last frame drawn by {@link #render} when the borders are drawn, by the
+     * overlay's own rules and depth test against {@code depth} (the frame's 1/w there); the last in
+     * drawing order when several do. For the pixel inspector: it explains a magenta mark.
+     *
+     * @return the piece, or null when no fallback piece's outline lights the pixel
+     */
+    public PieceInfo fallbackOutlineAt(int x, int y, double depth) {
+        return PieceLookup.fallbackOutline(geometry.chunks(), drawnChunks(), x, y, drawnHeight, depth);
     }
 
     /**

@@ -1,5 +1,7 @@
 package dev.trisect.pipeline;
 
+import dev.trisect.tessellate.Tessellator;
+
 /**
  * One filled triangle of the last frame (a tessellated piece, or a clipped triangle in the other
  * paths), as the pixel inspector shows it.
@@ -7,11 +9,16 @@ package dev.trisect.pipeline;
  * @param index    its position among the frame's filled triangles, in drawing order
  * @param triangle the input triangle it came from, 0-based
  * @param level    split level: times its most-halved edge was halved (0 unsplit)
- * @param fallback filled per pixel because a cap stopped its splitting short
+ * @param fallback filled per pixel (perspective-correct): a sliver, or a cap stopped its splitting short
  * @param screen   corners x0, y0, x1, y1, x2, y2, screen pixels
  * @param attributes per corner 1/w, s, t (view-space units^-1, level-0 texels)
  */
 public record PieceInfo(int index, int triangle, int level, boolean fallback, double[] screen, double[] attributes) {
+
+    /** Whether it is a sliver by the tessellator's rule ({@link Tessellator#sliver}): thinner than 1/16 px. */
+    public boolean sliver() {
+        return Tessellator.sliver(screen[0], screen[1], screen[2], screen[3], screen[4], screen[5]);
+    }
 
     /**
      * The level-0 texel coordinates' screen derivatives over this piece as its affine fill sees them:

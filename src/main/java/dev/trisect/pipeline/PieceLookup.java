@@ -1,5 +1,6 @@
 package dev.trisect.pipeline;
 
+import dev.trisect.raster.OutlineProbe;
 import dev.trisect.raster.RowKnots;
 import dev.trisect.raster.ScreenTriangles;
 import java.util.Arrays;
@@ -26,8 +27,11 @@ final class PieceLookup {
         if (at < 0) {
             return null;
         }
-        int c = (int) (at >>> 32);
-        int i = (int) at;
+        return info(chunks, (int) (at >>> 32), (int) at);
+    }
+
+    /** Piece i of chunk c as the inspector shows it. */
+    private static PieceInfo info(Chunks chunks, int c, int i) {
         int index = i;
         for (int k = 0; k < c; k++) {
             index += chunks.get(k).out.count();
@@ -35,9 +39,25 @@ final class PieceLookup {
         ScreenTriangles t = chunks.get(c).out;
         int s = i * ScreenTriangles.SCREEN_STRIDE;
         int a = i * ScreenTriangles.ATTRIBUTE_STRIDE;
-        return new PieceInfo(index, triangle, t.levels()[i], t.perPixel()[i],
+        return new PieceInfo(index, t.ids()[i], t.levels()[i], t.perPixel()[i],
                 Arrays.copyOfRange(t.screen(), s, s + ScreenTriangles.SCREEN_STRIDE),
                 Arrays.copyOfRange(t.attributes(), a, a + ScreenTriangles.ATTRIBUTE_STRIDE));
+    }
+
+    /**
+     * The last piece filled per pixel, in drawing order, whose outline lights pixel (x, y) of a frame
+     * {@code height} rows high holding 1/w = {@code depth} there ({@link OutlineProbe}); null for none.
+     */
+    static PieceInfo fallbackOutline(Chunks chunks, int chunkCount, int x, int y, int height, double depth) {
+        for (int c = chunkCount - 1; c >= 0; c--) {
+            ScreenTriangles t = chunks.get(c).out;
+            for (int i = t.count() - 1; i >= 0; i--) {
+                if (t.perPixel()[i] && OutlineProbe.lights(t, i, x, y, height, depth)) {
+                    return info(chunks, c, i);
+                }
+            }
+        }
+        return null;
     }
 
     /**

@@ -20,7 +20,7 @@ public final class BorderOverlay {
     public static final int YELLOW = OverlayColours.PIECE;
 
     /** Relative 1/w tolerance: a line pixel may lie this much behind the stored surface and still show. */
-    private static final double DEPTH_TOLERANCE = 1.0 / 512;
+    static final double DEPTH_TOLERANCE = 1.0 / 512;
 
     /** The triangle whose turn it is to walk the edge: its 1/w plane, colour and opacity. */
     private double qBase;

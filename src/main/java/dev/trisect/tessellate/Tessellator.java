@@ -284,12 +284,21 @@ public final class Tessellator {
      */
     private boolean thin(int a, int b, int c) {
         double[] v = vertices;
-        double ex1 = v[b + SCREEN_X] - v[a + SCREEN_X];
-        double ey1 = v[b + SCREEN_Y] - v[a + SCREEN_Y];
-        double ex2 = v[c + SCREEN_X] - v[a + SCREEN_X];
-        double ey2 = v[c + SCREEN_Y] - v[a + SCREEN_Y];
-        double ex3 = v[c + SCREEN_X] - v[b + SCREEN_X];
-        double ey3 = v[c + SCREEN_Y] - v[b + SCREEN_Y];
+        return sliver(v[a + SCREEN_X], v[a + SCREEN_Y], v[b + SCREEN_X], v[b + SCREEN_Y], v[c + SCREEN_X],
+                v[c + SCREEN_Y]);
+    }
+
+    /**
+     * Whether a triangle with these screen corners (pixels) is a sliver, as the tessellator judges its
+     * pieces: least altitude below {@link #SLIVER_PIXELS} and below an eighth of its longest edge.
+     */
+    public static boolean sliver(double x0, double y0, double x1, double y1, double x2, double y2) {
+        double ex1 = x1 - x0;
+        double ey1 = y1 - y0;
+        double ex2 = x2 - x0;
+        double ey2 = y2 - y0;
+        double ex3 = x2 - x1;
+        double ey3 = y2 - y1;
         double area2 = Math.abs(ex1 * ey2 - ex2 * ey1);
         double l2 = Math.max(ex1 * ex1 + ey1 * ey1, Math.max(ex2 * ex2 + ey2 * ey2, ex3 * ex3 + ey3 * ey3));
         // altitude = area2 / longest edge, compared squared to spare a square root: below the limit,

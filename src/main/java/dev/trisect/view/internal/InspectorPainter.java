@@ -25,13 +25,18 @@ public final class InspectorPainter {
         List<String> l = new ArrayList<>();
         l.add(String.format(Locale.ROOT, "pixel %d,%d %s #%06X", in.x(), in.y(), pinned ? "(pinned)" : "",
                 in.argb() & 0xFFFFFF));
+        PieceInfo mark = in.outline();
+        if (mark != null) {
+            // The magenta mark on the pixel belongs to this piece, which may not be the pixel's own.
+            l.add("magenta outline: piece " + mark.index() + " of triangle " + mark.triangle() + ", " + perPixel(mark));
+        }
         if (in.triangle() < 0) {
             l.add("background: nothing drawn");
             return l;
         }
         PieceInfo p = in.piece();
         l.add("triangle " + in.triangle() + (p == null ? "" : ", piece " + p.index() + ", split level " + p.level()
-                + (p.fallback() ? ", FALLBACK (per pixel)" : "")));
+                + (p.fallback() ? ", " + perPixel(p) : "")));
         l.add(String.format(Locale.ROOT, "depth w %.4f", in.w()));
         l.add(String.format(Locale.ROOT, "texel s,t this path %.3f, %.3f", in.s(), in.t()));
         l.add(Double.isNaN(in.refS()) ? "per-pixel path: other triangle"
@@ -49,6 +54,12 @@ public final class InspectorPainter {
         l.add(String.format(Locale.ROOT, "mip level %d (lambda %.2f%s), texel %d,%d", in.mipLevel(), in.lambda(),
                 in.segment() >= 0 ? " of the segment" : "", in.texelX(), in.texelY()));
         return l;
+    }
+
+    /** Why a fallback piece is filled per pixel: a sliver, or a cap stopped its splitting. */
+    static String perPixel(PieceInfo p) {
+        return p.sliver() ? "filled per pixel: a sliver (thinner than 1/16 px)"
+                : "filled per pixel: a cap stopped its splitting";
     }
 
     /**

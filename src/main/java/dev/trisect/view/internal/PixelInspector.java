@@ -40,10 +40,13 @@ public final class PixelInspector {
      * @param texelX       nearest texel on that level, wrapped
      * @param texelY       and its row
      * @param knots        in the span path, the knots of this pixel's row of the filled triangle; else null
+     * @param outline      with the borders on, the piece filled per pixel (a sliver, or one a cap stopped
+     *                     short) whose magenta outline lights this pixel, the last drawn when several do;
+     *                     else null. It explains a magenta mark the pixel's own piece does not.
      */
     public record Inspection(int x, int y, int argb, int triangle, double w, double s, double t, double refS, double refT,
                       double displacement, PieceInfo piece, double lambda, int mipLevel, int texelX, int texelY,
-                      RowKnots knots) {
+                      RowKnots knots, PieceInfo outline) {
         /** The span segment holding the pixel (the index of its first knot), or -1 (not the span path, or a lone knot). */
         public int segment() {
             return knots == null ? -1 : knots.segmentOf(x);
@@ -55,16 +58,19 @@ public final class PixelInspector {
      *
      * @param perspective the frame took the per-pixel path or the span path (whose knots
      *                    {@link FrameRenderer#knotsAt} then gives)
+     * @param borders     the borders are drawn over the frame (so fallback pieces' outlines may light the pixel)
      */
     static Inspection inspect(FrameRenderer renderer, Framebuffer frame, Framebuffer reference, TexelToScreen exact,
-                              IntFunction<Texture> textureOf, TextureFilter filter, boolean perspective, int x, int y) {
+                              IntFunction<Texture> textureOf, TextureFilter filter, boolean perspective,
+                              boolean borders, int x, int y) {
         int i = y * frame.width() + x;
         double[] uv = frame.uv();
         int id = (int) uv[3 * i + 2] - 1;
         int argb = frame.color()[i];
+        PieceInfo outline = borders ? renderer.fallbackOutlineAt(x, y, frame.depth()[i]) : null;
         if (id < 0) {
             return new Inspection(x, y, argb, -1, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN,
-                    Double.NaN, null, Double.NaN, 0, 0, 0, null);
+                    Double.NaN, null, Double.NaN, 0, 0, 0, null, outline);
         }
         double q = frame.depth()[i];
         double s = uv[3 * i];
@@ -98,7 +104,7 @@ public final class PixelInspector {
         int tx = Math.floorMod((int) Math.floor(s * chain.scaleS(level)), chain.width(level));
         int ty = Math.floorMod((int) Math.floor(t * chain.scaleT(level)), chain.height(level));
         return new Inspection(x, y, argb, id, 1 / q, s, t, refS, refT, displacement, piece, lambda, level, tx, ty,
-                knots);
+                knots, outline);
     }
 
     /**

@@ -304,7 +304,8 @@ public final class RenderLoop implements Runnable {
                 back.inspection = PixelInspector.inspect(renderer, fb, reference,
                         new TexelToScreen(draws, viewport), drawn::textureOf, settings.render().filter(),
                         settings.render().mode() == RenderMode.PERSPECTIVE
-                                || settings.render().mode() == RenderMode.SPANS, ix, iy);
+                                || settings.render().mode() == RenderMode.SPANS,
+                        settings.render().borders() && settings.view() != ViewKind.DIFFERENCE, ix, iy);
             }
             back.inspectNanos = System.nanoTime() - t0;
         }

@@ -128,4 +128,19 @@ class PixelInspectorTest {
         double d2 = (s[0] - s[4]) * (y - s[5]) - (s[1] - s[5]) * (x - s[4]);
         return (d0 >= 0 && d1 >= 0 && d2 >= 0) || (d0 <= 0 && d1 <= 0 && d2 <= 0);
     }
+
+    @Test
+    void theReadoutNamesAFallbackPieceAndWhy() {
+        // A sliver 0.03 px thick and a fat piece, both filled per pixel.
+        PieceInfo sliver = new PieceInfo(7, 3, 1, true, new double[] {10, 10, 60, 10, 35, 10.03}, new double[9]);
+        PieceInfo capped = new PieceInfo(8, 3, 2, true, new double[] {10, 10, 60, 10, 35, 40}, new double[9]);
+        assertTrue(sliver.sliver());
+        PixelInspector.Inspection on = new PixelInspector.Inspection(35, 10, 0xFFFF00FF, 3, 2, 0, 0, 0, 0, 0, capped, 0,
+                0, 0, 0, null, sliver);
+        var lines = InspectorPainter.lines(on, false);
+        assertTrue(lines.contains("magenta outline: piece 7 of triangle 3, filled per pixel: a sliver (thinner than 1/16 px)"),
+                lines.toString());
+        assertTrue(lines.stream().anyMatch(l -> l.endsWith("piece 8, split level 2, filled per pixel: a cap stopped its "
+                + "splitting")), lines.toString());
+    }
 }
