@@ -7,8 +7,6 @@ import dev.trisect.view.internal.ViewState;
 import java.util.Locale;
 import javax.swing.JCheckBox;
 import javax.swing.JComponent;
-import javax.swing.JSpinner;
-import javax.swing.SpinnerNumberModel;
 
 /**
  * Developer tools: the frame-time budget. "Auto" lets the budget controller choose the tessellated
@@ -20,16 +18,16 @@ final class BudgetSection implements ToolSection {
     private final ToolsForm form = new ToolsForm("Frame budget");
     private boolean syncing;
     private final JCheckBox auto = new JCheckBox("Auto: hold the target frame time");
-    private final JSpinner target = new JSpinner(new SpinnerNumberModel(ViewState.Budget.DEFAULT_TARGET_MS, 1.0,
-            1000.0, 0.5));
+    private final NumberField target;
 
     BudgetSection(ViewController owner) {
         this.state = owner.state();
+        target = new NumberField("Target ms", "ms", 1, 1000, this::publish, owner::message).decimals(1);
         auto.setToolTipText("Adjust the split threshold every frame to hold the target frame time (tessellated "
                 + "path); the max edge or max error set above is the loosest it may go");
-        target.setToolTipText("Frame time to hold, milliseconds of engine time per frame");
-        auto.addActionListener(e -> publish());
-        target.addChangeListener(e -> publish());
+        target.setToolTipText("Frame time to hold, milliseconds of engine time per frame, 1 to 1000: type it and "
+                + "press Enter");
+        auto.addActionListener(e -> publish(state.budget().targetMs()));
         form.row(auto);
         form.row(ToolsForm.label("Target ms", target.getToolTipText()), target);
         form.readouts(new String[][] {
@@ -38,9 +36,10 @@ final class BudgetSection implements ToolSection {
         sync(null);
     }
 
-    private void publish() {
+    private void publish(double targetMs) {
         if (!syncing) {
-            state.budget(new ViewState.Budget(auto.isSelected(), ((Number) target.getValue()).doubleValue()));
+            state.budget(new ViewState.Budget(auto.isSelected(), targetMs));
+            target.show(targetMs);
         }
     }
 
@@ -51,7 +50,7 @@ final class BudgetSection implements ToolSection {
         try {
             ViewState.Budget b = state.budget();
             auto.setSelected(b.on());
-            target.setValue(b.targetMs());
+            target.show(b.targetMs());
         } finally {
             syncing = false;
         }
@@ -72,6 +71,11 @@ final class BudgetSection implements ToolSection {
     @Override
     public String readout(String name) {
         return form.get(name);
+    }
+
+    /** The target's field, for tests. */
+    NumberField targetField() {
+        return target;
     }
 
     /** The Auto switch, for tests. */

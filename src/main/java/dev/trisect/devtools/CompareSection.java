@@ -13,7 +13,6 @@ import javax.swing.ButtonGroup;
 import javax.swing.JCheckBox;
 import javax.swing.JComboBox;
 import javax.swing.JComponent;
-import javax.swing.JLabel;
 import javax.swing.JSlider;
 import javax.swing.JPanel;
 import javax.swing.JRadioButton;
@@ -33,10 +32,11 @@ public final class CompareSection implements ToolSection {
     private final JComboBox<String> heatScale = new JComboBox<>(new String[] {"Linear", "Logarithmic"});
     /** Top of the heat map's scale: 0..400 maps onto 0.1..1000 px, logarithmically. */
     private final JSlider heatTop = new JSlider(0, 400, topToSlider(2));
-    private final JLabel heatTopValue = ToolsForm.value();
+    private final NumberField heatTopValue;
 
     CompareSection(ViewController owner) {
         this.owner = owner;
+        heatTopValue = new NumberField("Heat map top", "px", 0.1, 1000, this::heatTop, owner::message).decimals(3);
         compare.setToolTipText("Render the same frame with the per-pixel perspective path as well, and measure "
                 + "how far this path's texture is from it, at least twice a second");
         compare.addActionListener(e -> {
@@ -93,13 +93,18 @@ public final class CompareSection implements ToolSection {
 
     private void heat() {
         if (!syncing) {
-            owner.update(s -> s.withHeatScale(new HeatScale(heatScale.getSelectedIndex() == 1,
-                    sliderToTop(heatTop.getValue()))));
+            heatTop(sliderToTop(heatTop.getValue()));
         }
     }
 
+    private void heatTop(double px) {
+        owner.update(s -> s.withHeatScale(new HeatScale(heatScale.getSelectedIndex() == 1, px)));
+    }
+
     private void showHeatTop() {
-        heatTopValue.setText(HeatScale.number(sliderToTop(heatTop.getValue())) + " px");
+        if (!syncing) {
+            heatTopValue.show(sliderToTop(heatTop.getValue()));
+        }
     }
 
     @Override
@@ -123,7 +128,7 @@ public final class CompareSection implements ToolSection {
             viewSplit.setSelected(s.view() == ViewKind.SPLIT);
             heatScale.setSelectedIndex(s.heatScale().logarithmic() ? 1 : 0);
             heatTop.setValue(topToSlider(s.heatScale().maxPixels()));
-            showHeatTop();
+            heatTopValue.show(s.heatScale().maxPixels());
         } finally {
             syncing = false;
         }

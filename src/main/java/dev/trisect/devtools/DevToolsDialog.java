@@ -14,8 +14,10 @@ import javax.swing.JDialog;
 /**
  * The "Developer tools" window (F12): a {@link DevToolsPanel} in a window beside the view's.
  *
- * <p>The window never takes the keyboard ({@link #setFocusableWindowState} false), so the view keeps
- * flying while the mouse works the controls here. Event thread only.
+ * <p>The window takes the keyboard when clicked, so that numbers can be typed into its fields, but
+ * never takes it by opening ({@link #setAutoRequestFocus} false): F12 leaves the keyboard with the
+ * view. The view's command keys (B, C, 1 to 4, F12...) work here as in the view, except while a
+ * number is being typed. Event thread only.
  */
 public final class DevToolsDialog extends JDialog {
     private static final long serialVersionUID = 1L;
@@ -25,7 +27,6 @@ public final class DevToolsDialog extends JDialog {
     /** A tools window owned by {@code owner} (the view's window; may be null). */
     public DevToolsDialog(Window owner, ViewController controller) {
         super(owner, "Developer tools", Dialog.ModalityType.MODELESS);
-        setFocusableWindowState(false);
         setAutoRequestFocus(false);
         setDefaultCloseOperation(HIDE_ON_CLOSE);
         addWindowListener(new WindowAdapter() {

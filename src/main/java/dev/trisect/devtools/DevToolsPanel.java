@@ -64,6 +64,9 @@ public final class DevToolsPanel extends JPanel {
         // One wheel notch moves about three rows, not the default few pixels.
         scroll.getVerticalScrollBar().setUnitIncrement(WHEEL_PIXELS);
         add(scroll, BorderLayout.CENTER);
+        // The view's keys work here too while a control of the tools has the keyboard (a number field
+        // keeps the keys that type for itself).
+        owner.commands().bind(getInputMap(WHEN_ANCESTOR_OF_FOCUSED_COMPONENT), getActionMap());
         refresh = new Timer(REFRESH_MILLIS, e -> refresh());
         addHierarchyListener(e -> {
             if ((e.getChangeFlags() & HierarchyEvent.SHOWING_CHANGED) != 0) {

@@ -10,7 +10,6 @@ import java.awt.Toolkit;
 import java.awt.datatransfer.StringSelection;
 import javax.swing.JButton;
 import javax.swing.JComponent;
-import javax.swing.JLabel;
 import javax.swing.JSlider;
 
 /** Developer tools: render scale, and the command line that reproduces the measured frame. */
@@ -18,9 +17,11 @@ final class RenderSection implements ToolSection {
     private final ToolsForm form = new ToolsForm("Render");
     private boolean syncing;
     private final JSlider renderScale = new JSlider(25, 100, 100);
-    private final JLabel renderScaleValue = ToolsForm.value();
+    private final NumberField renderScaleValue;
 
     RenderSection(ViewController owner) {
+        renderScaleValue = new NumberField("Render scale", "%", 25, 100,
+                v -> owner.update(s -> s.withRenderScale(Math.round(v) / 100.0)), owner::message).decimals(0);
         renderScale.setToolTipText("Render at this share of the view's device pixels and scale up (faster when lower)");
         ToolsForm.listen(renderScale, () -> syncing, this::showValue,
                 v -> owner.update(s -> s.withRenderScale(v / 100.0)));
@@ -58,13 +59,15 @@ final class RenderSection implements ToolSection {
         syncing = true;
         try {
             renderScale.setValue((int) Math.round(s.renderScale() * 100));
-            showValue();
+            renderScaleValue.show(Math.round(s.renderScale() * 100));
         } finally {
             syncing = false;
         }
     }
 
     private void showValue() {
-        renderScaleValue.setText(renderScale.getValue() + " %");
+        if (!syncing) {
+            renderScaleValue.show(renderScale.getValue());
+        }
     }
 }

@@ -5,12 +5,10 @@ import dev.trisect.render.SplitPolicy;
 import dev.trisect.render.TessellationSettings;
 import dev.trisect.view.internal.ViewController;
 import dev.trisect.view.internal.ViewSettings;
-import java.util.Locale;
 import java.util.function.UnaryOperator;
 import javax.swing.BoxLayout;
 import javax.swing.ButtonGroup;
 import javax.swing.JComponent;
-import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JRadioButton;
 import javax.swing.JSlider;
@@ -28,14 +26,20 @@ final class SplitPolicySection implements ToolSection {
     private final JRadioButton edgePolicy = new JRadioButton("Edge");
     private final JRadioButton errorPolicy = new JRadioButton("Error");
     private final JSlider maxEdge = new JSlider(2, 128, 32);
-    private final JLabel maxEdgeValue = ToolsForm.value();
+    private final NumberField maxEdgeValue;
     private final JSlider maxError = new JSlider(0, SCALE, errorToSlider(0.5));
-    private final JLabel maxErrorValue = ToolsForm.value();
+    private final NumberField maxErrorValue;
     private final JSlider maxDepth = new JSlider(0, 30, 16);
-    private final JLabel maxDepthValue = ToolsForm.value();
+    private final NumberField maxDepthValue;
 
     SplitPolicySection(ViewController owner) {
         this.owner = owner;
+        maxEdgeValue = new NumberField("Max edge", "px", 2, 128,
+                v -> tessellation(t -> t.withMaxEdge(Math.round(v))), owner::message).decimals(0);
+        maxErrorValue = new NumberField("Max error", "px", MIN_ERROR, MAX_ERROR,
+                v -> tessellation(t -> t.withMaxError(v)), owner::message).decimals(3);
+        maxDepthValue = new NumberField("Max depth", "", 0, 30,
+                v -> tessellation(t -> t.withMaxDepth((int) Math.round(v))), owner::message).decimals(0);
         ButtonGroup group = new ButtonGroup();
         group.add(edgePolicy);
         group.add(errorPolicy);
@@ -100,16 +104,29 @@ final class SplitPolicySection implements ToolSection {
             maxError.setValue(errorToSlider(t.maxError()));
             maxDepth.setValue(t.maxDepth());
             maxEdge.setEnabled(t.policy() == SplitPolicy.EDGE);
+            maxEdgeValue.setEnabled(maxEdge.isEnabled());
             maxError.setEnabled(t.policy() == SplitPolicy.ERROR || s.render().mode() == RenderMode.SPANS);
-            showValues();
+            maxErrorValue.setEnabled(maxError.isEnabled());
+            // The values in force, not the sliders' steps: a typed 0.333 px shows as typed.
+            maxEdgeValue.show(t.maxEdge());
+            maxErrorValue.show(t.maxError());
+            maxDepthValue.show(t.maxDepth());
         } finally {
             syncing = false;
         }
     }
 
+    /** While a slider moves, its field follows it. */
     private void showValues() {
-        maxEdgeValue.setText(maxEdge.getValue() + " px");
-        maxErrorValue.setText(String.format(Locale.ROOT, "%.2f px", sliderToError(maxError.getValue())));
-        maxDepthValue.setText(Integer.toString(maxDepth.getValue()));
+        if (!syncing) {
+            maxEdgeValue.show(maxEdge.getValue());
+            maxErrorValue.show(sliderToError(maxError.getValue()));
+            maxDepthValue.show(maxDepth.getValue());
+        }
+    }
+
+    /** The typed fields, for tests: max edge, max error, max depth. */
+    NumberField[] fields() {
+        return new NumberField[] {maxEdgeValue, maxErrorValue, maxDepthValue};
     }
 }

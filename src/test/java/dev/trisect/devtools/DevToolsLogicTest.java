@@ -58,6 +58,17 @@ class DevToolsLogicTest {
     }
 
     @Test
+    void aTypedNumberMayEndInItsUnitAndAnythingElseIsNoNumber() {
+        assertEquals(40.0, NumberField.parse("40", "ms"));
+        assertEquals(0.25, NumberField.parse(" .25 px ", "px"));
+        assertEquals(12.0, NumberField.parse("12px", "px"));
+        assertEquals(1e3, NumberField.parse("1e3", "px"));
+        for (String bad : new String[] {"", "x", "12 ms", "1,5", "--2", "0x10", "NaN", "Infinity", "1.2.3"}) {
+            assertEquals(null, NumberField.parse(bad, "px"), bad);
+        }
+    }
+
+    @Test
     void theToolsWindowIsAsTallAsItsContentWhereTheScreenAllows() {
         Rectangle screen = new Rectangle(0, 0, 1920, 1080);
         assertEquals(new Dimension(420, 1000), DevToolsDialog.fit(new Dimension(420, 1000), 15, screen, 0));

@@ -13,6 +13,8 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import javax.swing.Action;
+import javax.swing.ActionMap;
+import javax.swing.InputMap;
 import javax.swing.KeyStroke;
 
 /**
@@ -119,6 +121,14 @@ public final class ViewCommands {
     /** The command of this id ({@code "borders"}, {@code "view-split"}, ...), or null. */
     public Command byId(String id) {
         return byId.get(id);
+    }
+
+    /** Binds every command's key to it in these maps (a view's, or the developer tools' around their controls). */
+    public void bind(InputMap keys, ActionMap actions) {
+        for (Map.Entry<String, Command> e : byId.entrySet()) {
+            keys.put(e.getValue().key(), e.getKey());
+            actions.put(e.getKey(), e.getValue());
+        }
     }
 
     /** Every command, in the order they were made. */

@@ -1,0 +1,160 @@
+package dev.trisect.devtools;
+
+import static dev.trisect.GuiTests.edt;
+import static dev.trisect.GuiTests.onEdt;
+import static dev.trisect.GuiTests.waitFor;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trisect.GuiTests;
+import dev.trisect.content.AssetScenes;
+import dev.trisect.content.DemoScenes;
+import dev.trisect.render.RenderMode;
+import dev.trisect.view.TrisectView;
+import dev.trisect.view.internal.ViewController;
+import dev.trisect.view.internal.ViewState;
+import java.awt.Component;
+import java.awt.Dimension;
+import java.awt.KeyboardFocusManager;
+import java.awt.Point;
+import java.awt.Robot;
+import java.awt.Window;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.atomic.AtomicInteger;
+import javax.swing.JFrame;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+
+/** The developer tools window with real clicks and key presses under an X server. */
+@Tag("gui")
+class DevToolsGuiTest {
+    private static Robot robot;
+    private final GuiTests.Uncaught uncaught = new GuiTests.Uncaught();
+    private final List<String> messages = new CopyOnWriteArrayList<>();
+    private final AtomicInteger frames = new AtomicInteger();
+    private JFrame host;
+    private TrisectView view;
+
+    @BeforeAll
+    static void robot() throws Exception {
+        robot = GuiTests.robot("DevToolsGuiTest");
+    }
+
+    @BeforeEach
+    void open() throws Exception {
+        GuiTests.requireDisplay();
+        uncaught.start();
+        edt(() -> {
+            host = new JFrame("host");
+            view = new TrisectView(AssetScenes.scene(DemoScenes.boxes()), 1);
+            view.setPreferredSize(new Dimension(320, 240));
+            view.addFrameListener(f -> frames.incrementAndGet());
+            view.addMessageListener(messages::add);
+            host.getContentPane().add(view);
+            host.pack();
+            host.setLocation(0, 0);
+            host.setVisible(true);
+        });
+        waitFor("frames", () -> frames.get() >= 2);
+        edt(() -> view.showDevTools(true));
+        waitFor("the developer tools", () -> onEdt(() -> dialog() != null && dialog().isShowing()));
+        click(view);
+        waitFor("the view to have the keyboard", () -> onEdt(() -> view.isFocusOwner()));
+    }
+
+    @AfterEach
+    void close() throws Exception {
+        if (host != null) {
+            edt(() -> host.dispose());
+        }
+        uncaught.check();
+    }
+
+    private static DevToolsDialog dialog() {
+        for (Window w : Window.getWindows()) {
+            if (w instanceof DevToolsDialog d && w.isDisplayable()) {
+                return d;
+            }
+        }
+        return null;
+    }
+
+    private ViewState state() {
+        return ((ViewController) view.getClientProperty(ViewController.class)).state();
+    }
+
+    private static void click(Component c) throws Exception {
+        Point p = onEdt(() -> {
+            if (c instanceof javax.swing.JComponent j) {
+                j.scrollRectToVisible(new java.awt.Rectangle(0, 0, c.getWidth(), c.getHeight()));
+            }
+            Point at = c.getLocationOnScreen();
+            return new Point(at.x + c.getWidth() / 2, at.y + c.getHeight() / 2);
+        });
+        robot.mouseMove(p.x, p.y);
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+    }
+
+    private static void type(int... keys) {
+        for (int k : keys) {
+            robot.keyPress(k);
+            robot.keyRelease(k);
+        }
+    }
+
+    private static Component focusOwner() {
+        return KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner();
+    }
+
+    /** Clicks a field and waits until it has the keyboard (it then selects its text). */
+    private static void focus(NumberField field) throws Exception {
+        click(field);
+        waitFor("the field to have the keyboard", () -> onEdt(() -> focusOwner() == field));
+    }
+
+    @Test
+    void numbersTypedIntoTheToolsApplyAndTheirDigitsStayOutOfTheViewsKeys() throws Exception {
+        DevToolsPanel tools = onEdt(() -> dialog().panel());
+        NumberField target = onEdt(() -> tools.section(BudgetSection.class).targetField());
+        focus(target);
+        type(KeyEvent.VK_4, KeyEvent.VK_0, KeyEvent.VK_ENTER);
+        waitFor("the typed target", () -> state().budget().targetMs() == 40);
+        assertEquals(RenderMode.TESSELLATED, state().settings().render().mode(), "the 4 typed is not key 4 (spans)");
+
+        NumberField maxEdge = onEdt(() -> tools.section(SplitPolicySection.class).fields()[0]);
+        focus(maxEdge);
+        type(KeyEvent.VK_1, KeyEvent.VK_2, KeyEvent.VK_ENTER);
+        waitFor("the typed max edge", () -> state().settings().render().tessellation().maxEdge() == 12);
+        assertEquals(RenderMode.TESSELLATED, state().settings().render().mode(), "1 and 2 typed are not the paths' keys");
+        assertEquals("12 px", onEdt(maxEdge::getText));
+
+        // Still in the field, its text selected after Enter: the next typing replaces it.
+        type(KeyEvent.VK_X, KeyEvent.VK_ENTER);
+        waitFor("a message about the typing", () -> !messages.isEmpty());
+        assertTrue(messages.get(0).startsWith("Max edge: \"x\" is not a number from 2 to 128 px"), messages.get(0));
+        assertEquals(12, state().settings().render().tessellation().maxEdge(), "bad text changes nothing");
+        assertEquals("12 px", onEdt(maxEdge::getText), "and the field shows the value in force again");
+    }
+
+    @Test
+    void theViewsKeysWorkWhileAControlOfTheToolsHasTheKeyboard() throws Exception {
+        DevToolsPanel tools = onEdt(() -> dialog().panel());
+        NumberField maxDepth = onEdt(() -> tools.section(SplitPolicySection.class).fields()[2]);
+        focus(maxDepth);
+        type(KeyEvent.VK_F7);
+        waitFor("the split view from F7 in a field", () -> state().settings().view()
+                == dev.trisect.view.internal.ViewKind.SPLIT);
+        type(KeyEvent.VK_TAB);
+        waitFor("the keyboard to leave the field", () -> onEdt(() -> !(focusOwner() instanceof NumberField)));
+        boolean borders = state().settings().render().borders();
+        type(KeyEvent.VK_B);
+        waitFor("B to toggle the borders from the tools", () -> state().settings().render().borders() != borders);
+    }
+}
