@@ -126,7 +126,12 @@ final class BenchCommand extends SceneCommand {
     }
 
     @Override
-    int run(SceneAsset scene, Camera camera) throws IOException, InterruptedException {
+    List<Path> outputs() {
+        return Arrays.asList(plot);
+    }
+
+    @Override
+    int run(SceneAsset scene, Camera camera, OutputBatch batch) throws IOException, InterruptedException {
         Texture[] textures = scene.textureArray();
         if (glref != null) {
             Arrays.fill(textures, textures[0]);
@@ -144,14 +149,12 @@ final class BenchCommand extends SceneCommand {
                 progress.close();
                 SweepOutput output = new SweepOutput(scene.name(), frame.size.toString(), threads);
                 lines.addAll(json ? output.json(result) : output.table(result));
-                try (OutputBatch batch = new OutputBatch()) {
-                    Results.deliver(common.out(), batch, b -> {
-                        if (plot != null) {
-                            SweepChart.write(b, result, scene.name() + " " + frame.size + ", " + threads + " threads",
-                                    plot);
-                        }
-                    }, lines);
-                }
+                Results.deliver(common.out(), batch, b -> {
+                    if (plot != null) {
+                        SweepChart.write(b, result, scene.name() + " " + frame.size + ", " + threads + " threads",
+                                plot);
+                    }
+                }, lines);
                 return 0;
             }
             if (targetMs != null) {
@@ -160,14 +163,12 @@ final class BenchCommand extends SceneCommand {
                         progress.task("budget"));
                 progress.close();
                 lines.addAll(new BudgetOutput(scene.name(), frame.size.toString(), threads).lines(trace, json));
-                try (OutputBatch batch = new OutputBatch()) {
-                    Results.deliver(common.out(), batch, b -> {
-                        if (plot != null) {
-                            BudgetChart.write(b, trace, String.format(Locale.ROOT, "%s %s, %d threads: budget %.1f ms%s",
-                                    scene.name(), frame.size, threads, targetMs, orbit ? ", orbiting" : ""), plot);
-                        }
-                    }, lines);
-                }
+                Results.deliver(common.out(), batch, b -> {
+                    if (plot != null) {
+                        BudgetChart.write(b, trace, String.format(Locale.ROOT, "%s %s, %d threads: budget %.1f ms%s",
+                                scene.name(), frame.size, threads, targetMs, orbit ? ", orbiting" : ""), plot);
+                    }
+                }, lines);
                 return 0;
             }
             if (!json) {

@@ -16,6 +16,7 @@ import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.scene.Camera;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.List;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -68,7 +69,12 @@ final class CompareCommand extends SceneCommand {
     }
 
     @Override
-    int run(SceneAsset scene, Camera camera) {
+    List<Path> outputs() {
+        return Arrays.asList(heatmap, out);
+    }
+
+    @Override
+    int run(SceneAsset scene, Camera camera, OutputBatch batch) {
         RenderSettings settings = path.settings(frame);
         Framebuffer test = Frames.allocate(frame.size);
         Framebuffer reference = Frames.allocate(frame.size);
@@ -97,20 +103,18 @@ final class CompareCommand extends SceneCommand {
                 .put("against", against.id())
                 .putAll(c.json())
                 .toString();
-        try (OutputBatch batch = new OutputBatch()) {
-            Results.deliver(common.out(), batch, b -> {
-                if (heatmap != null) {
-                    int[] argb = new int[w * h];
-                    HeatScale scale = new HeatScale(heatmapScale.equals("log"), heatmapMax);
-                    HeatMap.render(displacement, test.uv(), reference.uv(), w, h, scale, argb);
-                    HeatMap.drawLegend(argb, w, h, scale);
-                    ImageFiles.write(b, heatmap, w, h, argb);
-                }
-                if (out != null) {
-                    ImageFiles.write(b, out, w, h, test.color());
-                }
-            }, List.of(json));
-        }
+        Results.deliver(common.out(), batch, b -> {
+            if (heatmap != null) {
+                int[] argb = new int[w * h];
+                HeatScale scale = new HeatScale(heatmapScale.equals("log"), heatmapMax);
+                HeatMap.render(displacement, test.uv(), reference.uv(), w, h, scale, argb);
+                HeatMap.drawLegend(argb, w, h, scale);
+                ImageFiles.write(b, heatmap, w, h, argb);
+            }
+            if (out != null) {
+                ImageFiles.write(b, out, w, h, test.color());
+            }
+        }, List.of(json));
         return 0;
     }
 }

@@ -54,9 +54,16 @@ final class DiffCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        if (heatmap != null) {
-            Outputs.checkPng("--heatmap", heatmap);
+        try (OutputBatch batch = new OutputBatch()) {
+            if (heatmap != null) {
+                Outputs.checkPng("--heatmap", heatmap);
+                batch.reserve(heatmap);
+            }
+            return diff(batch);
         }
+    }
+
+    private int diff(OutputBatch batch) {
         Texture a = TextureReader.read(image);
         Texture b = TextureReader.read(referenceImage);
         Pfm.Image ua = Pfm.read(uv);
@@ -86,15 +93,13 @@ final class DiffCommand implements Callable<Integer> {
                 .put("colour_differ_share", (double) differ / (w * h))
                 .putAll(c.json())
                 .toString();
-        try (OutputBatch batch = new OutputBatch()) {
-            Results.deliver(common.out(), batch, files -> {
-                if (heatmap != null) {
-                    int[] argb = new int[w * h];
-                    HeatMap.render(displacement, uvA, uvB, w, h, heatmapMax, argb);
-                    ImageFiles.write(files, heatmap, w, h, argb);
-                }
-            }, List.of(json));
-        }
+        Results.deliver(common.out(), batch, files -> {
+            if (heatmap != null) {
+                int[] argb = new int[w * h];
+                HeatMap.render(displacement, uvA, uvB, w, h, heatmapMax, argb);
+                ImageFiles.write(files, heatmap, w, h, argb);
+            }
+        }, List.of(json));
         return 0;
     }
 

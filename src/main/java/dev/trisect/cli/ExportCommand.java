@@ -32,18 +32,24 @@ final class ExportCommand implements Callable<Integer> {
             return 0;
         }
         Outputs.checkObj("--to", to);
+        try (OutputBatch batch = new OutputBatch()) {
+            // The folder is made and checked before the scene is read; the MTL and textures go beside the OBJ.
+            Outputs.createParent("--to", to);
+            batch.reserve(to);
+            return export(batch);
+        }
+    }
+
+    private int export(OutputBatch batch) {
         SceneAsset scene = frame.loadScene(common::note);
         var camera = frame.camera(scene);
-        Outputs.createParent("--to", to);
         String cameraLine = String.format("camera: --eye %s --target %s --up %s --fov %s --near %s --far %s",
                 camera.eye(), camera.target(), camera.up(), camera.fovY(), camera.near(), camera.far());
-        try (OutputBatch batch = new OutputBatch()) {
-            List<Path> maps = new ArrayList<>();
-            // The camera is printed even when the files fail: it is what was computed.
-            Results.deliver(common.out(), batch, b -> maps.addAll(ObjWriter.write(b, to, scene.mesh(), scene.textures())),
-                    written -> written ? List.of(String.format("wrote %s (%d triangles, %d materials: %s)", to,
-                            scene.mesh().triangleCount(), maps.size(), maps), cameraLine) : List.of(cameraLine));
-        }
+        List<Path> maps = new ArrayList<>();
+        // The camera is printed even when the files fail: it is what was computed.
+        Results.deliver(common.out(), batch, b -> maps.addAll(ObjWriter.write(b, to, scene.mesh(), scene.textures())),
+                written -> written ? List.of(String.format("wrote %s (%d triangles, %d materials: %s)", to,
+                        scene.mesh().triangleCount(), maps.size(), maps), cameraLine) : List.of(cameraLine));
         return 0;
     }
 }

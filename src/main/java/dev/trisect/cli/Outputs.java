@@ -1,7 +1,7 @@
 package dev.trisect.cli;
 
 import dev.trisect.base.InputException;
-import java.io.IOException;
+import dev.trisect.io.OutputBatch;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
@@ -43,11 +43,9 @@ final class Outputs {
             return;
         }
         try {
-            Files.createDirectories(parent);
-        } catch (IOException e) {
-            throw new InputException(option + " " + file + ": cannot create the directory " + parent + ": "
-                    + (e instanceof java.nio.file.FileAlreadyExistsException ? "a file of that name is in the way"
-                            : e.getMessage()), e);
+            OutputBatch.createFolders(parent);
+        } catch (InputException e) {
+            throw new InputException(option + " " + file + ": " + e.getMessage(), e.getCause());
         }
     }
 

@@ -10,6 +10,7 @@ import dev.trisect.render.Framebuffer;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.scene.Camera;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.List;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -43,7 +44,12 @@ final class RenderCommand extends SceneCommand {
     }
 
     @Override
-    int run(SceneAsset scene, Camera camera) {
+    List<Path> outputs() {
+        return Arrays.asList(out, uvOut);
+    }
+
+    @Override
+    int run(SceneAsset scene, Camera camera, OutputBatch batch) {
         RenderSettings settings = path.settings(frame);
         Framebuffer fb = Frames.allocate(frame.size);
         fb.recordUv(uvOut != null);
@@ -53,14 +59,12 @@ final class RenderCommand extends SceneCommand {
                     settings, fb);
         }
         // The image and its UV output belong together: both are written, or neither is changed.
-        try (OutputBatch batch = new OutputBatch()) {
-            Results.deliver(common.out(), batch, b -> {
-                ImageFiles.write(b, out, fb.width(), fb.height(), fb.color());
-                if (uvOut != null) {
-                    Pfm.write(b, uvOut, fb.width(), fb.height(), fb.uv());
-                }
-            }, stats ? List.of(s.toJson()) : List.of());
-        }
+        Results.deliver(common.out(), batch, b -> {
+            ImageFiles.write(b, out, fb.width(), fb.height(), fb.color());
+            if (uvOut != null) {
+                Pfm.write(b, uvOut, fb.width(), fb.height(), fb.uv());
+            }
+        }, stats ? List.of(s.toJson()) : List.of());
         return 0;
     }
 }

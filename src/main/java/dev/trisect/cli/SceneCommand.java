@@ -2,6 +2,9 @@ package dev.trisect.cli;
 
 import dev.trisect.scene.Camera;
 import dev.trisect.content.SceneAsset;
+import dev.trisect.io.OutputBatch;
+import java.nio.file.Path;
+import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Mixin;
 
@@ -23,8 +26,13 @@ abstract class SceneCommand implements Callable<Integer> {
     void checkOutputs() {
     }
 
-    /** Does the work; returns the exit status. */
-    abstract int run(SceneAsset scene, Camera camera) throws Exception;
+    /** The files this run will write, reserved in its batch before any work (see {@link OutputBatch#reserve}). */
+    List<Path> outputs() {
+        return List.of();
+    }
+
+    /** Does the work, writing its files into {@code batch}; returns the exit status. */
+    abstract int run(SceneAsset scene, Camera camera, OutputBatch batch) throws Exception;
 
     @Override
     public final Integer call() throws Exception {
@@ -33,7 +41,15 @@ abstract class SceneCommand implements Callable<Integer> {
             return 0;
         }
         checkOutputs();
-        SceneAsset scene = frame.loadScene(common::note);
-        return run(scene, frame.camera(scene));
+        // Every output's folder and writability are checked here, before the scene is even read.
+        try (OutputBatch batch = new OutputBatch()) {
+            for (Path out : outputs()) {
+                if (out != null) {
+                    batch.reserve(out);
+                }
+            }
+            SceneAsset scene = frame.loadScene(common::note);
+            return run(scene, frame.camera(scene), batch);
+        }
     }
 }

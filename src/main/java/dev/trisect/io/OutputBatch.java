@@ -2,20 +2,25 @@ package dev.trisect.io;
 
 import dev.trisect.base.InputException;
 import java.io.BufferedOutputStream;
+import java.io.FilterOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
+import java.io.UncheckedIOException;
+import java.nio.channels.Channels;
+import java.nio.channels.FileChannel;
 import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.FileAlreadyExistsException;
+import java.nio.file.FileSystemException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.HashSet;
-import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.ThreadLocalRandom;
+import java.util.function.UnaryOperator;
 
 /**
  * The outputs of one command, written as one transaction: each file goes to a temporary file beside
@@ -26,8 +31,15 @@ import java.util.concurrent.ThreadLocalRandom;
  * every open batch. A commit and the hook exclude each other, so an interrupted command leaves either
  * all of its outputs renamed or none: an image and its UV output always belong together.
  *
- * <p>Usage: {@code try (OutputBatch batch = new OutputBatch()) { ImageFiles.write(batch, ...);
- * Pfm.write(batch, ...); batch.commit(); }}
+ * <p>Each output can be {@linkplain #reserve reserved} before the work that computes it: that creates its
+ * temporary file at once, so a missing folder or a folder that cannot be written is reported before
+ * a long render rather than after it. The target is the file a symbolic link points to (the link
+ * stays, as editors keep it), and a replaced file keeps its permissions. Temporary files are locked
+ * while in use, so that those a killed run left behind can be told apart and cleaned
+ * ({@link Temporaries}).
+ *
+ * <p>Usage: {@code try (OutputBatch batch = new OutputBatch()) { batch.reserve(out); ...work...;
+ * ImageFiles.write(batch, out, ...); Pfm.write(batch, ...); batch.commit(); }}
  */
 public final class OutputBatch implements AutoCloseable {
     /** Guards {@link #OPEN} and {@link #shuttingDown}; held through every commit and by the hook. */
@@ -35,13 +47,44 @@ public final class OutputBatch implements AutoCloseable {
     private static final Set<OutputBatch> OPEN = new HashSet<>();
     private static boolean shuttingDown;
 
+    /** Tests only: wraps each temporary file's stream, to inject a full disk at a chosen write. */
+    static volatile UnaryOperator<OutputStream> faults;
+
     static {
         Runtime.getRuntime().addShutdownHook(new Thread(OutputBatch::abandonAll, "trisect-output-cleanup"));
     }
 
-    /** Target and temporary file of each output, in the order written. */
-    private final List<Path[]> entries = new ArrayList<>();
-    private final Set<Path> targets = new LinkedHashSet<>();
+    /** A stream whose close leaves the channel under it open, and locked, until the commit. */
+    private static final class Unclosed extends FilterOutputStream {
+        Unclosed(OutputStream channel) {
+            super(channel);
+        }
+
+        @Override
+        public void write(byte[] b, int off, int len) throws IOException {
+            out.write(b, off, len);
+        }
+
+        @Override
+        public void close() throws IOException {
+            flush();
+        }
+    }
+
+    /** One output: its target (absolute, links followed) and its open, locked temporary file. */
+    private static final class Entry {
+        final Path target;
+        Path temporary;
+        FileChannel channel;
+        boolean written;
+
+        Entry(Path target) {
+            this.target = target;
+        }
+    }
+
+    private final List<Entry> entries = new ArrayList<>();
+    private final Set<Path> targets = new HashSet<>();
     private boolean done;
 
     /** Opens an empty batch. */
@@ -52,68 +95,165 @@ public final class OutputBatch implements AutoCloseable {
     }
 
     /**
-     * Writes {@code content} to a new temporary file beside {@code out}; nothing visible changes until
-     * {@link #commit}. On a failure the temporary file is deleted at once.
+     * Checks now that {@code out} can be written, by creating its temporary file, and keeps that file
+     * for the later write of {@code out}. Call it before the work: a missing or read-only folder then
+     * costs nothing.
+     *
+     * @throws InputException "{@code out}: cannot write: reason", or a usage error when the batch
+     *                        already holds {@code out}
+     */
+    public void reserve(Path out) {
+        open(out);
+    }
+
+    /**
+     * Writes {@code content} to {@code out}'s temporary file (the one {@link #reserve} made, or a new
+     * one); nothing visible changes until {@link #commit}. On a failure the temporary file is deleted.
      *
      * @throws InputException "{@code out}: cannot write: reason" when the file cannot be written, or a
      *                        usage error when the batch already holds {@code out}
      */
     void write(Path out, OutputFiles.Content content) {
-        if (done) {
-            throw new IllegalStateException("the batch is committed or closed");
+        Entry e = null;
+        synchronized (LOCK) {
+            checkOpen();
+            Path target = target(out);
+            for (Entry x : entries) {
+                if (x.target.equals(target) && !x.written) {
+                    e = x;
+                }
+            }
+        }
+        if (e == null) {
+            e = open(out);
+        }
+        boolean ok = false;
+        try {
+            FileChannel channel = e.channel;
+            channel.truncate(0);
+            channel.position(0);
+            OutputStream raw = new Unclosed(Channels.newOutputStream(channel));
+            UnaryOperator<OutputStream> inject = faults;
+            try (OutputStream stream = new BufferedOutputStream(inject == null ? raw : inject.apply(raw), 1 << 16)) {
+                content.writeTo(stream);
+            }
+            e.written = true;
+            ok = true;
+        } catch (IOException ex) {
+            throw OutputFiles.cannotWrite(out, OutputFiles.reason(ex, e.target.getParent()), ex);
+        } finally {
+            if (!ok) {
+                drop(e);
+            }
+        }
+    }
+
+    /** A new entry for {@code out} with its temporary file created, locked and registered. */
+    private Entry open(Path out) {
+        synchronized (LOCK) {
+            checkOpen();
         }
         if (Files.isDirectory(out)) {
             throw OutputFiles.cannotWrite(out, "it is a directory", null);
         }
-        Path target = out.toAbsolutePath().normalize();
-        if (!targets.add(target)) {
-            throw InputException.usage(out + ": named for two outputs of one command");
-        }
-        Path temporary = null;
-        boolean written = false;
+        Path target;
         try {
-            OutputStream raw = null;
-            // A name of our own with CREATE_NEW rather than Files.createTempFile, whose 0600 mode
-            // would stick to the final file; this one gets the usual permissions from the umask.
-            for (int attempt = 0; raw == null; attempt++) {
-                Path candidate = target.resolveSibling("." + target.getFileName() + "."
-                        + Long.toHexString(ThreadLocalRandom.current().nextLong() >>> 16) + ".tmp");
+            target = target(out);
+        } catch (UncheckedIOException ex) {
+            throw OutputFiles.cannotWrite(out, OutputFiles.reason(ex.getCause(), null), ex);
+        }
+        synchronized (LOCK) {
+            if (!targets.add(target)) {
+                throw InputException.usage(out + ": named for two outputs of one command");
+            }
+        }
+        Entry e = new Entry(target);
+        try {
+            Temporaries.cleanStale(target.getParent());
+            for (int attempt = 0; e.channel == null; attempt++) {
+                Path candidate = Temporaries.name(target);
                 try {
                     synchronized (LOCK) {
                         if (shuttingDown) {
                             throw new IOException("the program is being stopped");
                         }
-                        raw = Files.newOutputStream(candidate, StandardOpenOption.CREATE_NEW,
-                                StandardOpenOption.WRITE);
-                        temporary = candidate;
-                        entries.add(new Path[] {target, temporary});
+                        // A name of our own with CREATE_NEW rather than Files.createTempFile, whose 0600 mode
+                        // would stick to a new file; this one gets the usual permissions from the umask.
+                        e.channel = FileChannel.open(candidate, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
+                        e.temporary = candidate;
+                        entries.add(e);
                     }
                 } catch (FileAlreadyExistsException taken) {
                     if (attempt == 9) {
                         throw taken;
                     }
+                    continue;
+                }
+                lock(e.channel);
+                if (!Files.exists(candidate)) {
+                    // Another process's cleaning took it before the lock: start again with a new name.
+                    drop(e);
+                    synchronized (LOCK) {
+                        targets.add(target);
+                    }
+                    e = new Entry(target);
                 }
             }
-            try (OutputStream stream = new BufferedOutputStream(raw, 1 << 16)) {
-                content.writeTo(stream);
-            }
-            written = true;
-        } catch (IOException e) {
-            throw OutputFiles.cannotWrite(out, OutputFiles.reason(e, target.getParent()), e);
-        } finally {
-            if (!written) {
-                targets.remove(target);
-                if (temporary != null) {
-                    forget(temporary);
-                }
-            }
+            return e;
+        } catch (IOException ex) {
+            drop(e);
+            throw OutputFiles.cannotWrite(out, OutputFiles.reason(ex, target.getParent()), ex);
+        }
+    }
+
+    /** Marks the temporary file as in use for other processes' cleaning; best effort. */
+    private static void lock(FileChannel channel) {
+        try {
+            channel.tryLock();
+        } catch (IOException | RuntimeException ignored) {
+            // A file system without locks: the file is then never cleaned as stale by others either.
         }
     }
 
     /**
-     * Renames every temporary file over its target. Should a rename fail, the targets already replaced
-     * get their previous content back (kept as a hard link until the end), so the batch still changes
-     * all or nothing.
+     * Where writing {@code out} goes: its absolute path, with symbolic links followed to the file they
+     * name (which need not exist yet), so that replacing it keeps the link.
+     */
+    private static Path target(Path out) {
+        Path p = out.toAbsolutePath().normalize();
+        try {
+            for (int hops = 0; Files.isSymbolicLink(p); hops++) {
+                if (hops == 40) {
+                    throw new FileSystemException(out.toString(), null, "Too many levels of symbolic links");
+                }
+                p = p.resolveSibling(Files.readSymbolicLink(p)).normalize();
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+        return p;
+    }
+
+    private void checkOpen() {
+        if (done) {
+            throw new IllegalStateException("the batch is committed or closed");
+        }
+    }
+
+    /** Forgets an entry and deletes its temporary file. */
+    private void drop(Entry e) {
+        synchronized (LOCK) {
+            entries.remove(e);
+            targets.remove(e.target);
+            release(e);
+        }
+    }
+
+    /**
+     * Renames every written temporary file over its target (a reserved one never written is dropped),
+     * the target's permissions kept. Should a rename fail, the targets already replaced get their
+     * previous content back (kept as a hard link until the end), so the batch still changes all or
+     * nothing.
      *
      * @throws InputException "{@code out}: cannot write: reason" for the first output that failed
      */
@@ -126,13 +266,18 @@ public final class OutputBatch implements AutoCloseable {
             List<Path> placed = new ArrayList<>();
             Path failed = null;
             try {
-                for (Path[] e : entries) {
-                    failed = e[0];
-                    if (Files.exists(e[0])) {
-                        backups.add(new Path[] {e[0], backup(e[0])});
+                for (Entry e : entries) {
+                    if (!e.written) {
+                        continue;
                     }
-                    move(e[1], e[0]);
-                    placed.add(e[0]);
+                    failed = e.target;
+                    if (Files.exists(e.target)) {
+                        keepPermissions(e.target, e.temporary);
+                        backups.add(new Path[] {e.target, backup(e.target)});
+                    }
+                    move(e.temporary, e.target);
+                    e.temporary = null;
+                    placed.add(e.target);
                 }
             } catch (IOException ex) {
                 rollBack(placed, backups);
@@ -141,11 +286,7 @@ public final class OutputBatch implements AutoCloseable {
                 for (Path[] b : backups) {
                     deleteQuietly(b[1]);
                 }
-                for (Path[] e : entries) {
-                    deleteQuietly(e[1]);
-                }
-                entries.clear();
-                done = true;
+                releaseAll(this);
                 OPEN.remove(this);
             }
         }
@@ -155,19 +296,8 @@ public final class OutputBatch implements AutoCloseable {
     @Override
     public void close() {
         synchronized (LOCK) {
-            for (Path[] e : entries) {
-                deleteQuietly(e[1]);
-            }
-            entries.clear();
-            done = true;
+            releaseAll(this);
             OPEN.remove(this);
-        }
-    }
-
-    private void forget(Path temporary) {
-        synchronized (LOCK) {
-            deleteQuietly(temporary);
-            entries.removeIf(e -> e[1].equals(temporary));
         }
     }
 
@@ -176,13 +306,57 @@ public final class OutputBatch implements AutoCloseable {
         synchronized (LOCK) {
             shuttingDown = true;
             for (OutputBatch b : OPEN) {
-                for (Path[] e : b.entries) {
-                    deleteQuietly(e[1]);
-                }
-                b.entries.clear();
-                b.done = true;
+                releaseAll(b);
             }
             OPEN.clear();
+        }
+    }
+
+    private static void releaseAll(OutputBatch b) {
+        for (Entry e : b.entries) {
+            release(e);
+        }
+        b.entries.clear();
+        b.done = true;
+    }
+
+    /** Closes an entry's channel (dropping its lock) and deletes its temporary file, if still there. */
+    private static void release(Entry e) {
+        if (e.channel != null) {
+            try {
+                e.channel.close();
+            } catch (IOException ignored) {
+                // Closing a file we only wrote: nothing to lose.
+            }
+        }
+        deleteQuietly(e.temporary);
+        e.temporary = null;
+    }
+
+    /** Gives the new file the old one's permission bits (mode 600 stays 600); best effort. */
+    private static void keepPermissions(Path from, Path to) {
+        try {
+            Files.setPosixFilePermissions(to, Files.getPosixFilePermissions(from));
+        } catch (IOException | UnsupportedOperationException ignored) {
+            // Not a POSIX file system, or not ours to read: the umask's permissions stay.
+        }
+    }
+
+    /**
+     * Creates {@code folder} and any missing parents.
+     *
+     * @throws InputException "cannot create the directory D: reason", D the folder that could not be made
+     *                        and the reason in the operating system's words ("permission denied", "a file
+     *                        of that name is in the way")
+     */
+    public static void createFolders(Path folder) {
+        try {
+            Files.createDirectories(folder);
+        } catch (IOException e) {
+            Path failed = e instanceof FileSystemException fs && fs.getFile() != null ? Path.of(fs.getFile()) : folder;
+            String reason = e instanceof FileAlreadyExistsException ? "a file of that name is in the way"
+                    : OutputFiles.reason(e, null);
+            throw new InputException("cannot create the directory " + failed + ": " + reason, e);
         }
     }
 

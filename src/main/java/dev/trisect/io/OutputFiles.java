@@ -42,6 +42,10 @@ final class OutputFiles {
      * system's words where there are some, without the temporary file's name.
      */
     static String reason(IOException e, Path directory) {
+        // Encoders wrap the stream's failure ("I/O error writing PNG file!"): the cause has the reason.
+        while (e.getCause() instanceof IOException cause && cause != e) {
+            e = cause;
+        }
         if (e instanceof NoSuchFileException) {
             return directory != null && !Files.isDirectory(directory)
                     ? "no such directory " + directory : "no such file";

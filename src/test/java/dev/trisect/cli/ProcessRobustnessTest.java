@@ -62,6 +62,12 @@ class ProcessRobustnessTest {
         }
         assertTrue(Files.exists(dir.resolve("ready")), "the helper got to writing");
         assertTrue(listing().stream().anyMatch(n -> n.endsWith(".tmp")), "temporary files exist: " + listing());
+        // Another run writing into the same folder cleans stale temporaries, never one in use (it is locked).
+        List<String> held = listing().stream().filter(n -> n.endsWith(".tmp")).toList();
+        assertEquals(0, CliRun.of("render", "--scene", "floor", "--size", "8x6", "--out",
+                dir.resolve("other.png").toString()).status());
+        assertTrue(listing().containsAll(held), "the running program's temporary file is kept: " + listing());
+        Files.delete(dir.resolve("other.png"));
         p.destroy(); // SIGTERM
         assertTrue(p.waitFor(60, TimeUnit.SECONDS));
         assertEquals(List.of("big.ppm", "ready"), listing(), "no temporary file and no new output remain");

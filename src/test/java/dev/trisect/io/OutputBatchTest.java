@@ -2,12 +2,17 @@ package dev.trisect.io;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.base.InputException;
 import java.io.IOException;
+import java.nio.channels.FileChannel;
+import java.nio.channels.FileLock;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.nio.file.attribute.PosixFilePermissions;
 import java.util.List;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
@@ -66,5 +71,68 @@ class OutputBatchTest {
                     () -> batch.write(dir.resolve("sub/../x.png"), out -> out.write(2)));
             assertEquals(2, e.exitStatus());
         }
+    }
+
+    @Test
+    void aLinkIsWrittenThroughAndAReplacedFileKeepsItsPermissions() throws IOException {
+        Path real = dir.resolve("real.png");
+        Files.writeString(real, "old");
+        Files.setPosixFilePermissions(real, PosixFilePermissions.fromString("rw-------"));
+        Path link = Files.createSymbolicLink(dir.resolve("link.png"), Path.of("real.png"));
+        OutputFiles.writeAtomically(link, out -> out.write('N'));
+        assertTrue(Files.isSymbolicLink(link), "the link stays a link");
+        assertEquals("N", Files.readString(real), "the file it names has the new content");
+        assertEquals("rw-------", PosixFilePermissions.toString(Files.getPosixFilePermissions(real)));
+        assertEquals(List.of("link.png", "real.png"), listing());
+    }
+
+    @Test
+    void staleTemporariesOfOurPatternAreCleanedAndThoseInUseOrOfOtherNamesAreNot() throws IOException {
+        List<String> stale = List.of(".x.png.0123456789ab.tmp", ".y.PFM.fedcba987654.tmp", ".e.obj.00000000000a.tmp");
+        List<String> kept = List.of(".x.png.0123.tmp", ".notes.txt.0123456789ab.tmp", "x.png.0123456789ab.tmp",
+                ".x.png.0123456789ab.old");
+        for (String n : stale) {
+            Files.writeString(dir.resolve(n), "left by a killed run");
+        }
+        for (String n : kept) {
+            Files.writeString(dir.resolve(n), "not ours");
+        }
+        Path inUse = dir.resolve(".z.ppm.aaaaaaaaaaaa.tmp");
+        try (FileChannel held = FileChannel.open(inUse, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
+             FileLock lock = held.lock()) {
+            OutputFiles.writeAtomically(dir.resolve("new.png"), out -> out.write(1));
+        }
+        List<String> expected = new java.util.ArrayList<>(kept);
+        expected.addAll(List.of(inUse.getFileName().toString(), "new.png"));
+        assertEquals(expected.stream().sorted().toList(), listing());
+    }
+
+    @Test
+    void aMissingFolderIsReportedWhenTheOutputIsReservedBeforeTheWork() {
+        Path out = dir.resolve("no/x.png");
+        try (OutputBatch batch = new OutputBatch()) {
+            InputException e = assertThrows(InputException.class, () -> batch.reserve(out));
+            assertEquals(out + ": cannot write: no such directory " + dir.resolve("no"), e.getMessage());
+        }
+    }
+
+    @Test
+    void aReservedOutputIsWrittenIntoItsTemporaryAndAnUnwrittenOneIsDropped() throws IOException {
+        try (OutputBatch batch = new OutputBatch()) {
+            batch.reserve(dir.resolve("a.ppm"));
+            batch.reserve(dir.resolve("b.ppm"));
+            assertEquals(2, listing().size(), "two temporary files, made at once: " + listing());
+            batch.write(dir.resolve("a.ppm"), out -> out.write('A'));
+            batch.commit();
+        }
+        assertEquals(List.of("a.ppm"), listing());
+        assertEquals("A", Files.readString(dir.resolve("a.ppm")));
+    }
+
+    @Test
+    void aFolderThatCannotBeCreatedGivesItsReason() throws IOException {
+        Files.writeString(dir.resolve("file"), "");
+        InputException e = assertThrows(InputException.class, () -> OutputBatch.createFolders(dir.resolve("file/sub")));
+        assertEquals("cannot create the directory " + dir.resolve("file/sub") + ": Not a directory", e.getMessage());
     }
 }
