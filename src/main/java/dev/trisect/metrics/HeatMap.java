@@ -1,6 +1,6 @@
 package dev.trisect.metrics;
 
-import dev.trisect.texture.BitmapFont;
+import dev.trisect.texture.internal.BitmapFont;
 import java.util.ArrayList;
 import java.util.List;
 

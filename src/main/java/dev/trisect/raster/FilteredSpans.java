@@ -1,11 +1,11 @@
 package dev.trisect.raster;
 
 import dev.trisect.render.Framebuffer;
-import dev.trisect.texture.LaneSampler;
-import dev.trisect.texture.Lod;
+import dev.trisect.texture.internal.LaneSampler;
+import dev.trisect.texture.internal.Lod;
 import dev.trisect.texture.MipChain;
-import dev.trisect.texture.Sampler;
-import dev.trisect.texture.TexelLanes;
+import dev.trisect.texture.internal.Sampler;
+import dev.trisect.texture.internal.TexelLanes;
 import dev.trisect.texture.TextureFilter;
 
 /**
@@ -50,7 +50,7 @@ final class FilteredSpans {
         if (perspective || !setup.fixedPointSafe) {
             return trilinear || !mips.powerOfTwo()
                     ? perPixel(setup, spans, frame, mips, uvId, perspective, trilinear)
-                    : perPixelBilinear(setup, spans, frame, mips.lanes(), uvId, perspective);
+                    : perPixelBilinear(setup, spans, frame, TexelLanes.of(mips), uvId, perspective);
         }
         if (!trilinear) {
             return levelFixed(setup, spans, frame, mips, 0, 0, uvId);
@@ -102,7 +102,7 @@ final class FilteredSpans {
         double qDyLod = perspective ? qDy : 0;
         int maxLevel = mips.maxLevel();
         boolean pot = mips.powerOfTwo();
-        TexelLanes lanes = mips.lanes();
+        TexelLanes lanes = TexelLanes.of(mips);
         long[] lz = lanes.lanes();
         int[] lv = lanes.levels();
         int level = -1;
@@ -325,7 +325,7 @@ final class FilteredSpans {
         float[] depth = frame.depth();
         double[] uv = frame.uv();
         int level2 = weight == 0 ? level : level + 1;
-        TexelLanes lanes = mips.lanes();
+        TexelLanes lanes = TexelLanes.of(mips);
         long[] lz = lanes.lanes();
         int[] lv = lanes.levels();
         int o1 = level * TexelLanes.LEVEL_INTS;

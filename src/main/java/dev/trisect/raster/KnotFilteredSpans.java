@@ -1,11 +1,11 @@
 package dev.trisect.raster;
 
 import dev.trisect.render.Framebuffer;
-import dev.trisect.texture.LaneSampler;
-import dev.trisect.texture.Lod;
+import dev.trisect.texture.internal.LaneSampler;
+import dev.trisect.texture.internal.Lod;
 import dev.trisect.texture.MipChain;
-import dev.trisect.texture.Sampler;
-import dev.trisect.texture.TexelLanes;
+import dev.trisect.texture.internal.Sampler;
+import dev.trisect.texture.internal.TexelLanes;
 
 /**
  * The bilinear and trilinear pixel loop of the span path: the knots, the exact coordinates at them and
@@ -58,7 +58,7 @@ final class KnotFilteredSpans {
         double unbounded = KnotSpacing.unbounded(qDx, maxError);
         int maxLevel = mips.maxLevel();
         boolean pot = mips.powerOfTwo();
-        TexelLanes lanes = mips.lanes();
+        TexelLanes lanes = TexelLanes.of(mips);
         long[] lz = lanes.lanes();
         int[] lv = lanes.levels();
         // The levels of the current segment: its selection, and (power-of-two chains) both levels'

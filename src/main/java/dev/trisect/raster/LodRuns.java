@@ -1,7 +1,7 @@
 package dev.trisect.raster;
 
-import dev.trisect.texture.Lod;
-import dev.trisect.texture.Sampler;
+import dev.trisect.texture.internal.Lod;
+import dev.trisect.texture.internal.Sampler;
 
 /**
  * The level of detail of the per-pixel filtered loop ({@link FilteredSpans}) over runs of

@@ -1,5 +1,7 @@
 package dev.trisect.texture;
 
+import dev.trisect.texture.internal.TexelLanes;
+
 /**
  * The mipmap levels of a texture, built once when the texture is created: level 0 is the texture
  * itself (not copied), each further level is half the previous one in each direction (rounded down,
@@ -41,8 +43,13 @@ public final class MipChain {
     private final boolean powerOfTwo;
     /** Per level, for power-of-two chains: see {@link #shape}. */
     private final int[] shapes;
-    /** The levels in lanes for {@link LaneSampler}, built by the first {@link #lanes()} call. */
+    /** The levels in lanes for the filtered pixel loops, built on first use ({@link #lanes()}). */
     private volatile TexelLanes lanes;
+
+    static {
+        // The lanes are internal, so their cache is reached through TexelLanes.of, not a public method here.
+        TexelLanes.provideCache(MipChain::lanes);
+    }
 
     /** Builds all levels of {@code width x height} texels {@code argb} (row 0 at the top). */
     MipChain(int width, int height, int[] argb) {
@@ -134,18 +141,19 @@ public final class MipChain {
      * right shift taking a level-0 texel coordinate in fixed point to level d's ({@link #scaleS} is
      * 2 to minus that); bits 8–15 the same for heights; bits 16–23 {@code log2(width(d))}; bits 24–31
      * {@code log2(height(d))}. Zero for chains that are not power-of-two. (The pixel loops now read
-     * {@link TexelLanes#levels()} instead; this stays for {@link Sampler}'s reference samples.)
+     * the lanes' level descriptors instead; this stays for the reference samples.)
      */
     public int shape(int d) {
         return shapes[d];
     }
 
     /**
-     * The levels laid out for {@link LaneSampler}: texels widened to 16-bit lanes, padded with a wrapped
-     * column and row ({@link TexelLanes}). Built on the first call, from any thread, and kept; about 2.7
-     * times level 0's memory, which textures that are only sampled nearest never pay.
+     * The levels laid out for the filtered pixel loops: texels widened to 16-bit lanes, padded with a
+     * wrapped column and row. Built on the first call, from any thread, and kept; about 2.7 times level
+     * 0's memory, which textures that are only sampled nearest never pay. Internal code reaches it
+     * through {@code TexelLanes.of(chain)}.
      */
-    public TexelLanes lanes() {
+    private TexelLanes lanes() {
         TexelLanes l = lanes;
         if (l == null) {
             synchronized (this) {

@@ -1,5 +1,8 @@
 package dev.trisect.texture;
 
+import dev.trisect.texture.internal.BitmapFont;
+import dev.trisect.texture.internal.Pixels;
+
 /**
  * Textures made from code, for tests and demo scenes: no files, and deterministic (integer arithmetic,
  * {@link StrictMath} where a sine is needed), so the same call gives the same texels on every machine.

@@ -13,9 +13,9 @@ import java.util.Objects;
  * {@code floorMod(floor(s), width)}, the row from the bottom {@code floorMod(floor(t), height)}.
  * The rasterizer inlines the same arithmetic; {@link #texelIndex} is the reference for it.
  *
- * <p>Bilinear and trilinear sampling ({@link TextureFilter}) use {@link LaneSampler} on the levels of
- * {@link #mipChain()}, which is built here, once, when the texture is created, laid out in lanes
- * ({@link MipChain#lanes()}) on the first filtered use.
+ * <p>Bilinear and trilinear sampling ({@link TextureFilter}) read the levels of {@link #mipChain()},
+ * which is built here, once, when the texture is created, and laid out for the filtered pixel loops on
+ * their first use.
  */
 public final class Texture {
     /** Largest width or height accepted, in texels. */

@@ -3,12 +3,12 @@ package dev.trisect.bench;
 import dev.trisect.raster.Rasterizer;
 import dev.trisect.raster.ScreenTriangles;
 import dev.trisect.render.Framebuffer;
-import dev.trisect.texture.LaneSampler;
-import dev.trisect.texture.Lod;
+import dev.trisect.texture.internal.LaneSampler;
+import dev.trisect.texture.internal.Lod;
 import dev.trisect.texture.MipChain;
 import dev.trisect.texture.ProceduralTextures;
-import dev.trisect.texture.Sampler;
-import dev.trisect.texture.TexelLanes;
+import dev.trisect.texture.internal.Sampler;
+import dev.trisect.texture.internal.TexelLanes;
 import dev.trisect.texture.Texture;
 import dev.trisect.texture.TextureFilter;
 import java.util.concurrent.TimeUnit;
@@ -78,7 +78,7 @@ public class SampleCostBenchmark {
         Texture grid = ProceduralTextures.uvGrid(512);
         textures = new Texture[] {grid};
         mips = grid.mipChain();
-        lanes = mips.lanes();
+        lanes = TexelLanes.of(mips);
         // A floor 1 unit below a camera looking along it, focal length 1000 px, horizon 200 px above the
         // frame, 1024 texels a unit: over pixel centres 1/w = Q = (y + 200) / 1000, s/w = S = 1.024 (x - 960)
         // and t/w = T = 1024 (t = 1024 z), the planes the rasterizer interpolates.

@@ -5,11 +5,11 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import dev.trisect.texture.LaneSampler;
-import dev.trisect.texture.Lod;
+import dev.trisect.texture.internal.LaneSampler;
+import dev.trisect.texture.internal.Lod;
 import dev.trisect.texture.MipChain;
-import dev.trisect.texture.Sampler;
-import dev.trisect.texture.TexelLanes;
+import dev.trisect.texture.internal.Sampler;
+import dev.trisect.texture.internal.TexelLanes;
 import dev.trisect.texture.Texture;
 import dev.trisect.texture.TextureFilter;
 import java.util.Random;
@@ -130,7 +130,7 @@ class FilteredSpansTest {
                     k, k % 3);
             Framebuffer fb = fill(t, textures, TextureFilter.BILINEAR, true);
             Texture tex = textures[k % 3];
-            TexelLanes lanes = tex.mipChain().lanes();
+            TexelLanes lanes = TexelLanes.of(tex.mipChain());
             for (int i = 0; i < W * H; i++) {
                 if (fb.uv()[3 * i + 2] == 0) {
                     continue;
@@ -208,7 +208,7 @@ class FilteredSpansTest {
 
     /** The bilinear sample of level d at level-0 texel coordinates, by the general (floorMod) sampler. */
     private static long level(MipChain mips, int d, double s, double t) {
-        TexelLanes lanes = mips.lanes();
+        TexelLanes lanes = TexelLanes.of(mips);
         return LaneSampler.bilinear(lanes.lanes(), lanes.offset(d), lanes.stride(d), mips.width(d), mips.height(d),
                 Sampler.position(s * mips.scaleS(d)), Sampler.position(t * mips.scaleT(d)));
     }

@@ -5,9 +5,9 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.render.Framebuffer;
-import dev.trisect.texture.LaneSampler;
-import dev.trisect.texture.Lod;
-import dev.trisect.texture.TexelLanes;
+import dev.trisect.texture.internal.LaneSampler;
+import dev.trisect.texture.internal.Lod;
+import dev.trisect.texture.internal.TexelLanes;
 import dev.trisect.texture.Texture;
 import dev.trisect.texture.TextureFilter;
 import java.util.Random;
@@ -193,7 +193,7 @@ class KnotSpansTest {
     void trilinearTakesTheMeanOfTheKnotsLambdasPerSegment() {
         Random rnd = new Random(21);
         Texture texture = TEXTURES[0];
-        TexelLanes lanes = texture.mipChain().lanes();
+        TexelLanes lanes = TexelLanes.of(texture.mipChain());
         int maxLevel = texture.mipChain().maxLevel();
         long pixels = 0;
         for (int k = 0; k < 200; k++) {

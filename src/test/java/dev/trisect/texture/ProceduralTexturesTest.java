@@ -13,6 +13,8 @@ import java.util.zip.CRC32;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
+import dev.trisect.texture.internal.BitmapFont;
+import dev.trisect.texture.internal.Pixels;
 
 class ProceduralTexturesTest {
     /**

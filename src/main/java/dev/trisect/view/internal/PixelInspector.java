@@ -5,7 +5,7 @@ import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.PieceInfo;
 import dev.trisect.raster.RowKnots;
 import dev.trisect.render.Framebuffer;
-import dev.trisect.texture.Lod;
+import dev.trisect.texture.internal.Lod;
 import dev.trisect.texture.MipChain;
 import dev.trisect.texture.Texture;
 import dev.trisect.texture.TextureFilter;

@@ -1,4 +1,6 @@
-package dev.trisect.texture;
+package dev.trisect.texture.internal;
+
+import dev.trisect.texture.MipChain;
 
 /**
  * Bilinear and trilinear sampling on {@link TexelLanes}: the fast form of OpenGL's {@code GL_LINEAR}

@@ -1,7 +1,8 @@
-package dev.trisect.texture;
+package dev.trisect.texture.internal;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import dev.trisect.texture.Texture;
 import org.junit.jupiter.api.Test;
 
 /**

@@ -1,4 +1,7 @@
-package dev.trisect.texture;
+package dev.trisect.texture.internal;
+
+import dev.trisect.texture.MipChain;
+import java.util.function.Function;
 
 /**
  * The levels of a {@link MipChain} laid out for fast filtering ({@link LaneSampler}): every texel
@@ -57,7 +60,27 @@ public final class TexelLanes {
     private final int[] levels;
     private final boolean powerOfTwo;
 
-    TexelLanes(MipChain chain) {
+    /** How {@link #of} reaches a chain's kept lanes; set once, by {@link MipChain}'s class initialiser. */
+    private static volatile Function<MipChain, TexelLanes> cache;
+
+    /**
+     * Called once by {@link MipChain} with its private accessor of the lanes it keeps (built on first
+     * use), so the API class has no public method naming this internal one.
+     */
+    public static void provideCache(Function<MipChain, TexelLanes> accessor) {
+        if (cache != null) {
+            throw new IllegalStateException("the lanes' cache is provided once, by MipChain");
+        }
+        cache = accessor;
+    }
+
+    /** The lanes of {@code chain}: built on the first call, from any thread, and kept by the chain. */
+    public static TexelLanes of(MipChain chain) {
+        return cache.apply(chain);
+    }
+
+    /** Lays out {@code chain}'s levels; {@link MipChain} calls it once per chain (use {@link #of}). */
+    public TexelLanes(MipChain chain) {
         int count = chain.levels();
         levels = new int[count * LEVEL_INTS];
         long total = 0;

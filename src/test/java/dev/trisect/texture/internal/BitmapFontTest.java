@@ -1,4 +1,4 @@
-package dev.trisect.texture;
+package dev.trisect.texture.internal;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;

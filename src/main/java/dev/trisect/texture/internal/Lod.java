@@ -1,4 +1,6 @@
-package dev.trisect.texture;
+package dev.trisect.texture.internal;
+
+import dev.trisect.texture.TextureFilter;
 
 /**
  * Level of detail for {@link TextureFilter#TRILINEAR}, as OpenGL defines it (OpenGL 4.6 core spec,

@@ -1,4 +1,4 @@
-package dev.trisect.texture;
+package dev.trisect.texture.internal;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;

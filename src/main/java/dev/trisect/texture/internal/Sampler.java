@@ -1,4 +1,4 @@
-package dev.trisect.texture;
+package dev.trisect.texture.internal;
 
 /**
  * Bilinear and trilinear sampling with repeat on the int texels of a level, with exact 16-bit weights:

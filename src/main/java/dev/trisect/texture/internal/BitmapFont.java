@@ -1,4 +1,4 @@
-package dev.trisect.texture;
+package dev.trisect.texture.internal;
 
 /**
  * A tiny built-in bitmap font for labels: 5x7-pixel glyphs in a 6x8-pixel cell, drawn by integer

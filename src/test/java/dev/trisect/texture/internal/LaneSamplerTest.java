@@ -1,8 +1,10 @@
-package dev.trisect.texture;
+package dev.trisect.texture.internal;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import dev.trisect.texture.MipChain;
+import dev.trisect.texture.Texture;
 import java.util.Random;
 import org.junit.jupiter.api.Test;
 
@@ -145,7 +147,7 @@ class LaneSamplerTest {
         for (int[] size : sizes) {
             Texture tex = noise(size[0], size[1], size[0] * 31L + size[1]);
             MipChain chain = tex.mipChain();
-            TexelLanes lanes = chain.lanes();
+            TexelLanes lanes = TexelLanes.of(chain);
             assertEquals(chain.levels(), lanes.levelCount());
             for (int d = 0; d < chain.levels(); d++) {
                 int w = chain.width(d);
@@ -194,7 +196,7 @@ class LaneSamplerTest {
         // serves every level. 128x32: levels 128x32 .. 4x1, 2x1, 1x1 (shifts differ once t's side is 1).
         Texture tex = noise(128, 32, 4);
         MipChain chain = tex.mipChain();
-        TexelLanes lanes = chain.lanes();
+        TexelLanes lanes = TexelLanes.of(chain);
         Random rnd = new Random(8);
         for (int n = 0; n < 50_000; n++) {
             double s = (rnd.nextDouble() - 0.5) * 1000;
@@ -221,7 +223,7 @@ class LaneSamplerTest {
 
     @Test
     void aOneByOneLevelIsThatTexelEverywhere() {
-        TexelLanes lanes = Texture.solid("one", 0x7F123456).mipChain().lanes();
+        TexelLanes lanes = TexelLanes.of(Texture.solid("one", 0x7F123456).mipChain());
         for (long p : new long[] {0, 1, 255, 256, -1, -257, Long.MAX_VALUE, Long.MIN_VALUE}) {
             assertEquals(0xFF123456, TexelLanes.argb(LaneSampler.bilinearPowerOfTwo(lanes.lanes(), 0, 2, 0, 0, p, -p)));
             assertEquals(0xFF123456, TexelLanes.argb(LaneSampler.bilinear(lanes.lanes(), 0, 2, 1, 1, p, p / 3)));
@@ -236,7 +238,7 @@ class LaneSamplerTest {
         int c = 0xFFCC0000;
         int d = 0xFF0D0D0D;
         MipChain chain = new Texture("2x2", 2, 2, new int[] {a, b, c, d}).mipChain();
-        TexelLanes lanes = chain.lanes();
+        TexelLanes lanes = TexelLanes.of(chain);
         long[] l = lanes.lanes();
         int[] want = {c, d, c, a, b, a, c, d, c};
         for (int k = 0; k < 9; k++) {
@@ -246,6 +248,6 @@ class LaneSamplerTest {
         assertEquals(2, lanes.stride(1));
         assertEquals(9 + 4, l.length);
         assertEquals(1, lanes.levels()[TexelLanes.LEVEL_INTS + TexelLanes.SHIFT_S]);
-        assertTrue(chain.lanes() == lanes, "built once");
+        assertTrue(TexelLanes.of(chain) == lanes, "built once");
     }
 }
