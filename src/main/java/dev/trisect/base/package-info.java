@@ -1,7 +1,7 @@
 /**
  * <b>API.</b> The lowest layer: what every other package may use. The user-facing input error
- * ({@link dev.trisect.base.InputException}: one line naming the file, the line and the problem) and,
- * for the command line's output, the JSON object every printed JSON line is built with (internal in
- * all but its package; due to move to an internal package).
+ * ({@link dev.trisect.base.InputException}: one line naming the file, the line and the problem). The
+ * JSON lines the command line prints are built in the internal package
+ * {@code dev.trisect.base.internal}.
  */
 package dev.trisect.base;

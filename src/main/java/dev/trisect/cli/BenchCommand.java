@@ -1,7 +1,7 @@
 package dev.trisect.cli;
 
 import dev.trisect.base.InputException;
-import dev.trisect.base.JsonObject;
+import dev.trisect.base.internal.JsonObject;
 import dev.trisect.content.SceneAsset;
 import dev.trisect.io.ObjWriter;
 import dev.trisect.io.OutputBatch;

@@ -1,6 +1,6 @@
 package dev.trisect.cli;
 
-import dev.trisect.base.JsonObject;
+import dev.trisect.base.internal.JsonObject;
 import dev.trisect.perf.BudgetRun;
 import dev.trisect.perf.FrameTimes;
 import java.util.ArrayList;

@@ -1,6 +1,6 @@
 package dev.trisect.metrics;
 
-import dev.trisect.base.JsonObject;
+import dev.trisect.base.internal.JsonObject;
 
 /**
  * How far a test render is from a reference render of the same scene and size, as measured by

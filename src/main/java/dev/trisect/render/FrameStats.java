@@ -1,6 +1,6 @@
 package dev.trisect.render;
 
-import dev.trisect.base.JsonObject;
+import dev.trisect.base.internal.JsonObject;
 
 /**
  * What one frame did. Times are wall-clock nanoseconds. The transform and the whole frame are

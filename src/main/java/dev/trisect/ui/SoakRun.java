@@ -1,6 +1,6 @@
 package dev.trisect.ui;
 
-import dev.trisect.base.JsonObject;
+import dev.trisect.base.internal.JsonObject;
 import dev.trisect.render.RenderMode;
 import dev.trisect.render.SplitPolicy;
 import dev.trisect.view.FrameInfo;

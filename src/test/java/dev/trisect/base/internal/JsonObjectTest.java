@@ -1,4 +1,4 @@
-package dev.trisect.base;
+package dev.trisect.base.internal;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;

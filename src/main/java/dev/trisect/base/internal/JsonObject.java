@@ -1,4 +1,4 @@
-package dev.trisect.base;
+package dev.trisect.base.internal;
 
 import com.fasterxml.jackson.jr.ob.JSON;
 import java.io.IOException;
