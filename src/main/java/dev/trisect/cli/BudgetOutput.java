@@ -1,6 +1,7 @@
 package dev.trisect.cli;
 
 import dev.trisect.base.internal.JsonObject;
+import dev.trisect.perf.BudgetController;
 import dev.trisect.perf.BudgetRun;
 import dev.trisect.perf.FrameTimes;
 import java.util.ArrayList;
@@ -24,6 +25,11 @@ final class BudgetOutput {
         this.threads = threads;
     }
 
+    /** What held the controller, as the table and JSON name it: target, ceiling, floor or pieces. */
+    static String heldBy(BudgetController.Limit l) {
+        return l == BudgetController.Limit.PIECE_BUDGET ? "pieces" : l.name().toLowerCase(Locale.ROOT);
+    }
+
     List<String> lines(BudgetRun.Trace t, boolean json) {
         List<String> lines = new ArrayList<>();
         String policy = t.policy().name().toLowerCase(Locale.ROOT);
@@ -31,16 +37,16 @@ final class BudgetOutput {
         if (!json) {
             lines.add(String.format(Locale.ROOT, "scene %s, %s, %d threads, target %.3f ms, %s policy, ceiling %s px",
                     scene, size, threads, t.targetMs(), policy, t.ceiling()));
-            lines.add(String.format(Locale.ROOT, "%6s %12s %10s %10s %6s", "frame", "threshold", "ms", "pieces",
-                    "over"));
+            lines.add(String.format(Locale.ROOT, "%6s %12s %10s %10s %6s %8s", "frame", "threshold", "ms", "pieces",
+                    "over", "held_by"));
         }
         for (int i = 0; i < n; i++) {
             lines.add(json
                     ? new JsonObject().put("frame", i).put("threshold", t.thresholds()[i], 4)
                     .put("ms", t.ms()[i], 3).put("pieces", t.pieces()[i]).put("budget_reached", t.overBudget()[i])
-                    .toString()
-                    : String.format(Locale.ROOT, "%6d %12.4f %10.3f %10d %6s", i, t.thresholds()[i], t.ms()[i],
-                    t.pieces()[i], t.overBudget()[i] ? "over" : ""));
+                    .put("held_by", heldBy(t.heldBy()[i])).toString()
+                    : String.format(Locale.ROOT, "%6d %12.4f %10.3f %10d %6s %8s", i, t.thresholds()[i], t.ms()[i],
+                    t.pieces()[i], t.overBudget()[i] ? "over" : "-", heldBy(t.heldBy()[i])));
         }
         int half = n / 2;
         FrameTimes late = FrameTimes.of(Arrays.copyOfRange(t.ms(), half, n));

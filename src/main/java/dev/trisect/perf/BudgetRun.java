@@ -27,9 +27,10 @@ public final class BudgetRun {
      * @param pieces     each frame's pieces (filled and dropped off screen: what the piece budget counts)
      * @param overBudget whether each frame went over its piece budget (and was redone with a lower depth cap)
      * @param pieceBudget the frames' piece budget
+     * @param heldBy     what held the controller where it chose each frame's threshold
      */
     public record Trace(SplitPolicy policy, double targetMs, double ceiling, double[] thresholds, double[] ms,
-                        long[] pieces, boolean[] overBudget, long pieceBudget) {
+                        long[] pieces, boolean[] overBudget, long pieceBudget, BudgetController.Limit[] heldBy) {
         /** Frames that went over their piece budget. */
         public int framesOverBudget() {
             int n = 0;
@@ -80,6 +81,7 @@ public final class BudgetRun {
         double[] ms = new double[frames];
         long[] pieces = new long[frames];
         boolean[] over = new boolean[frames];
+        BudgetController.Limit[] heldBy = new BudgetController.Limit[frames];
         long pieceBudget = 0;
         for (int i = 0; i < frames; i++) {
             double threshold = controller.threshold();
@@ -89,13 +91,14 @@ public final class BudgetRun {
             FrameStats stats = renderer.render(scene.mesh(), textures, c.viewProjection(viewport), s, frame);
             ms[i] = (System.nanoTime() - t0) / 1e6;
             thresholds[i] = threshold;
+            heldBy[i] = controller.limit();
             pieces[i] = stats.pieces() + stats.piecesOffScreen();
             over[i] = stats.budgetReached();
             pieceBudget = stats.pieceBudget();
             controller.update(ms[i], pieces[i], pieceBudget, over[i]);
             progress.frameDone(warmup + i + 1, warmup + frames);
         }
-        return new Trace(t.policy(), targetMs, ceiling, thresholds, ms, pieces, over, pieceBudget);
+        return new Trace(t.policy(), targetMs, ceiling, thresholds, ms, pieces, over, pieceBudget, heldBy);
     }
 
     /** The camera with its eye turned by {@code angle} radians about the vertical through its target. */
