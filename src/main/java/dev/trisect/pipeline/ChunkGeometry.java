@@ -85,6 +85,8 @@ final class ChunkGeometry {
         PieceBudget budget = in.budget();
         tess.configure(in.viewport(), in.settings().tessellation());
         tess.budget(budget);
+        // Only the border overlay reads the pieces' links so far: spare their bookkeeping without it.
+        tess.links(in.settings().borders());
         tess.resetStatistics();
         w.clipper.guardBand(in.guardX(), in.guardY());
         w.sink.target(chunk.out);

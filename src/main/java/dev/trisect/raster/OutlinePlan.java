@@ -68,6 +68,8 @@ public final class OutlinePlan {
     /** The edges of each band, in drawing order. */
     final BandBins bins = new BandBins();
     private int[] table = new int[0];
+    /** Slots of {@link #table} in use this frame: a power of two. */
+    private int slots;
     private final Plane depth = new Plane();
 
     /**
@@ -83,7 +85,8 @@ public final class OutlinePlan {
         int n = triangles.count();
         ensureTriangles(n);
         setUp(triangles, style, maxLevel, maxError, n, height);
-        matchEdges(triangles.fixed(), n);
+        ensureTable(outerEdges(triangles.links(), n));
+        matchEdges(triangles.fixed(), triangles.links(), n);
         edges(triangles.fixed(), n, height, bandRows);
         bins.build(edgeCount, BandBins.bandCount(height, bandRows));
     }
@@ -131,16 +134,29 @@ public final class OutlinePlan {
                 sc[s + 5] - sc[s + 3]) + Math.hypot(sc[s] - sc[s + 4], sc[s + 1] - sc[s + 5]);
     }
 
-    /** Pairs up the edges of outlined triangles that have the same two snapped corners. */
-    private void matchEdges(int[] f, int n) {
-        int mask = table.length - 1;
-        Arrays.fill(table, EMPTY);
+    /**
+     * Pairs up the edges of outlined triangles that have the same two snapped corners: inside an
+     * input triangle as its {@link ScreenTriangles#links() links} say, and on the input triangles'
+     * boundaries by comparing corners (through a hash of the edges), since the tessellator sees one
+     * input triangle at a time.
+     */
+    private void matchEdges(int[] f, int[] links, int n) {
+        int mask = slots - 1;
+        Arrays.fill(table, 0, slots, EMPTY);
         for (int tri = 0; tri < n; tri++) {
             int o = tri * ScreenTriangles.FIXED_STRIDE;
             for (int e = 0; e < 3; e++) {
                 int edge = 3 * tri + e;
                 partner[edge] = ALONE;
                 if (colours[tri] == 0) {
+                    continue;
+                }
+                int link = links[edge];
+                if (link != ScreenTriangles.OUTER) {
+                    if (link >= 0 && colours[link / 3] != 0) {
+                        partner[edge] = link / 3;
+                        partner[link] = WALKED_LATER;
+                    }
                     continue;
                 }
                 int a = o + 2 * e;
@@ -281,6 +297,11 @@ public final class OutlinePlan {
         edgeCount = count;
     }
 
+    /** The number of edges to walk (for tests). */
+    int edgeCount() {
+        return edgeCount;
+    }
+
     /**
      * The lowest pixel row (or column) a line pixel can fall on for an edge whose lower end lies at
      * {@code low} sub-pixel units: that end's, or the one before when the end lies on a pixel
@@ -301,8 +322,25 @@ public final class OutlinePlan {
             alphas = new double[size];
             partner = new int[3 * size];
         }
-        // Open addressing at a load of at most 1/2 over the 3 n edges.
-        int slots = Integer.highestOneBit(Math.max(16, 6 * n - 1)) << 1;
+    }
+
+    /** The edges of outlined triangles among the first {@code n} that lie on their input triangle's boundary. */
+    private int outerEdges(int[] links, int n) {
+        int outer = 0;
+        for (int tri = 0; tri < n; tri++) {
+            if (colours[tri] != 0) {
+                int l = 3 * tri;
+                outer += (links[l] == ScreenTriangles.OUTER ? 1 : 0) + (links[l + 1] == ScreenTriangles.OUTER ? 1 : 0)
+                        + (links[l + 2] == ScreenTriangles.OUTER ? 1 : 0);
+            }
+        }
+        return outer;
+    }
+
+    /** Makes the hash table room for {@code edges} edges; gives storage back when it has become far larger than needed. */
+    private void ensureTable(int edges) {
+        // Open addressing at a load of at most 1/2.
+        slots = Integer.highestOneBit(Math.max(16, 2 * edges - 1)) << 1;
         if (table.length < slots || table.length > 8 * slots && table.length > 4 * TRIM_FLOOR) {
             table = new int[slots];
         }

@@ -1,5 +1,6 @@
 package dev.trisect.raster;
 
+import dev.trisect.tessellate.PieceSink;
 import java.util.Arrays;
 
 /**
@@ -19,6 +20,14 @@ public final class ScreenTriangles {
     public static final int SCREEN_STRIDE = 6;
     /** Doubles per triangle in {@link #attributes()}: q0, s0, t0, q1, s1, t1, q2, s2, t2. */
     public static final int ATTRIBUTE_STRIDE = 9;
+    /**
+     * {@link #links()} of an edge on its input triangle's own boundary (every edge of a triangle not
+     * split): it may have the same corners as an edge of another triangle, which only comparing
+     * positions finds.
+     */
+    public static final int OUTER = -1;
+    /** {@link #links()} of an edge inside its input triangle that no earlier piece shares. */
+    public static final int INNER = -2;
 
     private int count;
     private int[] fixed = new int[FIXED_STRIDE * 1024];
@@ -28,6 +37,7 @@ public final class ScreenTriangles {
     private int[] materials = new int[1024];
     private boolean[] perPixel = new boolean[1024];
     private byte[] levels = new byte[1024];
+    private int[] links = new int[3 * 1024];
 
     /** Number of triangles. */
     public int count() {
@@ -60,6 +70,7 @@ public final class ScreenTriangles {
         materials = Arrays.copyOf(materials, n);
         perPixel = Arrays.copyOf(perPixel, n);
         levels = Arrays.copyOf(levels, n);
+        links = Arrays.copyOf(links, 3 * n);
     }
 
     /** Snapped corners, sub-pixel units. Read-only outside this package. */
@@ -103,6 +114,29 @@ public final class ScreenTriangles {
         return levels;
     }
 
+    /**
+     * Per triangle edge (edge e of triangle i at {@code 3 * i + e}, from corner e to corner e + 1
+     * mod 3): {@code 3 * j + f} when it is edge f of an earlier triangle j, a piece of the same input
+     * triangle with the same two corners, as the tessellator made them ({@link PieceSink}); {@link
+     * #OUTER} or {@link #INNER} otherwise.
+     */
+    public int[] links() {
+        return links;
+    }
+
+    /**
+     * The link of an edge of triangle {@code index} (about to be appended) from the link a {@link PieceSink}
+     * was handed for it: the earlier piece's edge counted back from
+     * this one becomes that piece's edge in these triangles (the pieces of one input triangle are
+     * appended one after another).
+     */
+    public static int link(int pieceLink, int index) {
+        if (pieceLink < 0) {
+            return pieceLink == PieceSink.OUTER ? OUTER : INNER;
+        }
+        return 3 * (index - pieceLink / 3) + pieceLink % 3;
+    }
+
     /** Appends an unsplit triangle that follows the frame's path (not a per-pixel fallback); see the full form. */
     public void add(double x0, double y0, double q0, double s0, double t0,
                     double x1, double y1, double q1, double s1, double t1,
@@ -119,6 +153,15 @@ public final class ScreenTriangles {
         add(x0, y0, q0, s0, t0, x1, y1, q1, s1, t1, x2, y2, q2, s2, t2, id, material, fallback, 0);
     }
 
+    /** Appends a triangle whose edges are all {@link #OUTER}; see the full form. */
+    public void add(double x0, double y0, double q0, double s0, double t0,
+                    double x1, double y1, double q1, double s1, double t1,
+                    double x2, double y2, double q2, double s2, double t2,
+                    int id, int material, boolean fallback, int level) {
+        add(x0, y0, q0, s0, t0, x1, y1, q1, s1, t1, x2, y2, q2, s2, t2, id, material, fallback, level,
+                OUTER, OUTER, OUTER);
+    }
+
     /**
      * Appends a triangle.
      *
@@ -128,11 +171,12 @@ public final class ScreenTriangles {
      * @param t0 texel t of corner 0
      * @param fallback fill this triangle per pixel (perspective-correct) whatever the frame's path
      * @param level    its split level (see {@link #levels()}), stored clamped to 0..127
+     * @param link0    the link of edge 0 (see {@link #links()}): an earlier triangle's edge, OUTER or INNER
      */
     public void add(double x0, double y0, double q0, double s0, double t0,
                     double x1, double y1, double q1, double s1, double t1,
                     double x2, double y2, double q2, double s2, double t2,
-                    int id, int material, boolean fallback, int level) {
+                    int id, int material, boolean fallback, int level, int link0, int link1, int link2) {
         if (count == ids.length) {
             grow();
         }
@@ -164,6 +208,10 @@ public final class ScreenTriangles {
         materials[count] = material;
         perPixel[count] = fallback;
         levels[count] = (byte) Math.max(0, Math.min(127, level));
+        int l = 3 * count;
+        links[l] = link0;
+        links[l + 1] = link1;
+        links[l + 2] = link2;
         count++;
     }
 
@@ -176,6 +224,7 @@ public final class ScreenTriangles {
         materials = Arrays.copyOf(materials, n);
         perPixel = Arrays.copyOf(perPixel, n);
         levels = Arrays.copyOf(levels, n);
+        links = Arrays.copyOf(links, 3 * n);
     }
 
     /** Smallest pixel row whose centre the triangle can cover (may be below 0). */

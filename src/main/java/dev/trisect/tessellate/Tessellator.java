@@ -33,18 +33,31 @@ import java.util.Arrays;
  * corners, same coverage, so no new crack, and no pixel of it is displaced more than the per-pixel
  * path's rounding.
  *
+ * <p>Each piece is handed on with its edges' links ({@link PieceSink}): which inner edges it shares
+ * with a piece handed on before it, from the splits that made them ({@link PieceEdges}), so that no
+ * later stage has to find shared edges by their positions.
+ *
  * <p>The recursion runs on an explicit stack in primitive arrays, so no input can overflow the Java
  * stack, and nothing is allocated per triangle once the scratch arrays have grown to their working
  * size. One instance per thread.
  */
 public final class Tessellator {
-    /** Ints per stacked piece: three vertex offsets and the levels of edges v0-v1, v1-v2, v2-v0. */
-    private static final int PIECE = 6;
+    /**
+     * Ints per stacked piece: three vertex offsets, the levels of edges v0-v1, v1-v2, v2-v0, and those
+     * edges' numbers in {@link #edges}.
+     */
+    private static final int PIECE = 9;
 
     /** Vertices in {@link VertexLayout}, {@link VertexLayout#PROJECTED_STRIDE} doubles each. */
     private double[] vertices = new double[PROJECTED_STRIDE * 256];
     private int vertexCount;
     private int[] stack = new int[PIECE * 64];
+    /** The edges of the current input triangle's pieces, for the links handed on with each piece. */
+    private final PieceEdges edges = new PieceEdges();
+    /** The links handed on with a piece (scratch). */
+    private final int[] links = new int[3];
+    /** Whether pieces are handed on with their links (else every link is {@link PieceSink#OUTER}). */
+    private boolean linking = true;
 
     private Viewport viewport = new Viewport(1, 1);
     private TessellationSettings settings = TessellationSettings.defaults();
@@ -82,6 +95,15 @@ public final class Tessellator {
      */
     public void budget(PieceBudget frameBudget) {
         this.budget = frameBudget;
+    }
+
+    /**
+     * Whether the pieces that follow are handed on with the links of their inner edges (the default),
+     * or with every link {@link PieceSink#OUTER}, which spares the bookkeeping when nothing reads them.
+     * The pieces are the same either way.
+     */
+    public void links(boolean on) {
+        this.linking = on;
     }
 
     /** Clears the counters. */
@@ -143,9 +165,13 @@ public final class Tessellator {
         int a = load(input, i0);
         int b = load(input, i1);
         int c = load(input, i2);
+        int[] link = links;
+        link[0] = PieceSink.OUTER;
+        link[1] = PieceSink.OUTER;
+        link[2] = PieceSink.OUTER;
         if (!split) {
             pieces++;
-            sink.piece(vertices, a, b, c, 0, false);
+            sink.piece(vertices, a, b, c, 0, false, link);
             return;
         }
         long allowance = Long.MAX_VALUE;
@@ -155,7 +181,12 @@ public final class Tessellator {
             }
             allowance = budget.allowance();
         }
-        int top = push(0, a, b, c, 0, 0, 0);
+        PieceEdges pe = edges;
+        pe.clear();
+        boolean tracking = linking;
+        int outer = PieceEdges.OUTER;
+        int top = push(0, a, b, c, 0, 0, 0, outer, outer, outer);
+        int handedOn = 0;
         int maxSplits = settings.maxPieces() - 1;
         int maxLevel = settings.maxDepth();
         int splitsHere = 0;
@@ -169,6 +200,9 @@ public final class Tessellator {
             int l0 = st[p + 3];
             int l1 = st[p + 4];
             int l2 = st[p + 5];
+            int e0 = st[p + 6];
+            int e1 = st[p + 7];
+            int e2 = st[p + 8];
             if (offScreen(v0, v1, v2)) {
                 // Nothing of it can be seen, so it is neither split nor filled. Its edges lie off
                 // screen too, so a neighbour that does split a shared edge cannot open a visible crack.
@@ -228,7 +262,13 @@ public final class Tessellator {
                 if (perPixel) {
                     fallbackPieces++;
                 }
-                sink.piece(vertices, v0, v1, v2, level, perPixel);
+                if (tracking) {
+                    link[0] = pe.link(e0, handedOn, 0);
+                    link[1] = pe.link(e1, handedOn, 1);
+                    link[2] = pe.link(e2, handedOn, 2);
+                    handedOn++;
+                }
+                sink.piece(vertices, v0, v1, v2, level, perPixel, link);
                 continue;
             }
             if (splitsHere + 2L > allowance) {
@@ -239,25 +279,35 @@ public final class Tessellator {
             splitsHere++;
             splits++;
             // Rotate so that the split edge runs p -> q with r opposite, keeping the winding.
-            int vp;
-            int vq;
-            int vr;
-            int lpq;
-            int lqr;
-            int lrp;
-            if (edge == 0) {
-                vp = v0; vq = v1; vr = v2; lpq = l0; lqr = l1; lrp = l2;
-            } else if (edge == 1) {
-                vp = v1; vq = v2; vr = v0; lpq = l1; lqr = l2; lrp = l0;
-            } else {
-                vp = v2; vq = v0; vr = v1; lpq = l2; lqr = l0; lrp = l1;
+            int vp = v0, vq = v1, vr = v2, lpq = l0, lqr = l1, lrp = l2, epq = e0, eqr = e1, erp = e2;
+            if (edge == 1) {
+                vp = v1; vq = v2; vr = v0; lpq = l1; lqr = l2; lrp = l0; epq = e1; eqr = e2; erp = e0;
+            } else if (edge == 2) {
+                vp = v2; vq = v0; vr = v1; lpq = l2; lqr = l0; lrp = l1; epq = e2; eqr = e0; erp = e1;
             }
-            int m = cut(vp, vq);
+            // The piece on the edge's other side may have cut it already: the same point (the cut is
+            // symmetric in p and q bit for bit), so take that vertex and its halves.
+            int m;
+            int halfP = PieceEdges.OUTER;
+            int halfQ = PieceEdges.OUTER;
+            if (epq == PieceEdges.OUTER) {
+                // On the input triangle's boundary, or links are off: nothing to take or record.
+                m = cut(vp, vq);
+            } else {
+                m = pe.cut(epq);
+                if (m < 0) {
+                    m = cut(vp, vq);
+                    pe.split(epq, m);
+                }
+                halfP = pe.halfAt(epq, vp);
+                halfQ = pe.halfAt(epq, vq);
+            }
+            int inner = tracking ? pe.add(m) : PieceEdges.OUTER;
             int half = lpq + 1;
             // The new inner edge m-r also gets level lpq + 1: every split then lowers the sum of
             // 2^(maxLevel - level) over a piece's edges, so splitting ends even without the piece cap.
-            top = push(top, m, vq, vr, half, lqr, half);
-            top = push(top, vp, m, vr, half, half, lrp);
+            top = push(top, m, vq, vr, half, lqr, half, halfQ, eqr, inner);
+            top = push(top, vp, m, vr, half, half, lrp, halfP, inner, erp);
         }
         if (capped) {
             capsReached++;
@@ -387,7 +437,7 @@ public final class Tessellator {
         return o;
     }
 
-    private int push(int top, int v0, int v1, int v2, int l0, int l1, int l2) {
+    private int push(int top, int v0, int v1, int v2, int l0, int l1, int l2, int e0, int e1, int e2) {
         int p = top * PIECE;
         if (p + PIECE > stack.length) {
             stack = Arrays.copyOf(stack, stack.length * 2);
@@ -399,6 +449,9 @@ public final class Tessellator {
         st[p + 3] = l0;
         st[p + 4] = l1;
         st[p + 5] = l2;
+        st[p + 6] = e0;
+        st[p + 7] = e1;
+        st[p + 8] = e2;
         return top + 1;
     }
 }

@@ -14,8 +14,12 @@ final class Pieces implements PieceSink {
     /** The split level handed on with each piece. */
     final List<Integer> levels = new ArrayList<>();
 
+    /** The links handed on with each piece, copied. */
+    final List<int[]> links = new ArrayList<>();
+
     @Override
-    public void piece(double[] v, int a, int b, int c, int level, boolean perPixel) {
+    public void piece(double[] v, int a, int b, int c, int level, boolean perPixel, int[] edgeLinks) {
+        links.add(edgeLinks.clone());
         fallback.add(perPixel);
         levels.add(level);
         double[] p = new double[3 * STRIDE];
