@@ -6,6 +6,7 @@ import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
 import java.awt.Graphics2D;
+import java.awt.Rectangle;
 import java.awt.RenderingHints;
 import java.util.ArrayList;
 import java.util.List;
@@ -16,6 +17,11 @@ public final class InspectorPainter {
     /** Frame pixels across the magnifier, and its size on screen. */
     static final int MAGNIFIED = 15;
     static final int MAGNIFIER_SIZE = 165;
+    /** View pixels between the panel and the view's edge, and between the magnifier and the numbers. */
+    static final int MARGIN = 12;
+    private static final int GAP = 8;
+    /** How far the crosshair's arms reach from the pixel's centre, plus their dark edge. */
+    static final int REACH = 26;
 
     private InspectorPainter() {
     }
@@ -97,15 +103,41 @@ public final class InspectorPainter {
             g.setColor(pass == 0 ? new Color(0, 0, 0, 160) : Color.WHITE);
             g.setStroke(new BasicStroke(pass == 0 ? 3 : 1));
             int gap = 6;
-            g.drawLine(px - 24, py, px - gap, py);
-            g.drawLine(px + gap, py, px + 24, py);
-            g.drawLine(px, py - 24, px, py - gap);
-            g.drawLine(px, py + gap, px, py + 24);
+            int arm = REACH - 2;
+            g.drawLine(px - arm, py, px - gap, py);
+            g.drawLine(px + gap, py, px + arm, py);
+            g.drawLine(px, py - arm, px, py - gap);
+            g.drawLine(px, py + gap, px, py + arm);
         }
         paintKnots(g, in, sx, py);
-        // Magnifier, top right: the frame's own pixels around the inspected one, nearest-neighbour.
-        int mx = viewW - MAGNIFIER_SIZE - 12;
-        int my = 12;
+        List<String> lines = lines(in, pinned);
+        g.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
+        int lineH = g.getFontMetrics().getHeight();
+        int textW = 0;
+        for (String s : lines) {
+            textW = Math.max(textW, g.getFontMetrics().stringWidth(s));
+        }
+        int magnifier = MAGNIFIED * (MAGNIFIER_SIZE / MAGNIFIED);
+        Rectangle panel = place(Math.max(magnifier + 2, textW + 12), magnifier + 2 + GAP + lines.size() * lineH + 8,
+                px, py, viewW, viewH);
+        // The magnifier on the panel's outer side, the numbers under it.
+        boolean right = panel.x + panel.width / 2 > viewW / 2;
+        int mx = right ? panel.x + panel.width - magnifier - 1 : panel.x + 1;
+        paintMagnifier(g, f, in, mx, panel.y + 1);
+        int by = panel.y + magnifier + 2 + GAP;
+        g.setColor(new Color(0, 0, 0, 170));
+        g.fillRect(panel.x, by, panel.width, lines.size() * lineH + 8);
+        g.setColor(Color.WHITE);
+        for (int k = 0; k < lines.size(); k++) {
+            g.drawString(lines.get(k), panel.x + 6, by + 4 + (k + 1) * lineH - 3);
+        }
+    }
+
+    /**
+     * The frame's own pixels around the inspected one, nearest-neighbour, at {@code (mx, my)} in the
+     * view, a grid between them so that single pixels count, the inspected one framed in white.
+     */
+    private static void paintMagnifier(Graphics2D g, FrameSlot f, PixelInspector.Inspection in, int mx, int my) {
         int cell = MAGNIFIER_SIZE / MAGNIFIED;
         int[] argb = f.frame.color();
         for (int j = 0; j < MAGNIFIED; j++) {
@@ -117,24 +149,42 @@ public final class InspectorPainter {
                 g.fillRect(mx + i * cell, my + j * cell, cell, cell);
             }
         }
+        g.setColor(new Color(0, 0, 0, 70));
+        for (int k = 1; k < MAGNIFIED; k++) {
+            g.drawLine(mx + k * cell, my, mx + k * cell, my + MAGNIFIED * cell - 1);
+            g.drawLine(mx, my + k * cell, mx + MAGNIFIED * cell - 1, my + k * cell);
+        }
         g.setColor(Color.WHITE);
-        g.drawRect(mx + MAGNIFIED / 2 * cell, my + MAGNIFIED / 2 * cell, cell - 1, cell - 1);
+        g.drawRect(mx + MAGNIFIED / 2 * cell, my + MAGNIFIED / 2 * cell, cell, cell);
         g.drawRect(mx - 1, my - 1, MAGNIFIED * cell + 1, MAGNIFIED * cell + 1);
-        // Numbers under the magnifier.
-        List<String> lines = lines(in, pinned);
-        g.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
-        int lineH = g.getFontMetrics().getHeight();
-        int boxW = 0;
-        for (String s : lines) {
-            boxW = Math.max(boxW, g.getFontMetrics().stringWidth(s));
+    }
+
+    /**
+     * Where the inspector's panel (magnifier and numbers), {@code w x h} view pixels, goes so that it
+     * never covers the crosshair at {@code (px, py)}: the first corner of the view — top right, top
+     * left, bottom right, bottom left — whose panel stays clear of the crosshair's reach; in a view
+     * too small for any, the corner farthest from the pixel.
+     */
+    static Rectangle place(int w, int h, int px, int py, int viewW, int viewH) {
+        Rectangle cross = new Rectangle(px - REACH, py - REACH, 2 * REACH + 1, 2 * REACH + 1);
+        int left = MARGIN;
+        int rightX = viewW - w - MARGIN;
+        int top = MARGIN;
+        int bottom = viewH - h - MARGIN;
+        Rectangle[] corners = {new Rectangle(rightX, top, w, h), new Rectangle(left, top, w, h),
+            new Rectangle(rightX, bottom, w, h), new Rectangle(left, bottom, w, h)};
+        Rectangle far = corners[0];
+        double farthest = -1;
+        for (Rectangle c : corners) {
+            if (!c.intersects(cross)) {
+                return c;
+            }
+            double d = Math.hypot(c.getCenterX() - px, c.getCenterY() - py);
+            if (d > farthest) {
+                farthest = d;
+                far = c;
+            }
         }
-        int bx = viewW - boxW - 20;
-        int by = my + MAGNIFIED * cell + 10;
-        g.setColor(new Color(0, 0, 0, 170));
-        g.fillRect(bx - 6, by - 4, boxW + 12, lines.size() * lineH + 8);
-        g.setColor(Color.WHITE);
-        for (int k = 0; k < lines.size(); k++) {
-            g.drawString(lines.get(k), bx, by + (k + 1) * lineH - 3);
-        }
+        return far;
     }
 }

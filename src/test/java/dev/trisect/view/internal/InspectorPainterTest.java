@@ -1,0 +1,68 @@
+package dev.trisect.view.internal;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trisect.pipeline.PieceInfo;
+import java.awt.Graphics2D;
+import java.awt.Rectangle;
+import java.awt.image.BufferedImage;
+import java.util.Arrays;
+import org.junit.jupiter.api.Test;
+
+/** Where the pixel inspector draws: never over its own crosshair (issue 18, defect 5). */
+class InspectorPainterTest {
+    private static BufferedImage painted(int w, int h, int x, int y) {
+        FrameSlot f = new FrameSlot(w, h);
+        Arrays.fill(f.frame.color(), 0xFF808080);
+        // A full readout: a triangle, its piece, both paths' texel coordinates, the displacement, the mip level.
+        PieceInfo piece = new PieceInfo(8, 3, 2, false, new double[] {10, 10, 60, 10, 35, 40}, new double[9]);
+        f.inspection = new PixelInspector.Inspection(x, y, 0xFF808080, 3, 2.5, 10.25, 3.5, 10.25, 3.5, 0.125, piece,
+                1.5, 1, 12, 4, null, null);
+        BufferedImage view = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = view.createGraphics();
+        g.drawImage(f.image, 0, 0, null);
+        InspectorPainter.paint(g, f, w, h, true);
+        g.dispose();
+        return view;
+    }
+
+    @Test
+    void theCrosshairShowsWhereTheReadoutUsedToBe() {
+        // The issue's case: at (1200,250) the readout, fixed top right, covered the crosshair.
+        BufferedImage v = painted(1280, 720, 1200, 250);
+        // The crosshair's centre: the pixel's centre (1200.5, 250.5), rounded.
+        int cx = 1201;
+        int cy = 251;
+        for (int arm = 8; arm <= 20; arm += 4) {
+            assertEquals(0xFFFFFF, v.getRGB(cx + arm, cy) & 0xFFFFFF, "right arm at +" + arm);
+            assertEquals(0xFFFFFF, v.getRGB(cx - arm, cy) & 0xFFFFFF, "left arm at -" + arm);
+            assertEquals(0xFFFFFF, v.getRGB(cx, cy - arm) & 0xFFFFFF, "upper arm at -" + arm);
+            assertEquals(0xFFFFFF, v.getRGB(cx, cy + arm) & 0xFFFFFF, "lower arm at +" + arm);
+        }
+    }
+
+    @Test
+    void thePanelKeepsClearOfTheCrosshairAnywhereInAHdView() {
+        int w = 380;
+        int h = 340;
+        for (int py = 0; py < 720; py += 7) {
+            for (int px = 0; px < 1280; px += 7) {
+                Rectangle r = InspectorPainter.place(w, h, px, py, 1280, 720);
+                Rectangle cross = new Rectangle(px - InspectorPainter.REACH, py - InspectorPainter.REACH,
+                        2 * InspectorPainter.REACH + 1, 2 * InspectorPainter.REACH + 1);
+                assertFalse(r.intersects(cross), "panel " + r + " over the crosshair at " + px + "," + py);
+                assertTrue(new Rectangle(0, 0, 1280, 720).contains(r), "inside the view: " + r);
+            }
+        }
+        assertEquals(new Rectangle(1280 - w - InspectorPainter.MARGIN, InspectorPainter.MARGIN, w, h),
+                InspectorPainter.place(w, h, 300, 600, 1280, 720), "top right while the pixel is elsewhere");
+    }
+
+    @Test
+    void inAViewTooSmallForAnyCornerThePanelGoesToTheFarthest() {
+        Rectangle r = InspectorPainter.place(300, 300, 40, 40, 320, 320);
+        assertTrue(r.x > 0 && r.y > 0, "the bottom right, away from a pixel at the top left: " + r);
+    }
+}
