@@ -68,6 +68,9 @@ public final class Cli {
             err.flush();
             return status;
         });
+        // Made before the work: when the heap is exhausted, building a message could fail too.
+        String renderingOom = "trisect: out of memory (lower --max-frame-pieces or --size, or give Java more with -Xmx)";
+        String otherOom = "trisect: out of memory (give Java more with -Xmx, e.g. java -Xmx4g -jar trisect.jar)";
         try {
             int status = cl.execute(args);
             // Whatever a command printed (help, a scene list) must have arrived; a command that failed
@@ -80,10 +83,20 @@ public final class Cli {
             }
             return status;
         } catch (OutOfMemoryError e) {
-            err.println("trisect: out of memory (lower --max-frame-pieces or --size, or give Java more with -Xmx)");
+            // Only the commands that render a frame have --max-frame-pieces, and only there does --size
+            // decide the memory (export's --size sets the camera's aspect alone).
+            err.println(rendersFrame(cl) ? renderingOom : otherOom);
             err.flush();
             return 1;
         }
+    }
+
+    private static boolean rendersFrame(CommandLine cl) {
+        ParseResult r = cl.getParseResult();
+        while (r != null && r.subcommand() != null) {
+            r = r.subcommand();
+        }
+        return r != null && r.commandSpec().userObject() instanceof SceneCommand;
     }
 
     private static boolean verbose(ParseResult result) {
