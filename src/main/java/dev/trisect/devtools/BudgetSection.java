@@ -32,7 +32,8 @@ final class BudgetSection implements ToolSection {
         form.row(ToolsForm.label("Target ms", target.getToolTipText()), target);
         form.readouts(new String[][] {
             {"Chosen threshold", "The threshold the controller chose for the last frame (px), and what holds it "
-                + "there: your threshold (target out of reach), the finest allowed, or the piece budget; - when off"}});
+                + "there: your threshold (the target is out of reach even there), the finest (2 px or 0.05 px: the "
+                + "target is met with room to spare), or the piece budget (finer would overfill it); - when off"}});
         sync(null);
     }
 

@@ -79,12 +79,16 @@ public final class ViewState {
      */
     public record BudgetChoice(double threshold, BudgetController.Limit limit, double medianMs, double targetMs,
                                double ceiling) {
-        /** Why the threshold is where it is, for a readout; empty when it simply follows the target. */
+        /**
+         * Why the threshold is where it is, in a few words for a readout: "your threshold" (the ceiling:
+         * the target is out of reach), "the finest" (the floor: met with room to spare), "piece budget"
+         * (finer would overfill it); empty when it simply follows the target.
+         */
         public String reason() {
             return switch (limit) {
-                case CEILING -> "your threshold: the target is out of reach";
-                case FLOOR -> "the finest allowed: the target is met with room to spare";
-                case PIECE_BUDGET -> "held by the piece budget";
+                case CEILING -> "your threshold";
+                case FLOOR -> "the finest";
+                case PIECE_BUDGET -> "piece budget";
                 case TARGET -> "";
             };
         }

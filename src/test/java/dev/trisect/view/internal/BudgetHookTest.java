@@ -86,6 +86,6 @@ class BudgetHookTest {
         }
         assertTrue(last.threshold() < ceiling, "it refined: " + last.threshold());
         assertEquals(BudgetController.Limit.PIECE_BUDGET, last.limit());
-        assertEquals("held by the piece budget", last.reason());
+        assertEquals("piece budget", last.reason());
     }
 }
