@@ -36,8 +36,10 @@ import org.w3c.dom.NodeList;
  *
  * <p>The consumer's class path is what Maven resolves, offline from the local repository, for a
  * consumer pom listing exactly those dependencies of this pom (with their exclusions); the library
- * itself is {@code target/classes}, the plain jar's content. So an API type that needs an optional
- * (application-only) library, or a library the pom forgets to declare, fails this test.
+ * itself is {@code target/classes}, the plain jar's content. All of it is the module path, so the
+ * examples see the module {@code dev.trisect} as a user's program does: an API type that needs an
+ * optional (application-only) library, a library the pom or the module descriptor forgets, or a package
+ * the descriptor does not export, fails this test.
  */
 class ArtifactTest {
     private static final Path POM = Path.of("pom.xml");
@@ -92,8 +94,9 @@ class ArtifactTest {
         assertFalse(classpath.contains("junit") || classpath.contains("picocli") || classpath.contains("xchart")
                 || classpath.contains("flatlaf"), classpath);
 
-        List<String> args = new ArrayList<>(List.of("-d", dir.resolve("classes").toString(), "-cp", classpath,
-                "-Xlint:all", "-Werror"));
+        // On the module path, as the module dev.trisect: only its exported packages can be used.
+        List<String> args = new ArrayList<>(List.of("-d", dir.resolve("classes").toString(), "--module-path",
+                classpath, "--add-modules", "dev.trisect", "-Xlint:all", "-Werror"));
         try (Stream<Path> s = Files.walk(Path.of("src/examples/java"))) {
             s.filter(f -> f.toString().endsWith(".java")).map(Path::toString).forEach(args::add);
         }
@@ -106,8 +109,9 @@ class ArtifactTest {
         // Run the headless example on that class path alone, in a JVM of its own.
         Path png = dir.resolve("cube.png");
         Process run = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Djava.awt.headless=true", "-cp", dir.resolve("classes") + File.pathSeparator + classpath,
-                "dev.trisect.examples.HeadlessRender", png.toString()).redirectErrorStream(true).start();
+                "-Djava.awt.headless=true", "--module-path", classpath, "--add-modules", "dev.trisect", "-cp",
+                dir.resolve("classes").toString(), "dev.trisect.examples.HeadlessRender", png.toString())
+                .redirectErrorStream(true).start();
         String runOut = new String(run.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
         assertTrue(run.waitFor(120, TimeUnit.SECONDS), "the example finished");
         assertEquals(0, run.exitValue(), runOut);
