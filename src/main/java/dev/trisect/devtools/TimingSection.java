@@ -2,37 +2,48 @@ package dev.trisect.devtools;
 
 import dev.trisect.render.RenderMode;
 import dev.trisect.view.internal.FrameSlot;
-import dev.trisect.view.internal.FrameTimes;
 import dev.trisect.view.internal.ViewController;
 import dev.trisect.view.internal.ViewState;
 import java.awt.Color;
 import java.awt.Dimension;
-import java.awt.Graphics2D;
 import java.awt.Graphics;
+import java.awt.Graphics2D;
 import java.util.Locale;
 import javax.swing.JComponent;
+import javax.swing.JLabel;
+import javax.swing.JToggleButton;
 
 /**
- * Developer tools: the last five seconds of frame times as a live chart stacked by stage, and each
- * path's time on the last measured frame side by side. Drawn by hand: a few hundred filled rectangles
- * a refresh, which a chart library would only wrap.
+ * Developer tools: the last five seconds of frame times as a live chart stacked by stage
+ * ({@link FrameChart}), which can be paused to pick a past frame and read its stages; and each
+ * path's engine time on the last measured frame side by side.
  */
 final class TimingSection implements ToolSection {
-    /** Stage colours, in {@link FrameTimes#STAGES} order. */
-    static final Color[] COLOURS = {new Color(0x4E79A7), new Color(0x76B7B2), new Color(0x59A14F),
-        new Color(0xEDC948), new Color(0xF28E2B), new Color(0xE15759), new Color(0xB07AA1), new Color(0x9C9C9C)};
+    private static final String PICKED = "Picked frame";
 
     private final ToolsForm form = new ToolsForm("Frame time");
-    private final Graph graph = new Graph();
+    private final FrameChart chart = new FrameChart(this::pick);
+    private final PathBars paths = new PathBars();
+    private final JToggleButton pause = new JToggleButton("Pause");
     private final ViewState state;
+    private final JLabel pickedText = new JLabel();
+    private String picked = "";
 
     TimingSection(ViewController owner) {
         this.state = owner.state();
-        graph.setToolTipText("Milliseconds per frame over the last 5 s, stacked by stage: transform, clip, tessellate, "
-                + "raster, overlay, compare (per-pixel render, other paths' timing, measuring), present (handing the "
-                + "frame to the screen) and other; they add up to the whole frame. Bars right: each path's engine "
-                + "time on the last measured frame");
-        form.row(graph);
+        pause.setToolTipText("Stop the chart on the frames it shows, to hover them or click one and read its stages");
+        pause.addActionListener(e -> {
+            if (!pause.isSelected()) {
+                showPicked("");
+            }
+            refresh(null, null, null);
+        });
+        form.row(chart);
+        form.row(pause, null);
+        pickedText.setToolTipText("The stages of the frame clicked in the chart, milliseconds, top stage first");
+        form.row(pickedText);
+        showPicked("");
+        form.row(paths);
     }
 
     @Override
@@ -40,110 +51,87 @@ final class TimingSection implements ToolSection {
         return form.panel();
     }
 
-    @Override
-    public void refresh(ViewState.Progress progress, FrameSlot front, ViewState.Measurement m) {
-        graph.frames = state.frameTimes.snapshot();
-        graph.paths = state.pathMs();
-        graph.repaint();
+    /** A click in the chart pauses it and picks the frame under the mouse. */
+    private void pick(int index) {
+        if (!pause.isSelected()) {
+            pause.setSelected(true);
+        }
+        double[][] rows = chart.frames();
+        showPicked(index < 0 ? "" : (rows.length - 1 - index) + " frames before the newest: "
+                + FrameChart.breakdown(rows[index], ", ").replaceFirst(" ms, ", " ms = "));
+        chart.show(rows, index);
     }
 
-    /** The chart. Event thread only. */
-    static final class Graph extends JComponent {
-        private static final long serialVersionUID = 1L;
-        private static final int PATHS_W = 86;
-        transient double[][] frames = new double[0][];
-        transient double[] paths;
-
-        Graph() {
-            setPreferredSize(new Dimension(330, 185));
+    @Override
+    public void refresh(ViewState.Progress progress, FrameSlot front, ViewState.Measurement m) {
+        if (!pause.isSelected()) {
+            chart.show(state.frameTimes.snapshot(), -1);
         }
+        paths.ms = state.pathMs();
+        paths.repaint();
+    }
 
-        /** Top of the scale: the worst whole frame shown, rounded up to a step of 10 ms (at least 20). */
-        static double scaleMs(double[][] frames) {
-            double worst = 0;
-            for (double[] f : frames) {
-                double sum = 0;
-                for (double v : f) {
-                    sum += v;
-                }
-                worst = Math.max(worst, sum);
-            }
-            return Math.max(20, Math.ceil(worst / 10) * 10);
+    /** The picked frame's line, wrapped to the section's width (the hint when none is picked). */
+    private void showPicked(String text) {
+        picked = text;
+        pickedText.setText("<html><body style='width:300px'>" + (text.isEmpty()
+                ? "Hover a bar for its stages; click one (or Pause) to stop the chart and read it here." : text)
+                + "</body></html>");
+    }
+
+    @Override
+    public String readout(String name) {
+        return PICKED.equals(name) ? picked : form.get(name);
+    }
+
+    /** The chart, for tests. */
+    FrameChart chart() {
+        return chart;
+    }
+
+    /** Each path's engine time on the last measured frame: one row per path, its name, a bar and its value. */
+    static final class PathBars extends JComponent {
+        private static final long serialVersionUID = 1L;
+        private static final String[] NAMES = {"perspective", "affine", "tessellated", "spans"};
+        transient double[] ms;
+
+        PathBars() {
+            setPreferredSize(new Dimension(330, 4 * 15 + 16));
+            setToolTipText("Each path's engine time on the last measured frame (the paths neither shown nor the "
+                    + "reference drawn into scratch to time them), so the cost of a path shows next to its error");
         }
 
         @Override
         protected void paintComponent(Graphics g0) {
             Graphics2D g = (Graphics2D) g0.create();
             try {
-                int w = getWidth() - PATHS_W;
-                int h = getHeight() - 52;
-                g.setColor(new Color(0x202020));
-                g.fillRect(0, 0, getWidth(), getHeight());
-                double top = scaleMs(frames);
-                g.setFont(g.getFont().deriveFont(10f));
+                g.setFont(g.getFont().deriveFont(11f));
                 g.setColor(Color.GRAY);
-                for (double ms = 0; ms <= top; ms += top / 4) {
-                    int y = h - (int) Math.round(ms / top * (h - 12));
-                    g.drawLine(0, y, w, y);
-                    g.drawString(String.format(Locale.ROOT, "%.0f ms", ms), 2, y - 1);
+                g.drawString("each path's engine time, last measured frame", 0, 11);
+                if (ms == null) {
+                    g.drawString("(measuring off)", 0, 27);
+                    return;
                 }
-                int n = frames.length;
-                for (int i = 0; i < n; i++) {
-                    int x0 = (int) ((long) i * w / FrameTimes.CAPACITY) + (w - (int) ((long) n * w / FrameTimes.CAPACITY));
-                    int x1 = Math.max(x0 + 1, (int) ((long) (i + 1) * w / FrameTimes.CAPACITY)
-                            + (w - (int) ((long) n * w / FrameTimes.CAPACITY)));
-                    double acc = 0;
-                    for (int s = 0; s < frames[i].length; s++) {
-                        int yLow = h - (int) Math.round(acc / top * (h - 12));
-                        acc += frames[i][s];
-                        int yHigh = h - (int) Math.round(acc / top * (h - 12));
-                        g.setColor(COLOURS[s]);
-                        g.fillRect(x0, yHigh, x1 - x0, Math.max(0, yLow - yHigh));
-                    }
+                double top = 1;
+                for (double p : ms) {
+                    top = Math.max(top, p);
                 }
-                paintPaths(g, w + 6, h);
-                // Legend under the chart.
-                int lx = 2;
-                int ly = h + 26;
-                for (int s = 0; s < FrameTimes.STAGES.length; s++) {
-                    String name = FrameTimes.STAGES[s];
-                    int tw = g.getFontMetrics().stringWidth(name) + 16;
-                    if (lx + tw > getWidth()) {
-                        lx = 2;
-                        ly += 13;
-                    }
-                    g.setColor(COLOURS[s]);
-                    g.fillRect(lx, ly - 8, 9, 9);
-                    g.setColor(Color.LIGHT_GRAY);
-                    g.drawString(name, lx + 12, ly);
-                    lx += tw;
+                int nameW = g.getFontMetrics().stringWidth("tessellated") + 8;
+                int valueW = g.getFontMetrics().stringWidth("000.0 ms") + 6;
+                int barMax = Math.max(10, getWidth() - nameW - valueW);
+                for (RenderMode mode : RenderMode.values()) {
+                    int y = 16 + mode.ordinal() * 15;
+                    double v = ms[mode.ordinal()];
+                    g.setColor(getForeground());
+                    g.drawString(NAMES[mode.ordinal()], 0, y + 10);
+                    g.setColor(new Color(0x59A14F));
+                    int bar = (int) Math.round(v / top * barMax);
+                    g.fillRect(nameW, y + 2, bar, 10);
+                    g.setColor(getForeground());
+                    g.drawString(String.format(Locale.ROOT, "%.1f ms", v), nameW + bar + 4, y + 10);
                 }
             } finally {
                 g.dispose();
-            }
-        }
-
-        private void paintPaths(Graphics2D g, int x, int h) {
-            g.setColor(Color.LIGHT_GRAY);
-            g.drawString("paths, ms", x, 10);
-            if (paths == null) {
-                g.drawString("(measuring off)", x, 24);
-                return;
-            }
-            double top = 1;
-            for (double p : paths) {
-                top = Math.max(top, p);
-            }
-            String[] names = {"persp", "affine", "tess", "spans"};
-            int barW = 22;
-            for (RenderMode m : RenderMode.values()) {
-                int bx = x + m.ordinal() * (barW + 4);
-                int bh = (int) Math.round(paths[m.ordinal()] / top * (h - 30));
-                g.setColor(new Color(0x59A14F).brighter());
-                g.fillRect(bx, h - bh, barW, bh);
-                g.setColor(Color.LIGHT_GRAY);
-                g.drawString(String.format(Locale.ROOT, "%.1f", paths[m.ordinal()]), bx, h - bh - 2);
-                g.drawString(names[m.ordinal()], bx, h + 11);
             }
         }
     }

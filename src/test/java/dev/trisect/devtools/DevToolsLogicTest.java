@@ -51,10 +51,62 @@ class DevToolsLogicTest {
         }
     }
 
+    /** 299 frames of 30 ms (stages 5 + 25) and one of 2,190 ms, the spike, at {@code spikeAt}. */
+    private static double[][] framesWithASpike(int spikeAt) {
+        double[][] rows = new double[300][];
+        for (int i = 0; i < rows.length; i++) {
+            rows[i] = new double[] {5, 0, 0, 25, 0, 0, 0, 0};
+        }
+        rows[spikeAt] = new double[] {5, 0, 0, 2185, 0, 0, 0, 0};
+        return rows;
+    }
+
     @Test
-    void theFrameTimeChartsScaleIsTheWorstFrameRoundedUp() {
-        assertEquals(20, TimingSection.Graph.scaleMs(new double[][] {{3, 4}}));
-        assertEquals(40, TimingSection.Graph.scaleMs(new double[][] {{30, 4}}));
+    void oneSlowFrameDoesNotRescaleTheFrameTimeChart() {
+        double[][] rows = framesWithASpike(150);
+        assertEquals(50, FrameChart.topMs(rows), "1.2 x the 90th percentile, 36 ms, rounded up; not 2,190 ms");
+        assertEquals(20, FrameChart.topMs(new double[][] {{3, 4}}), "never below 20 ms: the 16.7 ms line shows");
+        assertEquals(20, FrameChart.topMs(new double[0][]));
+        // Drawn: the ordinary frames fill most of the plot, not 2 px of it as under a 2,190 ms scale.
+        FrameChart chart = new FrameChart(i -> { });
+        chart.setSize(300, 170);
+        chart.show(rows, -1);
+        java.awt.image.BufferedImage img = new java.awt.image.BufferedImage(300, 170,
+                java.awt.image.BufferedImage.TYPE_INT_RGB);
+        java.awt.Graphics2D g = img.createGraphics();
+        chart.paint(g);
+        g.dispose();
+        int raster = FrameChart.COLOURS[3].getRGB() & 0xFFFFFF;
+        int tall = 0;
+        for (int y = 0; y < 170; y++) {
+            tall += (img.getRGB(10, y) & 0xFFFFFF) == raster ? 1 : 0;
+        }
+        assertTrue(tall > 40, "a 30 ms frame's raster stage is " + tall + " px tall");
+    }
+
+    @Test
+    void theChartsGridSitsAtRoundMilliseconds() {
+        for (double v : new double[] {0.3, 7, 20, 21, 36, 43, 85, 128, 170, 999, 2190}) {
+            double top = FrameChart.roundUp(v);
+            assertTrue(top >= v, v + " -> " + top);
+            double step = FrameChart.gridStep(top);
+            double mantissa = step / Math.pow(10, Math.floor(Math.log10(step)));
+            assertTrue(Math.abs(mantissa - 1) < 1e-9 || Math.abs(mantissa - 2) < 1e-9 || Math.abs(mantissa - 5) < 1e-9,
+                    "step " + step + " for top " + top);
+            double lines = top / step;
+            assertTrue(lines >= 4 - 1e-9 && lines <= 10 + 1e-9, lines + " grid lines for a top of " + top);
+        }
+        assertEquals(5, FrameChart.gridStep(20));
+        assertEquals(10, FrameChart.gridStep(50));
+        assertEquals("2.5", FrameChart.msText(2.5));
+        assertEquals("40", FrameChart.msText(40));
+    }
+
+    @Test
+    void aPickedFramesStagesAddUpToItsTime() {
+        String b = FrameChart.breakdown(new double[] {1, 2, 3, 4, 0, 0, 0, 0.5}, ", ");
+        assertTrue(b.startsWith("10.5 ms, other 0.50, present 0.00"), b);
+        assertTrue(b.endsWith("raster 4.00, tessellate 3.00, clip 2.00, transform 1.00"), b);
     }
 
     @Test
