@@ -2,15 +2,21 @@ package dev.trisect;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import dev.trisect.base.InputException;
+import dev.trisect.io.Faults;
+import dev.trisect.ui.ReportFile;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 /** The entry point as a user starts it, in a separate JVM without a display. */
 class LauncherTest {
@@ -66,5 +72,40 @@ class LauncherTest {
         Run bad = launch("render", "--size", "0x0");
         assertEquals(2, bad.status());
         assertTrue(bad.err().strip().startsWith("trisect render:"), bad.err());
+    }
+
+    @Test
+    void theSoakReportIsCheckedBeforeTheSoakAndRefusedWithoutIt() throws Exception {
+        Run alone = launch("demo", "--report", "r.json");
+        assertEquals(2, alone.status(), alone.err());
+        assertEquals("trisect: --report goes with --soak", alone.err().strip());
+        // Checked before anything else, the display included (this JVM has none).
+        Path missing = Path.of("/nonexistent-trisect/r.json");
+        Run bad = launch("demo", "--soak", "1", "--report", missing.toString());
+        assertEquals(1, bad.status(), bad.err());
+        assertEquals("trisect: " + missing + ": cannot write: no such directory " + missing.getParent(),
+                bad.err().strip());
+    }
+
+    @Test
+    void theSoakReportIsWrittenAllOrNothing(@TempDir Path dir) throws IOException {
+        Path report = Files.writeString(dir.resolve("r.json"), "OLD");
+        InputException directory = assertThrows(InputException.class, () -> Trisect.openReport(dir));
+        assertEquals(dir + ": cannot write: it is a directory", directory.getMessage());
+        try (ReportFile file = Trisect.openReport(report)) {
+            Faults.fullDiskAt(1);
+            InputException full = assertThrows(InputException.class, () -> file.write("{\"new\":1}\n"));
+            assertEquals(report + ": cannot write: No space left on device", full.getMessage());
+        } finally {
+            Faults.clear();
+        }
+        assertEquals("OLD", Files.readString(report));
+        try (ReportFile file = Trisect.openReport(report)) {
+            file.write("{\"new\":1}\n");
+        }
+        assertEquals("{\"new\":1}\n", Files.readString(report));
+        try (var files = Files.list(dir)) {
+            assertEquals(List.of(report), files.toList(), "no temporary file is left");
+        }
     }
 }

@@ -148,6 +148,15 @@ public final class OutputBatch implements AutoCloseable {
         }
     }
 
+    /**
+     * Writes {@code text} as UTF-8 to {@code out} as part of this batch (a report, say).
+     *
+     * @throws InputException "{@code out}: cannot write: reason"
+     */
+    public void writeText(Path out, String text) {
+        write(out, stream -> stream.write(text.getBytes(java.nio.charset.StandardCharsets.UTF_8)));
+    }
+
     /** A new entry for {@code out} with its temporary file created, locked and registered. */
     private Entry open(Path out) {
         synchronized (LOCK) {

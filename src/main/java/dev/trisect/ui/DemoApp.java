@@ -62,6 +62,9 @@ public final class DemoApp implements Callable<Integer> {
     @Option(names = "--report", paramLabel = "FILE", description = "With --soak: also write the report here (JSON).")
     Path report;
 
+    /** Opens the --report file; set by {@link #launch}. */
+    private ReportFile.Opener reports;
+
     private static final String HEADLESS_HINT = "render headless instead: java -jar trisect.jar render --scene demo "
             + "--out demo.png (see render --help)";
 
@@ -80,10 +83,16 @@ public final class DemoApp implements Callable<Integer> {
         }
     }
 
-    /** Runs the demo's command line; returns a process exit status, or -1 when the demo is running. */
-    public static int launch(String... args) {
+    /**
+     * Runs the demo's command line; returns a process exit status, or -1 when the demo is running.
+     *
+     * @param reports opens the soak's {@code --report} file
+     */
+    public static int launch(ReportFile.Opener reports, String... args) {
+        DemoApp app = new DemoApp();
+        app.reports = reports;
         // Named as typed, so that its usage line reads "trisect demo".
-        CommandLine cl = new CommandLine(new DemoApp()).setCommandName("trisect demo");
+        CommandLine cl = new CommandLine(app).setCommandName("trisect demo");
         PrintWriter err = new PrintWriter(System.err, true);
         cl.setParameterExceptionHandler((ex, a) -> {
             err.println("trisect demo: " + ex.getMessage().lines().findFirst().orElse("invalid arguments")
@@ -121,6 +130,16 @@ public final class DemoApp implements Callable<Integer> {
         if (soak != null && soak < 1) {
             throw InputException.usage("--soak must be at least 1 second, got " + soak);
         }
+        if (report != null && soak == null) {
+            throw InputException.usage("--report goes with --soak");
+        }
+        // The report's folder and writability are checked now, not after the soak.
+        try (ReportFile file = report == null ? null : reports.open(report)) {
+            return open(start, n, file);
+        }
+    }
+
+    private int open(RenderMode start, int n, ReportFile file) throws Exception {
         if (GraphicsEnvironment.isHeadless()) {
             System.err.println("trisect: no display for the desktop demo; " + HEADLESS_HINT);
             return 1;
@@ -163,7 +182,7 @@ public final class DemoApp implements Callable<Integer> {
             return 1;
         }
         if (soak != null) {
-            return new SoakRun(window.get(), soak, report).run();
+            return new SoakRun(window.get(), soak, file).run();
         }
         return -1;
     }

@@ -1,5 +1,6 @@
 package dev.trisect.ui;
 
+import dev.trisect.base.InputException;
 import dev.trisect.base.internal.JsonObject;
 import dev.trisect.render.RenderMode;
 import dev.trisect.render.SplitPolicy;
@@ -8,11 +9,7 @@ import dev.trisect.view.ViewAction;
 import java.awt.Frame;
 import java.awt.event.KeyEvent;
 import java.awt.event.WindowEvent;
-import java.io.IOException;
 import java.lang.management.ManagementFactory;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
@@ -40,7 +37,7 @@ import javax.swing.SwingUtilities;
 final class SoakRun {
     private final DemoWindow window;
     private final int seconds;
-    private final Path report;
+    private final ReportFile report;
     private final AtomicInteger exceptions = new AtomicInteger();
     private final List<String> exceptionLines = new ArrayList<>();
     private final Random random = new Random(20261121);
@@ -48,7 +45,7 @@ final class SoakRun {
     /** The render settings every checkpoint returns to: those the demo opened with, tessellated. */
     private final dev.trisect.render.RenderSettings standard;
 
-    SoakRun(DemoWindow window, int seconds, Path report) {
+    SoakRun(DemoWindow window, int seconds, ReportFile report) {
         this.window = window;
         this.standard = window.view().getRenderSettings().withMode(RenderMode.TESSELLATED);
         this.seconds = seconds;
@@ -87,12 +84,19 @@ final class SoakRun {
         out.put("still_rendering", rendering);
         onEdt(w -> w.frame().dispatchEvent(new WindowEvent(w.frame(), WindowEvent.WINDOW_CLOSING)));
         String json = out.toString();
+        // As every command: standard output first (a failure there leaves the report file untouched),
+        // then the report, all or nothing; either failure is one line and exit 1.
         System.out.println(json);
+        if (System.out.checkError()) {
+            System.err.println("trisect: cannot write to standard output");
+            return 1;
+        }
         if (report != null) {
             try {
-                Files.writeString(report, json + "\n", StandardCharsets.UTF_8);
-            } catch (IOException e) {
-                System.err.println("trisect: " + report + ": cannot write: " + e.getMessage());
+                report.write(json + "\n");
+            } catch (InputException e) {
+                System.err.println("trisect: " + e.getMessage());
+                return 1;
             }
         }
         return exceptions.get() == 0 && rendering ? 0 : 1;
