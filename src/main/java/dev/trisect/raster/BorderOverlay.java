@@ -44,7 +44,7 @@ public final class BorderOverlay {
      * Outlines the edges of {@code plan}'s band {@code band} within pixels {@code [x0, x1) x [y0, y1)},
      * which must hold that band's rows lighting (x0 &gt;= 0).
      *
-     * @return number of outline pixels drawn (a pixel drawn by both triangles sharing an edge counts twice)
+     * @return number of outline pixels drawn (each once, whether one or both triangles sharing its edge drew it)
      */
     public long draw(Framebuffer frame, OutlinePlan plan, int band, int x0, int y0, int x1, int y1) {
         double[] planes = plan.planes;
@@ -56,16 +56,21 @@ public final class BorderOverlay {
         int[] spans = plan.edgeSpan;
         int[] cross = plan.edgeCross;
         long painted = 0;
+        int owner = -1;
         for (int n = plan.bins.start(band), end = plan.bins.start(band + 1); n < end; n++) {
             int edge = items[n];
             int tri = plan.edgeOwner[edge];
-            qBase = planes[3 * tri];
-            qDx = planes[3 * tri + 1];
-            qDy = planes[3 * tri + 2];
-            qMin = ranges[2 * tri];
-            qMax = ranges[2 * tri + 1];
-            colour = colours[tri];
-            alpha = alphas[tri];
+            // A triangle's edges follow one another: its outline's values stay.
+            if (tri != owner) {
+                owner = tri;
+                qBase = planes[3 * tri];
+                qDx = planes[3 * tri + 1];
+                qDy = planes[3 * tri + 2];
+                qMin = ranges[2 * tri];
+                qMax = ranges[2 * tri + 1];
+                colour = colours[tri];
+                alpha = alphas[tri];
+            }
             int earlier = plan.edgeEarlier[edge];
             shared = earlier >= 0;
             if (shared) {
@@ -180,19 +185,29 @@ public final class BorderOverlay {
         return Math.max(MIN_ALPHA, r * r);
     }
 
-    /** Applies the earlier sharing triangle's outline, if any, then this one's at pixel (x, y). */
+    /**
+     * Applies the earlier sharing triangle's outline, if any, then this one's at pixel (x, y). Where
+     * this one's shows opaque it covers the earlier's, so the earlier's test is then spared.
+     *
+     * @return 1 when the pixel was drawn, else 0
+     */
     private int plot(Framebuffer frame, int x, int y) {
         int i = y * frame.width() + x;
         double limit = frame.depth()[i] * (1 - DEPTH_TOLERANCE);
         int[] color = frame.color();
+        boolean shows = !(held(qBase + qDx * x + qDy * y, qMin, qMax) < limit);
+        if (shows && alpha >= 1) {
+            color[i] = colour;
+            return 1;
+        }
         int painted = 0;
         if (shared && !(held(qBaseEarlier + qDxEarlier * x + qDyEarlier * y, qMinEarlier, qMaxEarlier) < limit)) {
             color[i] = alphaEarlier >= 1 ? colourEarlier : blend(color[i], colourEarlier, alphaEarlier);
-            painted++;
+            painted = 1;
         }
-        if (!(held(qBase + qDx * x + qDy * y, qMin, qMax) < limit)) {
-            color[i] = alpha >= 1 ? colour : blend(color[i], colour, alpha);
-            painted++;
+        if (shows) {
+            color[i] = blend(color[i], colour, alpha);
+            painted = 1;
         }
         return painted;
     }

@@ -228,25 +228,23 @@ public final class OutlinePlan {
                 }
                 int a = o + 2 * e;
                 int b = o + next(e);
-                long ax = f[a];
-                long ay = f[a + 1];
-                long bx = f[b];
-                long by = f[b + 1];
+                int ax = f[a];
+                int ay = f[a + 1];
+                int bx = f[b];
+                int by = f[b + 1];
                 // Canonical direction: from the smaller (x, y) end, so both sharers would light the same pixels.
                 if (ax > bx || ax == bx && ay > by) {
-                    long t = ax;
+                    int t = ax;
                     ax = bx;
                     bx = t;
                     t = ay;
                     ay = by;
                     by = t;
                 }
-                double xa = ax / (double) FixedPoint.ONE;
-                double ya = ay / (double) FixedPoint.ONE;
-                double xb = bx / (double) FixedPoint.ONE;
-                double yb = by / (double) FixedPoint.ONE;
-                double dx = xb - xa;
-                double dy = yb - ya;
+                // In sub-pixel units, exactly: a pixel centre's column c lies within [xa, xb] when
+                // ceil(xa - 0.5) <= c <= floor(xb - 0.5), that is (ax + HALF - 1) >> BITS <= c <= (bx - HALF) >> BITS.
+                int dx = bx - ax;
+                int dy = by - ay;
                 boolean byColumn = Math.abs(dx) >= Math.abs(dy);
                 int first;
                 int last;
@@ -259,19 +257,20 @@ public final class OutlinePlan {
                     if (dx == 0) {
                         continue;
                     }
-                    slope = dy / dx;
-                    first = (int) Math.ceil(xa - 0.5);
-                    last = (int) Math.floor(xb - 0.5);
+                    // The quotient of the two differences in pixels: both are exact, and scaling both by 2^-BITS keeps it.
+                    slope = dy / (double) dx;
+                    first = (ax + FixedPoint.HALF - 1) >> FixedPoint.BITS;
+                    last = (bx - FixedPoint.HALF) >> FixedPoint.BITS;
                     crossFirst = cellBelow(Math.min(ay, by));
-                    crossLast = (int) Math.floorDiv(Math.max(ay, by), FixedPoint.ONE);
+                    crossLast = Math.max(ay, by) >> FixedPoint.BITS;
                     rowFirst = crossFirst;
                     rowLast = crossLast;
                 } else {
-                    slope = dx / dy;
-                    first = (int) Math.ceil(Math.min(ya, yb) - 0.5);
-                    last = (int) Math.floor(Math.max(ya, yb) - 0.5);
+                    slope = dx / (double) dy;
+                    first = (Math.min(ay, by) + FixedPoint.HALF - 1) >> FixedPoint.BITS;
+                    last = (Math.max(ay, by) - FixedPoint.HALF) >> FixedPoint.BITS;
                     crossFirst = cellBelow(ax);
-                    crossLast = (int) Math.floorDiv(bx, FixedPoint.ONE);
+                    crossLast = bx >> FixedPoint.BITS;
                     rowFirst = first;
                     rowLast = last;
                 }
@@ -282,8 +281,8 @@ public final class OutlinePlan {
                 }
                 edgeOwner[count] = tri;
                 edgeEarlier[count] = earlier;
-                edgeLine[3 * count] = xa;
-                edgeLine[3 * count + 1] = ya;
+                edgeLine[3 * count] = ax / (double) FixedPoint.ONE;
+                edgeLine[3 * count + 1] = ay / (double) FixedPoint.ONE;
                 edgeLine[3 * count + 2] = slope;
                 edgeSpan[2 * count] = first;
                 edgeSpan[2 * count + 1] = last;
@@ -307,8 +306,9 @@ public final class OutlinePlan {
      * {@code low} sub-pixel units: that end's, or the one before when the end lies on a pixel
      * boundary, where rounding of the line's height can reach just below it.
      */
-    private static int cellBelow(long low) {
-        return (int) Math.floorDiv(low, FixedPoint.ONE) - (low % FixedPoint.ONE == 0 ? 1 : 0);
+    private static int cellBelow(int low) {
+        // floor(low / ONE), less one when low is a multiple of ONE.
+        return (low - 1) >> FixedPoint.BITS;
     }
 
     /** Makes room for {@code n} triangles; gives storage back when it has become far larger than needed. */
