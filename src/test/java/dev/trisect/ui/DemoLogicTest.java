@@ -31,6 +31,21 @@ class DemoLogicTest {
     }
 
     @Test
+    void aWarningIsWithdrawnOnceTheFramesStopEarningIt() {
+        JLabel label = new JLabel();
+        StatusLine line = new StatusLine(label);
+        line.rest("hint");
+        line.pass("Copied", 1000);
+        line.withdraw("\u26a0");
+        assertEquals("Copied", label.getText(), "another passing message stays its time");
+        line.pass("\u26a0 Over budget: median 23.4 ms against 16.7 ms even at your threshold (32.00 px)", 2000);
+        line.withdraw("\u26a0");
+        assertEquals("hint", label.getText(), "a warning goes as soon as the frame on screen has none (issue 18)");
+        line.withdraw("hint");
+        assertEquals("hint", label.getText(), "the resting hint is never withdrawn");
+    }
+
+    @Test
     void screenshotsGoToPicturesOrHomeNeverTheWorkingDirectory() throws Exception {
         assertEquals(dir, Screenshots.folder(dir));
         Files.createDirectory(dir.resolve("Pictures"));
