@@ -9,12 +9,16 @@ import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import javax.imageio.ImageIO;
+import javax.tools.ToolProvider;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** The headless examples of src/examples/java run and do what they say. */
+/** The headless examples of src/examples/java run and do what they say; the overview's quick start compiles. */
 class ExamplesTest {
     @Test
     void headlessRenderWritesTheCubeOnItsGround(@TempDir Path dir) throws Exception {
@@ -48,5 +52,28 @@ class ExamplesTest {
         assertTrue(lines[0].startsWith("128,100: crate triangle "), lines[0]);
         assertTrue(lines[1].startsWith("191,100: ball triangle "), lines[1]);
         assertEquals("160,30: background", lines[2]);
+    }
+
+    /**
+     * The overview page's quick start is a whole program: its first code block, taken from the page as
+     * Javadoc shows it, compiles on its own against the library (so the quick start alone is enough to
+     * write the cube example).
+     */
+    @Test
+    void theOverviewsQuickStartCompilesAsItStands(@TempDir Path dir) throws Exception {
+        String page = Files.readString(Path.of("src/main/javadoc/overview.html"));
+        Matcher m = Pattern.compile("(?s)<pre>\\{@code\\R(.*?)\\R}</pre>").matcher(page);
+        assertTrue(m.find(), "a code block on the overview page");
+        String code = m.group(1).replace("&lt;", "<").replace("&gt;", ">").replace("&amp;", "&");
+        Matcher name = Pattern.compile("public final class (\\w+)").matcher(code);
+        assertTrue(name.find(), "the quick start is a class:\n" + code);
+        Path source = dir.resolve(name.group(1) + ".java");
+        Files.writeString(source, code);
+        ByteArrayOutputStream errors = new ByteArrayOutputStream();
+        int status = ToolProvider.getSystemJavaCompiler().run(null, null,
+                new PrintStream(errors, true, StandardCharsets.UTF_8), "-d", dir.toString(), "-cp",
+                System.getProperty("java.class.path"), "-Xlint:all", "-Werror", source.toString());
+        assertEquals(0, status, errors.toString(StandardCharsets.UTF_8) + "\n" + code);
+        assertTrue(Files.exists(dir.resolve(name.group(1) + ".class")));
     }
 }

@@ -1,4 +1,5 @@
 /**
+ * <b>Internal, not part of the API</b> (the module does not export it; it may change without notice).
  * Writing what Trisect produces — colour images as PNG or binary PPM, UV buffers as PFM — and reading
  * PFM back for comparisons.
  *

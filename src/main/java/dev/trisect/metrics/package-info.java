@@ -1,4 +1,5 @@
 /**
+ * <b>Internal, not part of the API</b> (the module does not export it; it may change without notice).
  * How far one render is from another, in numbers ({@link dev.trisect.metrics.ImageComparison},
  * {@link dev.trisect.metrics.Comparison}) and in pictures ({@link dev.trisect.metrics.HeatMap}), and
  * how far each pixel's texture is from where true perspective puts it
