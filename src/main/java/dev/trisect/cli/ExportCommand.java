@@ -22,7 +22,7 @@ final class ExportCommand implements Callable<Integer> {
     @Mixin
     CommonOptions common;
 
-    @Option(names = "--to", required = true, paramLabel = "FILE.obj", description = "OBJ file to write.")
+    @Option(names = "--to", paramLabel = "FILE.obj", description = "OBJ file to write (required unless --list-scenes).")
     Path to;
 
     @Override
@@ -30,6 +30,9 @@ final class ExportCommand implements Callable<Integer> {
         if (frame.listScenes) {
             FrameOptions.listScenes(common.out());
             return 0;
+        }
+        if (to == null) {
+            throw dev.trisect.base.InputException.usage("--to FILE.obj is required");
         }
         Outputs.checkObj("--to", to);
         try (OutputBatch batch = new OutputBatch()) {

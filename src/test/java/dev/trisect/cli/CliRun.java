@@ -20,11 +20,16 @@ record CliRun(int status, String out, String err) {
      * "No space left on device", as writing to /dev/full does.
      */
     static CliRun withFullStdout(String... args) {
+        return withFailingStdout("No space left on device", args);
+    }
+
+    /** Runs {@code args} with a standard output whose every write throws with {@code reason}. */
+    static CliRun withFailingStdout(String reason, String... args) {
         StringWriter err = new StringWriter();
         OutputWriter out = OutputWriter.over(new OutputStream() {
             @Override
             public void write(int b) throws IOException {
-                throw new IOException("No space left on device");
+                throw new IOException(reason);
             }
         });
         int status = Cli.run(out, new PrintWriter(err, true), args);

@@ -17,8 +17,8 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * Issue 14's fault injection: for every command with outputs, a failure at each of its writes — the
- * output's folder missing, the disk full at that file (injected, {@link Faults}), standard output full —
- * ends the command with one line and a non-zero status, leaves every old output as it was and no
+ * output's folder missing, the disk full at that file (injected, {@link Faults}), standard output full or
+ * closed — ends the command with one line and a non-zero status, leaves every old output as it was and no
  * temporary file behind, and still prints what was computed when only a file failed.
  */
 class FaultInjectionTest {
@@ -103,16 +103,19 @@ class FaultInjectionTest {
                     }
                 }
             }
-            cases++;
-            Path d = seeded(c, "stdout");
-            CliRun r = CliRun.withFullStdout(c.args().apply(d).toArray(String[]::new));
-            check(failures, c, "standard output full", r, d, "cannot write to standard output: No space left on device");
+            // Standard output full (a disk, /dev/full) or closed (a reader gone: a pipe, >&-).
+            for (String reason : List.of("No space left on device", "Broken pipe")) {
+                cases++;
+                Path d = seeded(c, "stdout-" + reason.charAt(0));
+                CliRun r = CliRun.withFailingStdout(reason, c.args().apply(d).toArray(String[]::new));
+                check(failures, c, "standard output: " + reason, r, d, "cannot write to standard output: " + reason);
+            }
         }
         assertEquals(List.of(), failures);
         // The counts the issue's closing note reports.
         assertEquals(8, commands(inputs).size());
         assertEquals(18, outputs, "outputs, standard output included");
-        assertEquals(26, cases, "faults injected");
+        assertEquals(34, cases, "faults injected");
     }
 
     /** A fresh folder for one case, with an old version of each of the command's files. */

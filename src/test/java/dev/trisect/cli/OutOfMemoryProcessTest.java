@@ -36,16 +36,23 @@ class OutOfMemoryProcessTest {
     private static final String OTHER = "trisect: out of memory (give Java more with -Xmx, e.g. java -Xmx4g -jar "
             + "trisect.jar)";
 
+    /** A standard output that is closed: the program is started by a shell with {@code >&-}. */
+    private static final File CLOSED = new File("closed");
+
     /** Runs the program with {@code heap}; returns "status|stderr". */
     private String run(String heap, File stdout, String... args) throws Exception {
         List<String> jvm = List.of("-Xmx" + heap, "-XX:+UseG1GC", "-Djava.awt.headless=true");
         List<String> cmd = new ArrayList<>();
+        if (stdout == CLOSED) {
+            cmd.addAll(List.of("/bin/sh", "-c", "exec \"$@\" >&-", "sh"));
+        }
         cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
         cmd.addAll(jvm);
         cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), "dev.trisect.Trisect"));
         cmd.addAll(List.of(args));
         ProcessBuilder pb = new ProcessBuilder(cmd).directory(dir.toFile());
-        pb.redirectOutput(stdout == null ? ProcessBuilder.Redirect.DISCARD : ProcessBuilder.Redirect.to(stdout));
+        pb.redirectOutput(stdout == null || stdout == CLOSED ? ProcessBuilder.Redirect.DISCARD
+                : ProcessBuilder.Redirect.to(stdout));
         Process p = pb.start();
         p.getOutputStream().close();
         String err = new String(p.getErrorStream().readAllBytes(), StandardCharsets.UTF_8);
@@ -81,12 +88,15 @@ class OutOfMemoryProcessTest {
 
     @Test
     @Timeout(value = 120, unit = TimeUnit.SECONDS)
-    void aFullStandardOutputExits1WithTheReason() throws Exception {
+    void aFullOrClosedStandardOutputExits1WithTheReasonAndChangesNoFile() throws Exception {
         File full = new File("/dev/full");
         org.junit.jupiter.api.Assumptions.assumeTrue(full.exists(), "/dev/full exists");
         Path old = Files.writeString(dir.resolve("x.png"), "OLD");
         assertEquals("1|trisect: cannot write to standard output: No space left on device", run("256m", full,
                 "render", "--scene", "floor", "--size", "32x24", "--stats", "--out", old.toString()));
+        assertEquals("OLD", Files.readString(old));
+        assertEquals("1|trisect: cannot write to standard output: Bad file descriptor", run("256m", CLOSED,
+                "compare", "--scene", "floor", "--size", "32x24", "--out", old.toString()));
         assertEquals("OLD", Files.readString(old));
     }
 }

@@ -46,6 +46,7 @@ class StandardOutputTest {
                 new String[] {"bench", "--scene", "floor", "--size", "16x12", "--frames", "2", "--warmup", "0",
                     "--target-ms", "5", "--plot", p("t.png")},
                 new String[] {"render", "--list-scenes"},
+                new String[] {"export", "--list-scenes"},
                 new String[] {"--help"},
                 new String[] {"--version"},
                 new String[] {"compare", "--help"}));
@@ -63,5 +64,15 @@ class StandardOutputTest {
             assertEquals(List.of("a.pfm", "a.png", "c.png", "d.png", "e.obj", "h.png", "r.pfm", "r.png", "s.png",
                     "t.png"), left, "no new file and no temporary file is left");
         }
+    }
+
+    @Test
+    void exportListsScenesWithoutATarget() {
+        CliRun list = CliRun.of("export", "--list-scenes");
+        assertEquals(0, list.status(), list.err());
+        assertEquals(CliRun.of("render", "--list-scenes").out(), list.out());
+        CliRun none = CliRun.of("export", "--scene", "floor");
+        assertEquals(2, none.status());
+        assertEquals("trisect: --to FILE.obj is required", none.errLine());
     }
 }

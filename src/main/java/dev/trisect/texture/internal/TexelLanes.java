@@ -19,7 +19,7 @@ import java.util.function.Function;
  * <p><b>Layout</b> ({@link #lanes()}, {@link #levels()}): all levels in one {@code long[]}, level 0
  * first. Level d, {@code w x h} texels, takes {@code (w + 1) x (h + 1)} longs from
  * {@link #offset}(d), {@link #stride}(d) = w + 1 per row; rows count from the <em>bottom</em> (row
- * r holds texel row r of OpenGL's t axis, image row {@code h - 1 - r}, unlike {@link Texture#argb()}),
+ * r holds texel row r of OpenGL's t axis, image row {@code h - 1 - r}, unlike {@link dev.trisect.texture.Texture#argb()}),
  * column w repeats column 0 and row h repeats row 0 (GL_REPEAT). So the texel at column
  * {@code i in [0, w)}, row from the bottom {@code j in [0, h)} is {@code offset + j * stride + i}.
  *
