@@ -1,11 +1,14 @@
 package dev.trisect.devtools;
 
+
+import dev.trisect.math.Vec3;
 import dev.trisect.scene.Camera;
 import dev.trisect.view.internal.FrameSlot;
 import dev.trisect.view.internal.ViewController;
 import dev.trisect.view.internal.ViewState;
 import java.awt.Toolkit;
 import java.awt.datatransfer.StringSelection;
+import java.util.Locale;
 import javax.swing.JButton;
 import javax.swing.JComponent;
 
@@ -44,8 +47,13 @@ final class CameraSection implements ToolSection {
             return;
         }
         shown = front.camera;
-        form.set("Eye", shown.eye().toString());
-        form.set("Target", shown.target().toString());
+        form.set("Eye", rounded(shown.eye()));
+        form.set("Target", rounded(shown.target()));
+    }
+
+    /** A point to the millimetre (for a scene in metres), as the copied options give it in full. */
+    static String rounded(Vec3 p) {
+        return String.format(Locale.ROOT, "%.3f, %.3f, %.3f", p.x(), p.y(), p.z()).replace("-0.000", "0.000");
     }
 
     @Override

@@ -141,12 +141,13 @@ public final class CompareSection implements ToolSection {
         for (String k : MEASURES) {
             form.setEnabled(k, measuring);
         }
-        if (m == null || !measuring) {
+        if (m == null) {
             for (String k : MEASURES) {
                 form.set(k, "\u2014");
             }
             return;
         }
+        // Unticked, the last numbers stay, greyed, so that they can still be read (and copied).
         Comparison c = m.comparison();
         form.set(MEASURES[0], String.format(Locale.ROOT, "%.3f px", c.maxDisplacement()));
         form.set(MEASURES[1], String.format(Locale.ROOT, "%.3f px", c.p99Displacement()));

@@ -106,8 +106,8 @@ public final class HeatMap {
     }
 
     /**
-     * Draws the scale's legend into an image: a bar of the ramp with its two ends labelled and the
-     * scale named, on a dark box in the top-left corner (clipped to small images).
+     * Draws the scale's legend into an image: a bar of the ramp with its labels ({@link HeatScale#labels})
+     * and the scale named, on a dark box in the top-left corner (clipped to small images).
      */
     public static void drawLegend(int[] argb, int width, int height, HeatScale scale) {
         int barW = Math.min(200, width - 16);
@@ -122,12 +122,17 @@ public final class HeatMap {
             int c = RAMP[(int) Math.round((double) i / (barW - 1) * (RAMP_SIZE - 1))];
             fill(argb, width, height, x + i, y, x + i + 1, y + 10, c);
         }
-        String low = HeatScale.number(scale.minPixels());
-        String high = HeatScale.number(scale.maxPixels()) + " px";
-        BitmapFont.drawText(argb, width, height, x, y + 13, low, 1, 0xFFFFFFFF);
-        BitmapFont.drawText(argb, width, height, x + barW - BitmapFont.textWidth(high, 1), y + 13, high, 1, 0xFFFFFFFF);
+        // A label per decade (log) or the ends and middle (linear), the top marked as a floor ("≥").
+        for (HeatScale.Placed p : HeatScale.layout(scale.labels(), barW, t -> BitmapFont.textWidth(plain(t), 1), 12)) {
+            BitmapFont.drawText(argb, width, height, x + p.x(), y + 13, plain(p.text()), 1, 0xFFFFFFFF);
+        }
         BitmapFont.drawText(argb, width, height, x, y + 13 + font, (scale.logarithmic() ? "LOG" : "LINEAR")
                 + " DISPLACEMENT", 1, 0xFFFFFFFF);
+    }
+
+    /** The bitmap font has no "≥" (nor "<", ">"): "≥ 2 px" is written "2+ px". */
+    private static String plain(String label) {
+        return label.startsWith("\u2265 ") ? label.substring(2).replace(" px", "+ px") : label;
     }
 
     private static void fill(int[] argb, int width, int height, int x0, int y0, int x1, int y1, int colour) {

@@ -1,5 +1,9 @@
 package dev.trisect.metrics;
 
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.ToIntFunction;
+
 import java.util.Locale;
 
 /**
@@ -55,6 +59,55 @@ public record HeatScale(boolean logarithmic, double maxPixels) {
     /** A label such as {@code "linear 0-2 px"} or {@code "log 0.0002-2 px"}. */
     public String describe() {
         return (logarithmic ? "log " : "linear ") + number(minPixels()) + "-" + number(maxPixels) + " px";
+    }
+
+    /** A label of the legend's bar: at {@code fraction} (0..1) of its width. */
+    public record Label(double fraction, String text) {
+    }
+
+    /** A label placed on a bar: its left edge, pixels from the bar's left edge. */
+    public record Placed(int x, String text) {
+    }
+
+    /**
+     * The legend's labels: on a logarithmic scale one at every decade, on a linear one its ends and
+     * middle; the top reads "≥ top px", since every displacement above it has the top's colour.
+     */
+    public List<Label> labels() {
+        List<Label> out = new ArrayList<>();
+        int marks = logarithmic ? DECADES : 2;
+        for (int k = 0; k <= marks; k++) {
+            double f = (double) k / marks;
+            String text = number(pixelsAt(f));
+            out.add(new Label(f, k == marks ? "\u2265 " + text + " px" : text));
+        }
+        return out;
+    }
+
+    /**
+     * Places labels on a bar {@code barW} pixels wide so that none runs into another: the first starts
+     * at the bar's left edge, the last ends at its right edge, each other is centred on its place and
+     * left out where it would come within {@code gap} pixels of a label kept before it or of the last.
+     */
+    public static List<Placed> layout(List<Label> labels, int barW, ToIntFunction<String> width, int gap) {
+        List<Placed> out = new ArrayList<>();
+        if (labels.isEmpty()) {
+            return out;
+        }
+        Label last = labels.get(labels.size() - 1);
+        int lastX = barW - width.applyAsInt(last.text());
+        int end = Integer.MIN_VALUE;
+        for (int i = 0; i < labels.size() - 1; i++) {
+            Label l = labels.get(i);
+            int w = width.applyAsInt(l.text());
+            int x = i == 0 ? 0 : (int) Math.round(l.fraction() * barW - w / 2.0);
+            if (x >= end + gap && x + w + gap <= lastX) {
+                out.add(new Placed(x, l.text()));
+                end = x + w;
+            }
+        }
+        out.add(new Placed(lastX, last.text()));
+        return out;
     }
 
     /** A short number for labels: up to 3 significant digits, no exponent for everyday sizes. */

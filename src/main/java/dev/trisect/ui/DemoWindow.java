@@ -219,7 +219,7 @@ final class DemoWindow {
     private void refreshReadouts() {
         statusLine.tick(System.nanoTime());
         FrameInfo f = latest;
-        String path = view.getRenderSettings().mode().id();
+        String path = pathAndFilter(view.getRenderSettings());
         String size = f == null ? "" : f.width() + "x" + f.height();
         boolean frozen = Boolean.TRUE.equals(view.action(ViewAction.FREEZE).getValue(Action.SELECTED_KEY));
         pace.setText(frozen
@@ -232,6 +232,11 @@ final class DemoWindow {
             // A warning lasts while its frames do: none stays after the frame on screen stopped earning it.
             statusLine.withdraw(WARNING_MARK);
         }
+    }
+
+    /** The status bar's name of how frames are drawn: the path and the texture filter. */
+    static String pathAndFilter(RenderSettings r) {
+        return r.mode().id() + ", " + r.filter().id();
     }
 
     private void saveScreenshot() {

@@ -3,6 +3,7 @@ package dev.trisect.view;
 import dev.trisect.content.SceneAsset;
 import dev.trisect.devtools.DevToolsDialog;
 import dev.trisect.devtools.DevToolsPanel;
+import dev.trisect.metrics.HeatMap;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.math.Vec3;
 import dev.trisect.scene.Camera;
@@ -13,6 +14,7 @@ import dev.trisect.view.internal.FrameReport;
 import dev.trisect.view.internal.FrameSlot;
 import dev.trisect.view.internal.InputState;
 import dev.trisect.view.internal.ViewController;
+import dev.trisect.view.internal.ViewKind;
 import dev.trisect.view.internal.ViewMouse;
 import dev.trisect.view.internal.ViewState;
 import java.awt.Dimension;
@@ -426,11 +428,23 @@ public class TrisectView extends JComponent implements AutoCloseable {
     /**
      * The frame on screen, as an image. Event thread.
      *
-     * @return a copy of the frame (with its borders, without the legends painted over it), or null before the first
+     * @return a copy of the frame (with its borders, without the legends painted over it; in the
+     *         developer tools' Difference view, the heat map with its scale's legend drawn in, as
+     *         {@code trisect compare --heatmap} writes it), or null before the first
      */
     public BufferedImage frameImage() {
         FrameSlot f = controller.front();
-        return f == null ? null : f.frame.toImage();
+        if (f == null) {
+            return null;
+        }
+        BufferedImage image = f.frame.toImage();
+        if (f.view == ViewKind.DIFFERENCE && f.heatScale != null) {
+            // A heat map means nothing without its scale.
+            int[] argb = image.getRGB(0, 0, f.width(), f.height(), null, 0, f.width());
+            HeatMap.drawLegend(argb, f.width(), f.height(), f.heatScale);
+            image.setRGB(0, 0, f.width(), f.height(), argb, 0, f.width());
+        }
+        return image;
     }
 
     // ---- Commands and developer tools -----------------------------------------------------

@@ -103,6 +103,12 @@ class DevToolsLogicTest {
     }
 
     @Test
+    void theCameraReadoutIsRoundedToTheMillimetre() {
+        assertEquals("0.500, 1.800, -6.123", CameraSection.rounded(new Vec3(0.49999999999, 1.8000000001, -6.12345678)));
+        assertEquals("0.000, 0.000, 0.000", CameraSection.rounded(new Vec3(-1e-9, 0, 1e-12)));
+    }
+
+    @Test
     void aPickedFramesStagesAddUpToItsTime() {
         String b = FrameChart.breakdown(new double[] {1, 2, 3, 4, 0, 0, 0, 0.5}, ", ");
         assertTrue(b.startsWith("10.5 ms, other 0.50, present 0.00"), b);

@@ -63,4 +63,32 @@ class HeatScaleTest {
         HeatMap.drawLegend(tiny, 10, 10, HeatScale.linear(2));
         assertEquals(0, tiny[0], "no legend where there is no room for one");
     }
+
+    @Test
+    void aLogLegendLabelsEveryDecadeAndItsTopIsAFloor() {
+        var log = HeatScale.log(2).labels();
+        assertEquals(HeatScale.DECADES + 1, log.size());
+        assertEquals("0.0002", log.get(0).text());
+        assertEquals("0.02", log.get(2).text());
+        assertEquals("\u2265 2 px", log.get(HeatScale.DECADES).text(), "values above the top take its colour");
+        var linear = HeatScale.linear(2).labels();
+        assertEquals(java.util.List.of("0", "1", "\u2265 2 px"), linear.stream().map(HeatScale.Label::text).toList());
+    }
+
+    @Test
+    void legendLabelsNeverRunIntoEachOther() {
+        for (double top : new double[] {0.1, 2, 17.5, 1000}) {
+            for (int barW : new int[] {60, 120, 200, 220}) {
+                var placed = HeatScale.layout(HeatScale.log(top).labels(), barW, t -> 7 * t.length(), 6);
+                for (int i = 1; i < placed.size(); i++) {
+                    int prevEnd = placed.get(i - 1).x() + 7 * placed.get(i - 1).text().length();
+                    assertTrue(placed.get(i).x() >= prevEnd + 6, placed + " on " + barW + " px");
+                }
+                assertTrue(placed.size() == 1 || placed.get(0).x() == 0, "the bottom at the bar's left: " + placed);
+                assertTrue(placed.get(placed.size() - 1).text().startsWith("\u2265"));
+            }
+        }
+        assertEquals(5, HeatScale.layout(HeatScale.log(2).labels(), 260, t -> 6 * t.length(), 6).size(),
+                "all five fit on the view's legend");
+    }
 }

@@ -58,4 +58,10 @@ class DemoLogicTest {
         assertEquals("trisect-20260102-030405-2.png", Screenshots.newFile(dir, t).getFileName().toString());
     }
 
+    @Test
+    void theStatusBarNamesThePathAndTheFilter() {
+        dev.trisect.render.RenderSettings r = dev.trisect.render.RenderSettings.defaults()
+                .withMode(dev.trisect.render.RenderMode.SPANS).withFilter(dev.trisect.texture.TextureFilter.BILINEAR);
+        assertEquals("spans, bilinear", DemoWindow.pathAndFilter(r));
+    }
 }

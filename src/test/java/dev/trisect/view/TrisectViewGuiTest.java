@@ -121,6 +121,30 @@ class TrisectViewGuiTest {
     }
 
     @Test
+    void theDifferenceViewsImageCarriesTheHeatMapsLegend() throws Exception {
+        ViewController c = onEdt(() -> (ViewController) view.getClientProperty(ViewController.class));
+        edt(() -> view.action(ViewAction.SHOW_DIFFERENCE).actionPerformed(null));
+        waitFor("a heat map on screen", () -> onEdt(() -> c.front() != null
+                && c.front().view == dev.trisect.view.internal.ViewKind.DIFFERENCE));
+        int[] legendless = onEdt(() -> c.front().frame.color().clone());
+        BufferedImage saved = onEdt(() -> view.frameImage());
+        BufferedImage same = onEdt(() -> {
+            // The frame did not change between the two reads (the view holds the frame on screen).
+            return c.front().frame.color()[0] == legendless[0] ? view.frameImage() : null;
+        });
+        assertNotNull(same);
+        int differ = 0;
+        for (int y = 0; y < 40; y++) {
+            for (int x = 0; x < 220; x++) {
+                differ += saved.getRGB(x, y) != legendless[y * 400 + x] ? 1 : 0;
+            }
+        }
+        assertTrue(differ > 1000, "the legend is drawn into the saved heat map (top left): " + differ + " pixels");
+        assertEquals(legendless[299 * 400 + 399], saved.getRGB(399, 299), "and the rest is the heat map");
+        edt(() -> view.showDevTools(false));
+    }
+
+    @Test
     void settingsAndCamerasSetFromAnotherThreadReachTheNextFrames() throws Exception {
         Camera aside = Camera.looking(new Vec3(6, 3, 6), new Vec3(0, 0.5, 0));
         Thread other = new Thread(() -> {

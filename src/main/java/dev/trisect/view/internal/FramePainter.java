@@ -31,8 +31,8 @@ public final class FramePainter {
         }
         g2.setRenderingHint(RenderingHints.KEY_INTERPOLATION, RenderingHints.VALUE_INTERPOLATION_NEAREST_NEIGHBOR);
         g2.drawImage(front.image, 0, 0, w, h, null);
-        if (front.render != null && front.render.borders() && front.view != ViewKind.DIFFERENCE
-                && (front.render.borderStyle().colouring() != BorderStyle.Colouring.YELLOW || fallbackPieces(front) > 0)) {
+        if (front.render != null && front.render.borders() && front.view != ViewKind.DIFFERENCE) {
+            // Whenever outlines are drawn, whatever their colour, the legend says what they are.
             paintBorderLegend(g2, front.render, fallbackPieces(front), h);
         }
         if (front.inspection != null) {
@@ -41,11 +41,20 @@ public final class FramePainter {
         if (front.view == ViewKind.DIFFERENCE) {
             paintLegend(g2, front.heatScale);
         } else if (front.view == ViewKind.SPLIT) {
-            paintDivider(g2, (int) Math.round(front.splitFraction * w), h, front.render.mode().id());
+            paintDivider(g2, (int) Math.round(front.splitFraction * w), h, splitLabels(front.render.mode()));
         }
     }
 
-    private static void paintDivider(Graphics2D g, int x, int h, String left) {
+    /**
+     * The names of the split view's halves, left and right: the path shown, and the per-pixel path —
+     * one name for the per-pixel path on both sides when it is the path shown.
+     */
+    static String[] splitLabels(RenderMode mode) {
+        return mode == RenderMode.PERSPECTIVE ? new String[] {"per-pixel (this path)", "per-pixel (reference)"}
+                : new String[] {mode.id(), "per-pixel"};
+    }
+
+    private static void paintDivider(Graphics2D g, int x, int h, String[] labels) {
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
         g.setColor(new Color(0, 0, 0, 120));
         g.setStroke(new BasicStroke(3));
@@ -55,14 +64,14 @@ public final class FramePainter {
         g.drawLine(x, 0, x, h);
         g.fillOval(x - 6, h / 2 - 6, 12, 12);
         g.setFont(g.getFont().deriveFont(Font.BOLD, 13f));
-        label(g, left, x - 10 - g.getFontMetrics().stringWidth(left), 22);
-        label(g, "per-pixel", x + 10, 22);
+        label(g, labels[0], x - 10 - g.getFontMetrics().stringWidth(labels[0]), 22);
+        label(g, labels[1], x + 10, 22);
     }
 
     private static void paintLegend(Graphics2D g, HeatScale scale) {
         int x = 14;
         int y = 14;
-        int barW = 220;
+        int barW = 260;
         int barH = 14;
         g.setColor(new Color(0, 0, 0, 150));
         g.fillRoundRect(x - 8, y - 8, barW + 16, barH + 44, 10, 10);
@@ -72,16 +81,15 @@ public final class FramePainter {
         }
         g.setColor(Color.WHITE);
         g.setFont(g.getFont().deriveFont(11f));
-        g.drawString(HeatScale.number(scale.minPixels()), x, y + barH + 14);
-        if (scale.logarithmic()) {
-            // Decade ticks, so that the log scale reads as one.
-            for (int d = 1; d < HeatScale.DECADES; d++) {
-                int tx = x + (int) Math.round((barW - 1) * (double) d / HeatScale.DECADES);
-                g.drawLine(tx, y + barH, tx, y + barH + 3);
-            }
+        java.awt.FontMetrics fm = g.getFontMetrics();
+        // A label at every decade (log) or at the ends and middle (linear), with a tick; the top "≥".
+        for (HeatScale.Label l : scale.labels()) {
+            int tx = x + (int) Math.round((barW - 1) * l.fraction());
+            g.drawLine(tx, y + barH, tx, y + barH + 3);
         }
-        String end = HeatScale.number(scale.maxPixels()) + " px";
-        g.drawString(end, x + barW - g.getFontMetrics().stringWidth(end), y + barH + 14);
+        for (HeatScale.Placed p : HeatScale.layout(scale.labels(), barW, fm::stringWidth, 6)) {
+            g.drawString(p.text(), x + p.x(), y + barH + 14);
+        }
         g.drawString((scale.logarithmic() ? "log" : "linear") + " displacement vs per-pixel; grey: not comparable",
                 x, y + barH + 29);
     }
