@@ -5,7 +5,12 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import dev.trisect.content.DemoScenes;
+import dev.trisect.content.SceneAsset;
+import dev.trisect.math.Viewport;
 import dev.trisect.perf.BudgetController;
+import dev.trisect.pipeline.FrameRenderer;
+import dev.trisect.render.Framebuffer;
 import dev.trisect.render.FrameStats;
 import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
@@ -87,5 +92,28 @@ class BudgetHookTest {
         assertTrue(last.threshold() < ceiling, "it refined: " + last.threshold());
         assertEquals(BudgetController.Limit.PIECE_BUDGET, last.limit());
         assertEquals("piece budget", last.reason());
+    }
+
+    @Test
+    void onTheDemoAGenerousTargetNeverDrivesAFrameOverItsPieceBudget() {
+        // Any frame beats 10 s, so time alone would refine to the floor: the piece budget must stop it.
+        SceneAsset demo = DemoScenes.demo();
+        BudgetHook hook = new BudgetHook();
+        ViewState.Budget generous = new ViewState.Budget(true, 10_000);
+        Framebuffer fb = new Framebuffer(480, 270);
+        ViewState.BudgetChoice last = null;
+        try (FrameRenderer r = new FrameRenderer(2)) {
+            for (int i = 0; i < 120; i++) {
+                RenderSettings s = hook.apply(USER, generous);
+                FrameStats st = r.render(demo.mesh(), demo.textureArray(),
+                        demo.camera().viewProjection(new Viewport(480, 270)), s, fb);
+                assertTrue(!st.budgetReached(), "frame " + i + " at " + s.tessellation().maxEdge() + " px: "
+                        + (st.pieces() + st.piecesOffScreen()) + " pieces of " + st.pieceBudget());
+                last = hook.frameDone(st);
+            }
+        }
+        assertEquals(BudgetController.Limit.PIECE_BUDGET, last.limit(), "held there by the budget");
+        assertTrue(last.threshold() > BudgetController.floorFor(SplitPolicy.EDGE, 32), "above the floor: "
+                + last.threshold());
     }
 }
