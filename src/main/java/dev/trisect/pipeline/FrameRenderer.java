@@ -62,6 +62,8 @@ public final class FrameRenderer implements AutoCloseable {
     private int drawnHeight;
     /** The one draw of {@link #render(Mesh, Texture[], Mat4, RenderSettings, Framebuffer)}, reused. */
     private final Draws single = new Draws();
+    /** Set by {@link #close}: every later call throws instead of reading what the closed renderer kept. */
+    private volatile boolean closed;
 
     /** A renderer using every available processor. */
     public FrameRenderer() {
@@ -111,6 +113,7 @@ public final class FrameRenderer implements AutoCloseable {
      * @return what the frame did ({@code trianglesIn} counts every draw's triangles)
      */
     public FrameStats render(Draws draws, RenderSettings settings, Framebuffer frame) {
+        checkOpen();
         long start = System.nanoTime();
         drawn = null;
         FrameGeometry.Result g = geometry.run(draws, settings, frame.width(), frame.height(), pool);
@@ -134,6 +137,7 @@ public final class FrameRenderer implements AutoCloseable {
      * @return the piece, or null when none holds the pixel
      */
     public PieceInfo pieceAt(int x, int y, int triangle, double depth) {
+        checkOpen();
         return PieceLookup.find(geometry.chunks(), drawnChunks(), x, y, triangle, depth);
     }
 
@@ -146,6 +150,7 @@ public final class FrameRenderer implements AutoCloseable {
      * @return the piece, or null when no fallback piece's outline lights the pixel
      */
     public PieceInfo fallbackOutlineAt(int x, int y, double depth) {
+        checkOpen();
         return PieceLookup.fallbackOutline(geometry.chunks(), drawnChunks(), x, y, drawnHeight, depth);
     }
 
@@ -158,6 +163,7 @@ public final class FrameRenderer implements AutoCloseable {
      *         holds the pixel
      */
     public RowKnots knotsAt(int x, int y, int triangle, double depth) {
+        checkOpen();
         if (drawnSpanError <= 0) {
             return null;
         }
@@ -174,8 +180,16 @@ public final class FrameRenderer implements AutoCloseable {
      * also gets its knot ticks, at the knots that frame's fill placed.
      *
      * @return nanoseconds it took
+     * @throws IllegalArgumentException when {@code frame} is not the size of the frame last drawn
      */
     public long drawBorders(Framebuffer frame, BorderStyle style, TessellationSettings tessellation) {
+        checkOpen();
+        if (drawn != null && (frame.width() != drawnWidth || frame.height() != drawnHeight)) {
+            // The pieces are in the drawn frame's pixels: in another frame they would land anywhere.
+            throw new IllegalArgumentException("the framebuffer is " + frame.width() + "x" + frame.height()
+                    + " but the frame last drawn was " + drawnWidth + "x" + drawnHeight
+                    + ": outline the framebuffer that was rendered");
+        }
         long start = System.nanoTime();
         outlines.drawAll(frame, geometry.chunks(), drawnChunks(), style, tessellation, drawnSpanError, pool);
         return System.nanoTime() - start;
@@ -190,6 +204,7 @@ public final class FrameRenderer implements AutoCloseable {
      */
     public int[] coverage(Mesh mesh, Texture[] textures, Mat4 viewProjection, RenderSettings settings,
                           int width, int height) {
+        checkOpen();
         drawn = null;
         single.clear();
         single.add(mesh, textures, viewProjection);
@@ -210,9 +225,16 @@ public final class FrameRenderer implements AutoCloseable {
         return geometry.chunks().retainedTriangleCapacity();
     }
 
-    /** Stops the renderer's threads; later calls to draw throw {@link IllegalStateException}. */
+    /** Stops the renderer's threads; every later call throws {@link IllegalStateException}. */
     @Override
     public void close() {
+        closed = true;
         pool.close();
+    }
+
+    private void checkOpen() {
+        if (closed) {
+            throw new IllegalStateException("this FrameRenderer is closed: its threads have stopped");
+        }
     }
 }

@@ -65,7 +65,9 @@ import javax.swing.SwingUtilities;
  * controls, frame-time target — may be called from any thread at any time; each takes effect from
  * the next frame. The render thread starts when the view is added to a shown window and stops when
  * it is removed from it or {@link #close closed}; it draws into frames of its own and hands them to
- * the event thread without tearing, at the screen's device pixels on HiDPI displays.
+ * the event thread without tearing, at the screen's device pixels on HiDPI displays. A closed view
+ * stays closed: its setters, {@code showDevTools(true)} and {@code createDevToolsPanel} then throw
+ * {@link IllegalStateException}; make a new view instead.
  *
  * <p><b>Input.</b> Its built-in {@link CameraControls} fly (the default) or orbit the camera, or
  * stay out of the way. Its commands ({@link ViewAction}: the texturing path, the polygon borders,
@@ -190,6 +192,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * @param scene what to show
      */
     public void setScene(Scene scene) {
+        checkOpen();
         state.scene(Objects.requireNonNull(scene, "scene is null: use new Scene() for an empty one"));
     }
 
@@ -209,6 +212,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * @param camera where to look from, world space
      */
     public void setCamera(Camera camera) {
+        checkOpen();
         state.camera(Objects.requireNonNull(camera, "camera is null"));
         // A camera put somewhere by the program ends an auto-orbit.
         state.input.orbit(false);
@@ -231,6 +235,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * @param settings how to draw; change the current ones with {@code getRenderSettings().with...}
      */
     public void setRenderSettings(RenderSettings settings) {
+        checkOpen();
         Objects.requireNonNull(settings, "settings");
         state.updateSettings(s -> s.withRender(settings));
         controller.settingsChangedLater();
@@ -253,6 +258,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * @param scale greater than 0, at most 1 (the default)
      */
     public void setRenderScale(double scale) {
+        checkOpen();
         if (!(scale > 0 && scale <= 1)) {
             throw new IllegalArgumentException("render scale must be greater than 0 and at most 1, got " + scale);
         }
@@ -277,6 +283,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * @param milliseconds the target, greater than 0 and at most 1000; or 0
      */
     public void setFrameTimeTarget(double milliseconds) {
+        checkOpen();
         if (milliseconds == 0) {
             state.budget(new ViewState.Budget(false, state.budget().targetMs()));
         } else if (milliseconds > 0 && milliseconds <= 1000) {
@@ -304,6 +311,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * @param controls fly (the default), orbit, or {@link CameraControls#NONE} to leave the camera to the program
      */
     public void setCameraControls(CameraControls controls) {
+        checkOpen();
         state.controls(ViewState.Controls.valueOf(Objects.requireNonNull(controls, "controls").name()));
         if (SwingUtilities.isEventDispatchThread()) {
             enableMovement();
@@ -465,6 +473,9 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * @param on whether to show it
      */
     public void showDevTools(boolean on) {
+        if (on) {
+            checkOpen();
+        }
         controller.showDevTools(on);
     }
 
@@ -485,6 +496,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * @return a new panel of the developer tools
      */
     public JComponent createDevToolsPanel() {
+        checkOpen();
         return new DevToolsPanel(controller);
     }
 
@@ -510,6 +522,12 @@ public class TrisectView extends JComponent implements AutoCloseable {
             controller.stop();
         }
         SwingUtilities.invokeLater(this::disposeTools);
+    }
+
+    private void checkOpen() {
+        if (closed) {
+            throw new IllegalStateException("this TrisectView is closed: make a new one");
+        }
     }
 
     /**

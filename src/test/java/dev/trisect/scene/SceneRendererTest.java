@@ -171,6 +171,15 @@ class SceneRendererTest {
         IllegalStateException closed = assertThrows(IllegalStateException.class,
                 () -> r.render(new Scene(), CAMERA, PERSPECTIVE, new Framebuffer(4, 4)));
         assertEquals("this SceneRenderer is closed", closed.getMessage());
+        assertEquals("this SceneRenderer is closed",
+                assertThrows(IllegalStateException.class, () -> r.pick(0, 0)).getMessage());
+        try (SceneRenderer open = new SceneRenderer(1)) {
+            open.render(new Scene(), CAMERA, PERSPECTIVE, new Framebuffer(8, 6));
+            assertEquals("pixel (8, 0) is outside the last frame, 8x6",
+                    assertThrows(IllegalArgumentException.class, () -> open.pick(8, 0)).getMessage());
+            assertEquals("pixel (0, -1) is outside the last frame, 8x6",
+                    assertThrows(IllegalArgumentException.class, () -> open.pick(0, -1)).getMessage());
+        }
         assertThrows(IllegalArgumentException.class, () -> SceneRenderer.renderImage(new Scene(), CAMERA, 0, 10));
         Group g = new Group();
         Group inner = new Group();

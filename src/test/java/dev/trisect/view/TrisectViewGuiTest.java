@@ -7,17 +7,17 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.GuiTests;
 import dev.trisect.content.AssetScenes;
-import dev.trisect.math.Vec3;
-import dev.trisect.render.RenderMode;
-import dev.trisect.scene.Camera;
 import dev.trisect.content.DemoScenes;
 import dev.trisect.math.Vec3;
 import dev.trisect.render.RenderMode;
+import dev.trisect.render.RenderSettings;
 import dev.trisect.scene.Camera;
+import dev.trisect.scene.Scene;
 import dev.trisect.view.internal.ViewController;
 import java.awt.BorderLayout;
 import java.awt.Dimension;
@@ -40,6 +40,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.function.Executable;
 
 /**
  * The view embedded in a host's own frame beside Swing controls, under an X server: it renders on
@@ -195,6 +196,16 @@ class TrisectViewGuiTest {
         t.join(10_000);
         assertFalse(t.isAlive(), "closed: the render thread ended");
         assertTrue(view.isClosed());
+        List<Executable> refused = List.of(() -> view.setCamera(Camera.looking(new Vec3(0, 1, 3), Vec3.ZERO)),
+                () -> view.setScene(new Scene()), () -> view.setRenderSettings(RenderSettings.defaults()),
+                () -> view.setRenderScale(1), () -> view.setFrameTimeTarget(0),
+                () -> view.setCameraControls(CameraControls.ORBIT));
+        for (Executable call : refused) {
+            assertEquals("this TrisectView is closed: make a new one",
+                    assertThrows(IllegalStateException.class, call).getMessage());
+        }
+        edt(() -> assertEquals("this TrisectView is closed: make a new one",
+                assertThrows(IllegalStateException.class, view::createDevToolsPanel).getMessage()));
         edt(() -> {
             host.getContentPane().remove(view);
             host.getContentPane().add(view, BorderLayout.CENTER);
