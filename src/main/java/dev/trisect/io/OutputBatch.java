@@ -140,6 +140,10 @@ public final class OutputBatch implements AutoCloseable {
             e.written = true;
             ok = true;
         } catch (IOException ex) {
+            synchronized (LOCK) {
+                // The hook closed the file under this write.
+                checkOpen();
+            }
             throw OutputFiles.cannotWrite(out, OutputFiles.reason(ex, e.target.getParent()), ex);
         } finally {
             if (!ok) {
@@ -183,9 +187,7 @@ public final class OutputBatch implements AutoCloseable {
                 Path candidate = Temporaries.name(target);
                 try {
                     synchronized (LOCK) {
-                        if (shuttingDown) {
-                            throw new IOException("the program is being stopped");
-                        }
+                        checkOpen();
                         // A name of our own with CREATE_NEW rather than Files.createTempFile, whose 0600 mode
                         // would stick to a new file; this one gets the usual permissions from the umask.
                         e.channel = FileChannel.open(candidate, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
@@ -243,7 +245,14 @@ public final class OutputBatch implements AutoCloseable {
         return p;
     }
 
+    /**
+     * Refuses to go on once the program is being stopped (SIGTERM, SIGINT): the shutdown hook has deleted
+     * the temporary files, and the command ends with this one line rather than an internal error.
+     */
     private void checkOpen() {
+        if (shuttingDown) {
+            throw stopped();
+        }
         if (done) {
             throw new IllegalStateException("the batch is committed or closed");
         }
@@ -268,9 +277,7 @@ public final class OutputBatch implements AutoCloseable {
      */
     public void commit() {
         synchronized (LOCK) {
-            if (done || shuttingDown) {
-                throw new IllegalStateException(done ? "the batch is committed or closed" : "shutting down");
-            }
+            checkOpen();
             List<Path[]> backups = new ArrayList<>();
             List<Path> placed = new ArrayList<>();
             Path failed = null;
@@ -308,6 +315,10 @@ public final class OutputBatch implements AutoCloseable {
             releaseAll(this);
             OPEN.remove(this);
         }
+    }
+
+    private static InputException stopped() {
+        return new InputException("stopped: no output was written or changed");
     }
 
     /** The shutdown hook: waits for a commit in progress, then deletes every open batch's temporaries. */

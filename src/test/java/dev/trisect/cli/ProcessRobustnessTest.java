@@ -76,6 +76,20 @@ class ProcessRobustnessTest {
 
     @Test
     @Timeout(value = 120, unit = TimeUnit.SECONDS)
+    void aCommandStoppedBySigtermWhileWritingEndsWithOneLineNotAnInternalError() throws Exception {
+        Path out = Files.writeString(dir.resolve("x.ppm"), "OLD");
+        Process p = java(dir, List.of(), "dev.trisect.io.AbandonedBatch", out.toString());
+        String stdout = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        String err = drain(p);
+        assertEquals(0, p.exitValue(), err);
+        String stopped = "stopped: no output was written or changed";
+        assertEquals(List.of(stopped, stopped, stopped), stdout.strip().lines().toList());
+        assertEquals("OLD", Files.readString(out));
+        assertEquals(List.of("x.ppm"), listing(), "the hook deleted the temporary files");
+    }
+
+    @Test
+    @Timeout(value = 120, unit = TimeUnit.SECONDS)
     void demoWithoutAnXServerIsOneLine() throws Exception {
         String display = ":97";
         assumeTrue(!Files.exists(Path.of("/tmp/.X11-unix/X97")), "display :97 is free");
