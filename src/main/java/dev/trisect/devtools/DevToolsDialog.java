@@ -23,6 +23,7 @@ public final class DevToolsDialog extends JDialog {
     private static final long serialVersionUID = 1L;
 
     private final DevToolsPanel panel;
+    private boolean folded;
 
     /** A tools window owned by {@code owner} (the view's window; may be null). */
     public DevToolsDialog(Window owner, ViewController controller) {
@@ -55,24 +56,44 @@ public final class DevToolsDialog extends JDialog {
         return new Dimension(width, height);
     }
 
+    /** The window's size for its content now, its top at {@code top}. */
+    private Dimension size(Rectangle usable, int top) {
+        Dimension content = panel.scrollPane().getViewport().getView().getPreferredSize();
+        Insets frame = getInsets();
+        return fit(new Dimension(content.width + frame.left + frame.right,
+                content.height + frame.top + frame.bottom), panel.scrollPane().getVerticalScrollBar()
+                .getPreferredSize().width, usable, top);
+    }
+
     /**
      * Places the window to the right of {@code main} (or inside the screen), sized to fit, and shows
-     * it; without {@code main}, at the screen's top right.
+     * it; without {@code main}, at the screen's top right. The first time, sections are folded (the
+     * least used first) until the rest fit the screen's height, so that none is cut off.
      */
     public void showBeside(Window main) {
         Rectangle usable = GraphicsEnvironment.getLocalGraphicsEnvironment().getMaximumWindowBounds();
-        Dimension content = panel.scrollPane().getViewport().getView().getPreferredSize();
-        Insets frame = getInsets();
         int top = main == null ? usable.y : main.getY();
-        Dimension size = fit(new Dimension(content.width + frame.left + frame.right,
-                content.height + frame.top + frame.bottom), panel.scrollPane().getVerticalScrollBar()
-                .getPreferredSize().width, usable, top);
-        setSize(size);
+        if (!folded) {
+            folded = true;
+            Insets frame = getInsets();
+            panel.foldToFit(usable.y + usable.height - Math.max(usable.y, top) - frame.top - frame.bottom);
+        }
+        setSize(size(usable, top));
         int x = main == null ? usable.x + usable.width : main.getX() + main.getWidth();
         if (x + getWidth() > usable.x + usable.width) {
             x = Math.max(usable.x, usable.x + usable.width - getWidth());
         }
         setLocation(x, Math.max(usable.y, Math.min(top, usable.y + usable.height - getHeight())));
         setVisible(true);
+    }
+
+    /** Resizes the window to its content (after a section was folded or opened), where it stands. */
+    void refit() {
+        if (!isShowing()) {
+            return;
+        }
+        Rectangle usable = GraphicsEnvironment.getLocalGraphicsEnvironment().getMaximumWindowBounds();
+        setSize(size(usable, getY()));
+        validate();
     }
 }

@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.function.Consumer;
 import javax.swing.BorderFactory;
 import javax.swing.Box;
+import javax.swing.JComponent;
 import javax.swing.BoxLayout;
 import javax.swing.JPanel;
 import javax.swing.JScrollPane;
@@ -64,6 +65,7 @@ public final class DevToolsPanel extends JPanel {
         // One wheel notch moves about three rows, not the default few pixels.
         scroll.getVerticalScrollBar().setUnitIncrement(WHEEL_PIXELS);
         add(scroll, BorderLayout.CENTER);
+        ToolsForm.wrapTooltips(this);
         // The view's keys work here too while a control of the tools has the keyboard (a number field
         // keeps the keys that type for itself).
         owner.commands().bind(getInputMap(WHEN_ANCESTOR_OF_FOCUSED_COMPONENT), getActionMap());
@@ -113,6 +115,27 @@ public final class DevToolsPanel extends JPanel {
     void refresh() {
         for (ToolSection s : sections) {
             s.refresh(owner.state().progress(), owner.front(), owner.state().measurement());
+        }
+    }
+
+    /**
+     * Sections folded first when the tools do not fit their window's height, least used first; the
+     * overlay, compare and statistics sections are never folded for room.
+     */
+    private static final List<Class<? extends ToolSection>> FOLD_FIRST = List.of(RenderSection.class,
+            CameraSection.class, BudgetSection.class, TimingSection.class, ModeSection.class, SplitPolicySection.class);
+
+    /** Folds sections, least used first, until the content is at most {@code height} pixels tall (or none is left). */
+    void foldToFit(int height) {
+        JComponent content = (JComponent) scroll.getViewport().getView();
+        for (Class<? extends ToolSection> type : FOLD_FIRST) {
+            if (content.getPreferredSize().height <= height) {
+                return;
+            }
+            ToolsForm.of(section(type).component()).setOpen(false);
+            // Before the window is first laid out nothing is valid, so nothing passes the change up: say it here.
+            section(type).component().invalidate();
+            content.invalidate();
         }
     }
 

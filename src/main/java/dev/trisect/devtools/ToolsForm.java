@@ -1,5 +1,7 @@
 package dev.trisect.devtools;
 
+import java.awt.BorderLayout;
+import java.awt.Color;
 import java.awt.Component;
 import java.awt.Font;
 import java.awt.GridBagConstraints;
@@ -9,29 +11,120 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.function.IntConsumer;
 import javax.swing.BorderFactory;
+import javax.swing.JButton;
+import javax.swing.JComponent;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JSlider;
 import javax.swing.SwingConstants;
+import javax.swing.SwingUtilities;
 
 /**
- * The developer tools' form layout: titled sections of label/value rows, monospaced readouts, and
- * sliders that report changes made by the user but not those made while showing settings.
+ * The developer tools' form layout: sections of label/value rows under a header that folds the section
+ * away and opens it again (the window then refits), monospaced readouts, and sliders that report
+ * changes made by the user but not those made while showing settings.
  */
 final class ToolsForm {
+    private static final String OPEN = "\u25BE ";
+    private static final String SHUT = "\u25B8 ";
+    private final String title;
+    private final JPanel outer = new JPanel(new BorderLayout());
+    private final JButton header = new JButton();
     private final JPanel panel;
     private final Map<String, JLabel> readouts = new LinkedHashMap<>();
     private int rows;
 
     ToolsForm(String title) {
+        this.title = title;
         panel = new JPanel(new GridBagLayout());
-        panel.setBorder(BorderFactory.createCompoundBorder(BorderFactory.createTitledBorder(title),
-                BorderFactory.createEmptyBorder(2, 4, 4, 4)));
-        panel.setAlignmentX(Component.LEFT_ALIGNMENT);
+        panel.setBorder(BorderFactory.createEmptyBorder(0, 4, 6, 4));
+        header.setHorizontalAlignment(SwingConstants.LEFT);
+        header.setBorderPainted(false);
+        header.setContentAreaFilled(false);
+        header.setFocusable(false);
+        header.setFont(header.getFont().deriveFont(Font.BOLD));
+        header.setMargin(new Insets(0, 2, 0, 2));
+        header.setToolTipText("Fold this section away, or open it");
+        header.addActionListener(e -> setOpen(!open()));
+        outer.add(header, BorderLayout.NORTH);
+        outer.add(panel, BorderLayout.CENTER);
+        outer.setBorder(BorderFactory.createMatteBorder(1, 0, 0, 0, new Color(128, 128, 128, 90)));
+        outer.setAlignmentX(Component.LEFT_ALIGNMENT);
+        outer.putClientProperty(ToolsForm.class, this);
+        setOpen(true);
     }
 
+    /** The section's whole panel: its header and its rows. */
     JPanel panel() {
-        return panel;
+        return outer;
+    }
+
+    /** The form of a section's panel, or null if it has none. */
+    static ToolsForm of(java.awt.Component sectionPanel) {
+        return sectionPanel instanceof JComponent c && c.getClientProperty(ToolsForm.class) instanceof ToolsForm f ? f
+                : null;
+    }
+
+    String title() {
+        return title;
+    }
+
+    boolean open() {
+        return panel.isVisible();
+    }
+
+    /** Opens or folds the section; a tools window holding it refits to its new height. */
+    void setOpen(boolean on) {
+        panel.setVisible(on);
+        header.setText((on ? OPEN : SHUT) + title);
+        outer.revalidate();
+        if (SwingUtilities.getWindowAncestor(outer) instanceof DevToolsDialog d) {
+            SwingUtilities.invokeLater(d::refit);
+        }
+    }
+
+    /** The header that folds the section, for tests. */
+    JButton header() {
+        return header;
+    }
+
+    /** Characters a tooltip line holds at most before it wraps (about 420 pixels). */
+    static final int TIP_LINE = 64;
+
+    /**
+     * Wraps every long plain tooltip under {@code root} into lines of at most {@link #TIP_LINE}
+     * characters, so that none runs across the screen.
+     */
+    static void wrapTooltips(Component root) {
+        if (root instanceof JComponent c) {
+            String tip = c.getToolTipText();
+            if (tip != null && !tip.startsWith("<html>") && tip.length() > TIP_LINE) {
+                c.setToolTipText(wrap(tip, TIP_LINE));
+            }
+        }
+        if (root instanceof java.awt.Container parent) {
+            for (Component child : parent.getComponents()) {
+                wrapTooltips(child);
+            }
+        }
+    }
+
+    /** {@code text} as HTML in lines of at most {@code width} characters, broken between words (a longer word alone). */
+    static String wrap(String text, int width) {
+        StringBuilder out = new StringBuilder("<html>");
+        int line = 0;
+        for (String word : text.split(" ")) {
+            if (line > 0 && line + 1 + word.length() > width) {
+                out.append("<br>");
+                line = 0;
+            } else if (line > 0) {
+                out.append(' ');
+                line++;
+            }
+            out.append(word.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;"));
+            line += word.length();
+        }
+        return out.append("</html>").toString();
     }
 
     /** A right-aligned monospaced value label. */
@@ -58,6 +151,10 @@ final class ToolsForm {
         c.weightx = right == null ? 1 : 0.6;
         c.gridwidth = right == null ? 2 : 1;
         panel.add(left, c);
+        if (right instanceof NumberField field && field.getToolTipText() == null && left instanceof JLabel l
+                && l.getToolTipText() != null) {
+            field.setToolTipText(l.getToolTipText() + "; type a number and press Enter");
+        }
         if (right != null) {
             c.gridx = 1;
             c.weightx = 0.4;

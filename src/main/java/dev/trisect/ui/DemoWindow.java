@@ -194,7 +194,26 @@ final class DemoWindow {
         bar.add(file);
         bar.add(viewMenu);
         bar.add(render);
+        for (JMenu m : List.of(file, viewMenu, render)) {
+            for (java.awt.Component item : m.getMenuComponents()) {
+                if (item instanceof JMenuItem i && i.getToolTipText() != null) {
+                    i.setToolTipText(wrapped(i.getToolTipText()));
+                }
+            }
+        }
         return bar;
+    }
+
+    /** A tooltip in lines of at most 64 characters, so that none runs across the screen. */
+    static String wrapped(String tip) {
+        StringBuilder out = new StringBuilder("<html>");
+        int line = 0;
+        for (String word : tip.replace("&", "&amp;").replace("<", "&lt;").split(" ")) {
+            boolean breakHere = line > 0 && line + 1 + word.length() > 64;
+            out.append(breakHere ? "<br>" : line > 0 ? " " : "").append(word);
+            line = (breakHere || line == 0 ? 0 : line + 1) + word.length();
+        }
+        return out.append("</html>").toString();
     }
 
     private void radioGroup(JMenu menu, ViewAction... actions) {

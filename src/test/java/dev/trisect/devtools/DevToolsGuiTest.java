@@ -115,6 +115,16 @@ class DevToolsGuiTest {
 
     /** Clicks a field and waits until it has the keyboard (it then selects its text). */
     private static void focus(NumberField field) throws Exception {
+        // Its section may have been folded to fit the screen: open it.
+        edt(() -> {
+            for (Component p = field; p != null; p = p.getParent()) {
+                ToolsForm f = ToolsForm.of(p);
+                if (f != null && !f.open()) {
+                    f.setOpen(true);
+                }
+            }
+        });
+        waitFor("the field to show", () -> onEdt(field::isShowing));
         click(field);
         waitFor("the field to have the keyboard", () -> onEdt(() -> focusOwner() == field));
     }
@@ -156,5 +166,23 @@ class DevToolsGuiTest {
         boolean borders = state().settings().render().borders();
         type(KeyEvent.VK_B);
         waitFor("B to toggle the borders from the tools", () -> state().settings().render().borders() != borders);
+    }
+
+    @Test
+    void theToolsFitTheScreenWithStatisticsWholeAndFoldedSectionsOpenOnAClick() throws Exception {
+        DevToolsPanel tools = onEdt(() -> dialog().panel());
+        javax.swing.JComponent stats = onEdt(() -> tools.section(StatisticsSection.class).component());
+        waitFor("the window to settle", () -> onEdt(() -> tools.scrollPane().getViewport().getExtentSize().height
+                >= tools.scrollPane().getViewport().getView().getPreferredSize().height));
+        java.awt.Rectangle shown = onEdt(() -> tools.scrollPane().getViewport().getViewRect());
+        java.awt.Rectangle at = onEdt(stats::getBounds);
+        assertTrue(shown.contains(at), "Statistics " + at + " whole in the window's view " + shown);
+        ToolsForm folded = onEdt(() -> ToolsForm.of(tools.section(RenderSection.class).component()));
+        if (!onEdt(folded::open)) {
+            click(onEdt(folded::header));
+            waitFor("the section to open", () -> onEdt(folded::open));
+        }
+        click(onEdt(folded::header));
+        waitFor("the section to fold", () -> onEdt(() -> !folded.open()));
     }
 }

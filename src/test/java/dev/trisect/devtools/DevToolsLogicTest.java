@@ -103,6 +103,47 @@ class DevToolsLogicTest {
     }
 
     @Test
+    void everyTooltipOfTheToolsWrapsIntoShortLines() throws Exception {
+        javax.swing.SwingUtilities.invokeAndWait(() -> {
+            dev.trisect.view.internal.ViewController c = new dev.trisect.view.internal.ViewController(
+                    new ViewState(DemoScenes.boxes()), new dev.trisect.view.internal.ViewController.Surface() {
+                        @Override
+                        public void repaint() {
+                        }
+
+                        @Override
+                        public void inspector(boolean on) {
+                        }
+
+                        @Override
+                        public void showDevTools(boolean on) {
+                        }
+                    }, 1);
+            List<String> tips = new ArrayList<>();
+            collectTips(new DevToolsPanel(c), tips);
+            assertTrue(tips.size() > 30, tips.size() + " tooltips");
+            for (String tip : tips) {
+                for (String line : tip.replaceAll("</?html>", "").split("<br>")) {
+                    assertTrue(line.length() <= ToolsForm.TIP_LINE + 8, "a tooltip line of " + line.length()
+                            + " characters: " + line);
+                }
+            }
+        });
+        assertEquals("<html>a b<br>ccc<br>&lt;d&gt;</html>", ToolsForm.wrap("a b ccc <d>", 4));
+    }
+
+    private static void collectTips(java.awt.Component c, List<String> out) {
+        if (c instanceof javax.swing.JComponent j && j.getToolTipText() != null && !j.getToolTipText().isEmpty()) {
+            out.add(j.getToolTipText());
+        }
+        if (c instanceof java.awt.Container p) {
+            for (java.awt.Component child : p.getComponents()) {
+                collectTips(child, out);
+            }
+        }
+    }
+
+    @Test
     void theCameraReadoutIsRoundedToTheMillimetre() {
         assertEquals("0.500, 1.800, -6.123", CameraSection.rounded(new Vec3(0.49999999999, 1.8000000001, -6.12345678)));
         assertEquals("0.000, 0.000, 0.000", CameraSection.rounded(new Vec3(-1e-9, 0, 1e-12)));

@@ -1,6 +1,7 @@
 package dev.trisect.ui;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 
 import java.nio.file.Files;
@@ -63,5 +64,14 @@ class DemoLogicTest {
         dev.trisect.render.RenderSettings r = dev.trisect.render.RenderSettings.defaults()
                 .withMode(dev.trisect.render.RenderMode.SPANS).withFilter(dev.trisect.texture.TextureFilter.BILINEAR);
         assertEquals("spans, bilinear", DemoWindow.pathAndFilter(r));
+    }
+    @Test
+    void menuTooltipsWrap() {
+        String tip = DemoWindow.wrapped("Show what the pixel under the mouse is made of (click to pin it): triangle, piece, "
+                + "split level, depth, texel coordinates in both paths, exact displacement & more");
+        for (String line : tip.replaceAll("</?html>", "").split("<br>")) {
+            assertTrue(line.length() <= 64 + 4, line);
+        }
+        assertTrue(tip.contains("&amp; more") && tip.startsWith("<html>Show what"), tip);
     }
 }
