@@ -62,6 +62,22 @@ public final class DrawnFrame {
         return camera;
     }
 
+    /**
+     * Which object a frame triangle belongs to, for readouts such as the pixel inspector.
+     *
+     * @param name     the object's name, or null when it has none
+     * @param draw     the object's place in the frame's draw order, 0-based
+     * @param triangle the triangle's index in the object's own mesh, 0-based
+     */
+    public record Owner(String name, int draw, int triangle) {
+    }
+
+    /** The object frame triangle {@code id} (0-based, numbered across the draws) belongs to. */
+    public Owner ownerOf(int id) {
+        int k = draws.drawOf(id);
+        return new Owner(placed.get(k).object().name(), k, id - draws.firstTriangle(k));
+    }
+
     /** The texture frame triangle {@code id} was drawn with. */
     public Texture textureOf(int id) {
         int k = draws.drawOf(id);

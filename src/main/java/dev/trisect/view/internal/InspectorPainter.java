@@ -2,6 +2,7 @@ package dev.trisect.view.internal;
 
 import dev.trisect.pipeline.PieceInfo;
 import dev.trisect.raster.RowKnots;
+import dev.trisect.scene.internal.DrawnFrame;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
@@ -26,6 +27,18 @@ public final class InspectorPainter {
     private InspectorPainter() {
     }
 
+    /**
+     * A triangle as the user knows it: its object's name (or place in draw order when it has none) and its
+     * index in that object's own mesh; the frame-wide number only when the object is not known.
+     */
+    static String triangleOf(DrawnFrame.Owner owner, int frameTriangle) {
+        if (owner == null) {
+            return "triangle " + frameTriangle;
+        }
+        String object = owner.name() != null ? "\"" + owner.name() + "\"" : "object " + (owner.draw() + 1);
+        return object + " triangle " + owner.triangle();
+    }
+
     /** The inspector's readout lines for an inspection (also what tests check). */
     static List<String> lines(PixelInspector.Inspection in, boolean pinned) {
         List<String> l = new ArrayList<>();
@@ -34,14 +47,15 @@ public final class InspectorPainter {
         PieceInfo mark = in.outline();
         if (mark != null) {
             // The magenta mark on the pixel belongs to this piece, which may not be the pixel's own.
-            l.add("magenta outline: piece " + mark.index() + " of triangle " + mark.triangle() + ", " + perPixel(mark));
+            l.add("magenta outline: piece " + mark.index() + " of " + triangleOf(in.outlineOwner(), mark.triangle()) + ", "
+                    + perPixel(mark));
         }
         if (in.triangle() < 0) {
             l.add("background: nothing drawn");
             return l;
         }
         PieceInfo p = in.piece();
-        l.add("triangle " + in.triangle() + (p == null ? "" : ", piece " + p.index() + ", split level " + p.level()
+        l.add(triangleOf(in.owner(), in.triangle()) + (p == null ? "" : ", piece " + p.index() + ", split level " + p.level()
                 + (p.fallback() ? ", " + perPixel(p) : "")));
         l.add(String.format(Locale.ROOT, "depth w %.4f", in.w()));
         l.add(String.format(Locale.ROOT, "texel s,t this path %.3f, %.3f", in.s(), in.t()));

@@ -5,11 +5,11 @@ import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.PieceInfo;
 import dev.trisect.raster.RowKnots;
 import dev.trisect.render.Framebuffer;
+import dev.trisect.scene.internal.DrawnFrame;
 import dev.trisect.texture.internal.Lod;
 import dev.trisect.texture.MipChain;
 import dev.trisect.texture.Texture;
 import dev.trisect.texture.TextureFilter;
-import java.util.function.IntFunction;
 
 /**
  * The pixel inspector's numbers for one pixel, read from the renderer's own buffers of the frame just
@@ -27,7 +27,10 @@ public final class PixelInspector {
      * @param x            frame pixel column
      * @param y            frame pixel row (0 at the top)
      * @param argb         its colour in this path
-     * @param triangle     input triangle, 0-based, or -1 where nothing was drawn
+     * @param triangle     input triangle, 0-based, numbered across the frame's objects, or -1 where nothing
+     *                     was drawn
+     * @param owner        the object that triangle belongs to and its index in the object's mesh; null
+     *                     where nothing was drawn
      * @param w            view depth, view-space units (1 / the depth buffer's 1/w)
      * @param s            this path's level-0 texel coordinate s (before wrapping)
      * @param t            and t
@@ -43,10 +46,11 @@ public final class PixelInspector {
      * @param outline      with the borders on, the piece filled per pixel (a sliver, or one a cap stopped
      *                     short) whose magenta outline lights this pixel, the last drawn when several do;
      *                     else null. It explains a magenta mark the pixel's own piece does not.
+     * @param outlineOwner the object of that outline's triangle, or null without an outline
      */
-    public record Inspection(int x, int y, int argb, int triangle, double w, double s, double t, double refS, double refT,
-                      double displacement, PieceInfo piece, double lambda, int mipLevel, int texelX, int texelY,
-                      RowKnots knots, PieceInfo outline) {
+    public record Inspection(int x, int y, int argb, int triangle, DrawnFrame.Owner owner, double w, double s, double t,
+                      double refS, double refT, double displacement, PieceInfo piece, double lambda, int mipLevel,
+                      int texelX, int texelY, RowKnots knots, PieceInfo outline, DrawnFrame.Owner outlineOwner) {
         /** The span segment holding the pixel (the index of its first knot), or -1 (not the span path, or a lone knot). */
         public int segment() {
             return knots == null ? -1 : knots.segmentOf(x);
@@ -59,18 +63,20 @@ public final class PixelInspector {
      * @param perspective the frame took the per-pixel path or the span path (whose knots
      *                    {@link FrameRenderer#knotsAt} then gives)
      * @param borders     the borders are drawn over the frame (so fallback pieces' outlines may light the pixel)
+     * @param drawn       the frame's objects: the texture and the object of each frame triangle
      */
     static Inspection inspect(FrameRenderer renderer, Framebuffer frame, Framebuffer reference, TexelToScreen exact,
-                              IntFunction<Texture> textureOf, TextureFilter filter, boolean perspective,
-                              boolean borders, int x, int y) {
+                              DrawnFrame drawn, TextureFilter filter, boolean perspective, boolean borders, int x,
+                              int y) {
         int i = y * frame.width() + x;
         double[] uv = frame.uv();
         int id = (int) uv[3 * i + 2] - 1;
         int argb = frame.color()[i];
         PieceInfo outline = borders ? renderer.fallbackOutlineAt(x, y, frame.depth()[i]) : null;
+        DrawnFrame.Owner outlineOwner = outline == null ? null : drawn.ownerOf(outline.triangle());
         if (id < 0) {
-            return new Inspection(x, y, argb, -1, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN,
-                    Double.NaN, null, Double.NaN, 0, 0, 0, null, outline);
+            return new Inspection(x, y, argb, -1, null, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN,
+                    Double.NaN, null, Double.NaN, 0, 0, 0, null, outline, outlineOwner);
         }
         double q = frame.depth()[i];
         double s = uv[3 * i];
@@ -95,7 +101,7 @@ public final class PixelInspector {
                 lambda = 0.5 * (Lod.lambda(a[0], a[1], a[2], a[3]) + Lod.lambda(b[0], b[1], b[2], b[3]));
             }
         }
-        Texture tex = textureOf.apply(id);
+        Texture tex = drawn.textureOf(id);
         MipChain chain = tex.mipChain();
         int level = 0;
         if (filter == TextureFilter.TRILINEAR && lambda > 0) {
@@ -103,8 +109,8 @@ public final class PixelInspector {
         }
         int tx = Math.floorMod((int) Math.floor(s * chain.scaleS(level)), chain.width(level));
         int ty = Math.floorMod((int) Math.floor(t * chain.scaleT(level)), chain.height(level));
-        return new Inspection(x, y, argb, id, 1 / q, s, t, refS, refT, displacement, piece, lambda, level, tx, ty,
-                knots, outline);
+        return new Inspection(x, y, argb, id, drawn.ownerOf(id), 1 / q, s, t, refS, refT, displacement, piece, lambda,
+                level, tx, ty, knots, outline, outlineOwner);
     }
 
     /**

@@ -302,7 +302,7 @@ public final class RenderLoop implements Runnable {
             int iy = (int) inspected;
             if (ix < fw && iy < fh) {
                 back.inspection = PixelInspector.inspect(renderer, fb, reference,
-                        new TexelToScreen(draws, viewport), drawn::textureOf, settings.render().filter(),
+                        new TexelToScreen(draws, viewport), drawn, settings.render().filter(),
                         settings.render().mode() == RenderMode.PERSPECTIVE
                                 || settings.render().mode() == RenderMode.SPANS,
                         settings.render().borders() && settings.view() != ViewKind.DIFFERENCE, ix, iy);

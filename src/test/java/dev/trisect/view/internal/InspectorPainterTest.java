@@ -18,8 +18,8 @@ class InspectorPainterTest {
         Arrays.fill(f.frame.color(), 0xFF808080);
         // A full readout: a triangle, its piece, both paths' texel coordinates, the displacement, the mip level.
         PieceInfo piece = new PieceInfo(8, 3, 2, false, new double[] {10, 10, 60, 10, 35, 40}, new double[9]);
-        f.inspection = new PixelInspector.Inspection(x, y, 0xFF808080, 3, 2.5, 10.25, 3.5, 10.25, 3.5, 0.125, piece,
-                1.5, 1, 12, 4, null, null);
+        f.inspection = new PixelInspector.Inspection(x, y, 0xFF808080, 3, null, 2.5, 10.25, 3.5, 10.25, 3.5, 0.125,
+                piece, 1.5, 1, 12, 4, null, null, null);
         BufferedImage view = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = view.createGraphics();
         g.drawImage(f.image, 0, 0, null);

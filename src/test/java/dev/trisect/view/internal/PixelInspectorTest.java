@@ -6,14 +6,28 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.content.DemoScenes;
 import dev.trisect.content.SceneAsset;
+import dev.trisect.math.Transform;
+import dev.trisect.math.Vec3;
 import dev.trisect.math.Viewport;
+import dev.trisect.mesh.Mesh;
+import dev.trisect.mesh.Primitives;
 import dev.trisect.metrics.TexelToScreen;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.PieceInfo;
 import dev.trisect.raster.RowKnots;
 import dev.trisect.render.Framebuffer;
 import dev.trisect.render.RenderMode;
+import dev.trisect.render.RenderSettings;
 import dev.trisect.render.SplitPolicy;
+import dev.trisect.scene.Camera;
+import dev.trisect.scene.Material;
+import dev.trisect.scene.Pick;
+import dev.trisect.scene.Scene;
+import dev.trisect.scene.SceneObject;
+import dev.trisect.scene.SceneRenderer;
+import dev.trisect.scene.internal.DrawnFrame;
+import dev.trisect.texture.ProceduralTextures;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 
 /** The pixel inspector's numbers against the renderer's own buffers of the same frame. */
@@ -135,12 +149,47 @@ class PixelInspectorTest {
         PieceInfo sliver = new PieceInfo(7, 3, 1, true, new double[] {10, 10, 60, 10, 35, 10.03}, new double[9]);
         PieceInfo capped = new PieceInfo(8, 3, 2, true, new double[] {10, 10, 60, 10, 35, 40}, new double[9]);
         assertTrue(sliver.sliver());
-        PixelInspector.Inspection on = new PixelInspector.Inspection(35, 10, 0xFFFF00FF, 3, 2, 0, 0, 0, 0, 0, capped, 0,
-                0, 0, 0, null, sliver);
+        PixelInspector.Inspection on = new PixelInspector.Inspection(35, 10, 0xFFFF00FF, 3, null, 2, 0, 0, 0, 0, 0, capped,
+                0, 0, 0, 0, null, sliver, null);
         var lines = InspectorPainter.lines(on, false);
         assertTrue(lines.contains("magenta outline: piece 7 of triangle 3, filled per pixel: a sliver (thinner than 1/16 px)"),
                 lines.toString());
         assertTrue(lines.stream().anyMatch(l -> l.endsWith("piece 8, split level 2, filled per pixel: a cap stopped its "
                 + "splitting")), lines.toString());
+    }
+
+    /**
+     * In a scene of several objects the readout names the object under the pixel and the triangle's index
+     * in that object's own mesh (the frame numbers triangles across all objects), as picking does.
+     */
+    @Test
+    void aMultiObjectSceneNamesTheObjectAndItsOwnTriangle() throws Exception {
+        Scene scene = new Scene();
+        Mesh ground = Primitives.plane(20, 20, 8, 8);
+        SceneObject floor = new SceneObject(ground, Material.of(ProceduralTextures.uvGrid(64)));
+        floor.setName("floor");
+        SceneObject crate = new SceneObject(Primitives.box(1, 1, 1), Material.of(ProceduralTextures.crate(64)),
+                Transform.translation(0, 0.5, 0));
+        crate.setName("crate");
+        scene.add(floor, crate);
+        Camera camera = Camera.looking(new Vec3(0, 1.2, 3), new Vec3(0, 0.5, 0));
+        int x = W / 2;
+        int y = H / 2;
+        FrameSlot f = inspected(new ViewState(scene, camera), x, y);
+        PixelInspector.Inspection in = f.inspection;
+        assertNotNull(in.owner(), "an object under the pixel");
+        assertEquals("crate", in.owner().name());
+        assertEquals(1, in.owner().draw());
+        assertEquals(in.triangle() - ground.triangleCount(), in.owner().triangle(), "counted in the crate's own mesh");
+        try (SceneRenderer r = new SceneRenderer(1)) {
+            r.render(scene, f.camera, RenderSettings.defaults(), new Framebuffer(W, H));
+            Pick pick = r.pick(x, y).orElseThrow();
+            assertEquals(crate, pick.object());
+            assertEquals(pick.triangle(), in.owner().triangle(), "the triangle picking names");
+        }
+        List<String> lines = InspectorPainter.lines(in, false);
+        assertTrue(lines.stream().anyMatch(l -> l.startsWith("\"crate\" triangle " + in.owner().triangle())),
+                lines.toString());
+        assertEquals("object 2 triangle 7", InspectorPainter.triangleOf(new DrawnFrame.Owner(null, 1, 7), 99));
     }
 }
