@@ -19,7 +19,9 @@ import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 /** {@code trisect compare}: one frame in two paths, and how far apart they are. */
 @Command(name = "compare", sortOptions = false, mixinStandardHelpOptions = true,
@@ -30,6 +32,9 @@ import picocli.CommandLine.Option;
                 + "mapped back to the 3D point that carries them, projected, and measured from the pixel centre "
                 + "(max_displacement, p99_displacement, mean_displacement)."})
 final class CompareCommand extends SceneCommand {
+    @Spec
+    CommandSpec spec;
+
     @Option(names = "--against", paramLabel = "MODE", converter = Converters.ModeConverter.class,
             defaultValue = "perspective", description = "Reference path (default: ${DEFAULT-VALUE}).")
     RenderMode against;
@@ -54,8 +59,14 @@ final class CompareCommand extends SceneCommand {
 
     @Override
     void checkOutputs() {
-        if (!heatmapScale.equals("linear") && !heatmapScale.equals("log")) {
+        // Case ignored, as for every named value (--mode, --filter, --split).
+        String scale = heatmapScale.toLowerCase(java.util.Locale.ROOT);
+        if (!scale.equals("linear") && !scale.equals("log")) {
             throw InputException.usage("--heatmap-scale must be linear or log, got " + heatmapScale);
+        }
+        heatmapScale = scale;
+        if (heatmap == null && (heatmapScaleGiven() || heatmapMaxGiven())) {
+            throw InputException.usage((heatmapScaleGiven() ? "--heatmap-scale" : "--heatmap-max") + " needs --heatmap");
         }
         if (heatmap != null) {
             Outputs.checkPng("--heatmap", heatmap);
@@ -66,6 +77,14 @@ final class CompareCommand extends SceneCommand {
                 Outputs.checkDistinct("--heatmap", heatmap, "--out", out);
             }
         }
+    }
+
+    private boolean heatmapScaleGiven() {
+        return spec.commandLine().getParseResult().hasMatchedOption("--heatmap-scale");
+    }
+
+    private boolean heatmapMaxGiven() {
+        return spec.commandLine().getParseResult().hasMatchedOption("--heatmap-max");
     }
 
     @Override

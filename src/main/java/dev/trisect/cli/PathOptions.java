@@ -85,7 +85,8 @@ final class PathOptions {
         }
         String colour = borderColour == null ? "yellow" : borderColour;
         for (BorderStyle.Colouring c : BorderStyle.Colouring.values()) {
-            if (c.id().equals(colour)) {
+            // Case ignored, as for every named value (--mode, --filter, --split).
+            if (c.id().equalsIgnoreCase(colour)) {
                 return new BorderStyle(c, borderFade);
             }
         }

@@ -44,8 +44,9 @@ public final class ObjWriter {
         String base = obj.getFileName().toString().replaceFirst("\\.[^.]*$", "");
         Path mtl = dir.resolve(base + ".mtl");
         Path[] maps = new Path[mesh.materialCount()];
+        java.util.Set<String> taken = new java.util.HashSet<>();
         for (int m = 0; m < maps.length; m++) {
-            maps[m] = dir.resolve(base + "-" + safe(mesh.materialNames().get(m)) + ".ppm");
+            maps[m] = dir.resolve(unique(base + "-" + safe(mesh.materialNames().get(m)), taken) + ".ppm");
             Texture t = textures.get(m);
             ImageFiles.write(batch, maps[m], t.width(), t.height(), t.argb());
         }
@@ -86,6 +87,18 @@ public final class ObjWriter {
             }
         });
         return List.of(maps);
+    }
+
+    /**
+     * {@code name}, or with "-2", "-3", ... added when cleaning made two materials' names the same
+     * ("a.b" and "a_b" both give "a_b"); compared ignoring case, for file systems that do.
+     */
+    private static String unique(String name, java.util.Set<String> taken) {
+        String candidate = name;
+        for (int n = 2; !taken.add(candidate.toLowerCase(java.util.Locale.ROOT)); n++) {
+            candidate = name + "-" + n;
+        }
+        return candidate;
     }
 
     private static String safe(String name) {

@@ -53,9 +53,26 @@ class CompareOverlayTest {
         }
         assertTrue(logColours.size() > linColours.size() + 20, "log spreads the floor's errors over more colours: "
                 + logColours.size() + " vs " + linColours.size());
-        CliRun bad = CliRun.of("compare", "--scene", "floor", "--heatmap-scale", "cubic");
+        CliRun bad = CliRun.of("compare", "--scene", "floor", "--heatmap-scale", "cubic", "--heatmap", lin.toString());
         assertEquals(2, bad.status());
         assertTrue(bad.errLine().contains("--heatmap-scale must be linear or log"), bad.err());
+    }
+
+    @Test
+    void namedValuesIgnoreCaseAndHeatMapOptionsNeedTheHeatMap() throws IOException {
+        Path heat = dir.resolve("heat.png");
+        CliRun upper = CliRun.of("compare", "--scene", "floor", "--size", "32x24", "--heatmap", heat.toString(),
+                "--heatmap-scale", "LOG");
+        assertEquals(0, upper.status(), upper.err());
+        CliRun colour = CliRun.of("render", "--scene", "floor", "--size", "32x24", "--borders", "--border-colour",
+                "Depth", "--out", dir.resolve("b.png").toString());
+        assertEquals(0, colour.status(), colour.err());
+        for (String option : new String[] {"--heatmap-scale", "--heatmap-max"}) {
+            CliRun alone = CliRun.of("compare", "--scene", "floor", "--size", "32x24", option,
+                    option.endsWith("scale") ? "log" : "3");
+            assertEquals(2, alone.status(), alone.err());
+            assertEquals("trisect: " + option + " needs --heatmap", alone.errLine());
+        }
     }
 
     @Test
