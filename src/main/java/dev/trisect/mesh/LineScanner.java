@@ -4,6 +4,9 @@ import dev.trisect.base.InputException;
 import java.io.Closeable;
 import java.io.IOException;
 import java.io.InputStream;
+import java.nio.ByteBuffer;
+import java.nio.charset.CharacterCodingException;
+import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.FileSystemException;
@@ -15,8 +18,10 @@ import java.util.Arrays;
 /**
  * Streams the logical lines of a text file in the OBJ/MTL style and splits each into tokens.
  *
- * <p>Bytes are read as ISO-8859-1, so no content can cause a charset error; a UTF-8 byte-order mark
- * at the start of the file is skipped. Lines end at {@code \n}, {@code \r\n} or a lone {@code \r}
+ * <p>Lines are split on bytes, so no content can cause an error there; a UTF-8 byte-order mark at the
+ * start of the file is skipped. Tokens handed out as strings (names of files, materials, groups) are
+ * decoded as UTF-8, the encoding of file names on the systems Trisect runs on; a token that is not
+ * valid UTF-8 is refused with its line, its bytes shown as escapes. Lines end at {@code \n}, {@code \r\n} or a lone {@code \r}
  * (classic Mac OS). Every byte up to {@code 0x20} separates tokens. A line whose last non-blank byte is
  * a backslash continues on the next one. A token starting with {@code #} starts a comment that runs to
  * the end of its physical line: the OBJ specification (Appendix B1, "Comments") says comments are not
@@ -221,14 +226,60 @@ final class LineScanner implements Closeable {
         return count;
     }
 
-    /** Token {@code i} as a string. */
+    /**
+     * Token {@code i} as a string, one character per byte (ISO-8859-1): for keywords, numbers and the
+     * quotes of messages, which never fail on any byte. Names go through {@link #name}.
+     */
     String text(int i) {
+        return new String(line, starts[i], ends[i] - starts[i], StandardCharsets.ISO_8859_1);
+    }
+
+    /**
+     * Token {@code i} as a name (of a file or material), decoded as UTF-8.
+     *
+     * @throws InputException when the token is not valid UTF-8
+     */
+    String name(int i) {
         return slice(starts[i], ends[i]);
     }
 
-    /** The bytes from offset {@code from} to {@code to} of the current line, as a string. */
+    /**
+     * The bytes from offset {@code from} to {@code to} of the current line, decoded as UTF-8.
+     *
+     * @throws InputException when the bytes are not valid UTF-8 (malformed or truncated sequences)
+     */
     String slice(int from, int to) {
-        return new String(line, from, to - from, StandardCharsets.ISO_8859_1);
+        boolean ascii = true;
+        for (int k = from; k < to && ascii; k++) {
+            ascii = line[k] >= 0;
+        }
+        if (ascii) {
+            return new String(line, from, to - from, StandardCharsets.ISO_8859_1);
+        }
+        try {
+            return StandardCharsets.UTF_8.newDecoder()
+                    .onMalformedInput(CodingErrorAction.REPORT)
+                    .onUnmappableCharacter(CodingErrorAction.REPORT)
+                    .decode(ByteBuffer.wrap(line, from, to - from))
+                    .toString();
+        } catch (CharacterCodingException e) {
+            throw error(escaped(from, to) + " is not valid UTF-8");
+        }
+    }
+
+    /** Bytes [from, to) in single quotes, printable ASCII as is and every other byte as {@code \xHH}. */
+    private String escaped(int from, int to) {
+        StringBuilder text = new StringBuilder("'");
+        int shown = Math.min(to, from + 40);
+        for (int k = from; k < shown; k++) {
+            int b = line[k] & 0xff;
+            if (b >= 0x20 && b < 0x7f && b != '\'' && b != '\\') {
+                text.append((char) b);
+            } else {
+                text.append(String.format("\\x%02X", b));
+            }
+        }
+        return text.append(shown < to ? "...'" : "'").toString();
     }
 
     /** Whether token {@code i} is exactly {@code keyword} (ASCII). */
@@ -246,7 +297,12 @@ final class LineScanner implements Closeable {
         return true;
     }
 
-    /** The text from token {@code i} to the last token, inner blanks kept; empty when there is none. */
+    /**
+     * The name from token {@code i} to the last token, inner blanks kept, decoded as UTF-8; empty when
+     * there is none.
+     *
+     * @throws InputException when the text is not valid UTF-8
+     */
     String rest(int i) {
         if (i >= count) {
             return "";

@@ -121,7 +121,7 @@ public final class ObjReader {
                     throw lines.error("mtllib without a file name");
                 }
                 for (int i = 1; i < lines.count(); i++) {
-                    library(lines.text(i));
+                    library(lines.name(i));
                 }
             }
         }

@@ -163,15 +163,40 @@ class ObjReaderTest {
     }
 
     @Test
-    void readsAnyBytesAsLatin1() throws IOException {
-        Path file = dir.resolve("latin.obj");
-        byte[] head = (TRIANGLE_VERTICES + "usemtl caf").getBytes(StandardCharsets.US_ASCII);
-        byte[] tail = {(byte) 0xE9, ' ', (byte) 0xFF, '\n', '#', (byte) 0x80, (byte) 0xC3, '\n', 'f', ' ', '1', ' ', '2',
-            ' ', '3', '\n'};
+    void namesAreUtf8AndOtherBytesAnywhereElseAreHarmless() throws IOException {
+        Path file = dir.resolve("utf8.obj");
+        byte[] head = (TRIANGLE_VERTICES + "usemtl caf\u00e9 \u00ff\n").getBytes(StandardCharsets.UTF_8);
+        // A comment with bytes that are not UTF-8 is skipped as before.
+        byte[] tail = {'#', (byte) 0x80, (byte) 0xC3, '\n', 'f', ' ', '1', ' ', '2', ' ', '3', '\n'};
         byte[] all = Arrays.copyOf(head, head.length + tail.length);
         System.arraycopy(tail, 0, all, head.length, tail.length);
         Files.write(file, all);
         assertEquals(List.of("caf\u00e9 \u00ff"), ObjReader.read(file, false).mesh().materialNames());
+    }
+
+    @Test
+    void aNameThatIsNotUtf8IsRefusedWithItsBytes() throws IOException {
+        Path file = dir.resolve("latin.obj");
+        byte[] head = (TRIANGLE_VERTICES + "usemtl caf").getBytes(StandardCharsets.US_ASCII);
+        byte[] tail = {(byte) 0xE9, ' ', (byte) 0xFF, '\n', 'f', ' ', '1', ' ', '2', ' ', '3', '\n'};
+        byte[] all = Arrays.copyOf(head, head.length + tail.length);
+        System.arraycopy(tail, 0, all, head.length, tail.length);
+        Files.write(file, all);
+        assertEquals("latin.obj:4: 'caf\\xE9 \\xFF' is not valid UTF-8", error(file, false));
+    }
+
+    @Test
+    void libraryAndTextureNamesOutsideAsciiAreFound() throws IOException {
+        // File names are bytes on Linux; Java maps them to strings through the locale's encoding.
+        org.junit.jupiter.api.Assumptions.assumeTrue("UTF-8".equals(System.getProperty("sun.jnu.encoding")),
+                "the JVM runs under a locale that is not UTF-8 (LANG=C.UTF-8 runs this test)");
+        Files.writeString(dir.resolve("m\u00e4t.mtl"), "newmtl st\u00f6ne\nmap_Kd t\u00ebx.png\n", StandardCharsets.UTF_8);
+        Path obj = dir.resolve("sc\u00e8ne.obj");
+        Files.writeString(obj, TRIANGLE_VERTICES + "mtllib m\u00e4t.mtl\nusemtl st\u00f6ne\nf 1 2 3\n",
+                StandardCharsets.UTF_8);
+        ObjModel model = ObjReader.read(obj, true);
+        assertEquals(List.of("st\u00f6ne"), model.mesh().materialNames());
+        assertEquals(List.of(dir.resolve("t\u00ebx.png").toAbsolutePath()), model.materialTextures());
     }
 
     @Test
