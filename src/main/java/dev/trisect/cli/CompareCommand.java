@@ -110,7 +110,8 @@ final class CompareCommand extends SceneCommand {
                     reference);
             // Measure the rendered image, never the overlay: borders are drawn only after comparing,
             // and only into the --out image.
-            renderer.render(scene.mesh(), scene.textureArray(), vp, settings.withBorders(false), test);
+            Frames.noteSkipped(common,
+                    renderer.render(scene.mesh(), scene.textureArray(), vp, settings.withBorders(false), test));
             c = ImageComparison.compare(w, h, test.color(), test.uv(), reference.color(), reference.uv(),
                     exact, displacement);
             if (settings.borders()) {

@@ -58,6 +58,7 @@ final class RenderCommand extends SceneCommand {
             s = renderer.render(scene.mesh(), scene.textureArray(), camera.viewProjection(frame.size.viewport()),
                     settings, fb);
         }
+        Frames.noteSkipped(common, s);
         // The image and its UV output belong together: both are written, or neither is changed.
         Results.deliver(common.out(), batch, b -> {
             ImageFiles.write(b, out, fb.width(), fb.height(), fb.color());

@@ -50,7 +50,10 @@ public final class Mat4 {
      */
     public static Mat4 lookAt(Vec3 eye, Vec3 target, Vec3 up) {
         Vec3 f = target.sub(eye).normalize();
-        Vec3 s = f.cross(up).normalize();
+        // An up of extreme magnitude (above 1e150 or below 1e-150) is made unit first, so that the
+        // cross product neither overflows nor underflows; any other up is used as given (as gluLookAt).
+        double upLength = up.length();
+        Vec3 s = f.cross(upLength > 1e-150 && upLength < 1e150 ? up : up.normalize()).normalize();
         Vec3 u = s.cross(f);
         return ofRows(
                 s.x(), s.y(), s.z(), -s.dot(eye),

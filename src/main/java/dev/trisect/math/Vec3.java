@@ -45,10 +45,26 @@ public record Vec3(double x, double y, double z) {
         return Math.sqrt(dot(this));
     }
 
-    /** This vector scaled to unit length; the zero vector stays zero. */
+    /**
+     * This vector scaled to unit length; the zero vector stays zero, and so does a vector with a
+     * non-finite component.
+     *
+     * <p>Any finite non-zero vector gives a unit vector, however long or short: where the squared
+     * length would overflow (components above about 1e154) or underflow (below about 1e-154), the
+     * vector is first divided by its largest component's magnitude. Between 1e-150 and 1e150 the
+     * result is {@code this / length()}, the plain formula, bit for bit.
+     */
     public Vec3 normalize() {
         double len = length();
-        return len == 0 ? this : scale(1 / len);
+        if (len > 1e-150 && len < 1e150) {
+            return scale(1 / len);
+        }
+        double largest = Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z)));
+        if (largest == 0 || !Double.isFinite(largest)) {
+            return largest == 0 ? this : scale(1 / len); // zero, or not finite: as the plain formula
+        }
+        Vec3 scaled = new Vec3(x / largest, y / largest, z / largest);
+        return scaled.scale(1 / scaled.length());
     }
 
     /** Whether every component is finite (neither NaN nor infinite). */

@@ -22,7 +22,9 @@ import java.util.Arrays;
  * them (tessellated path) or pass them whole through the {@link Tessellator}, whose pieces a
  * {@link ScreenPieceSink} appends to the chunk's screen triangles in input order.
  *
- * <p>A triangle with a flagged corner or a non-finite UV is skipped and counted. One wholly outside
+ * <p>A triangle with a flagged corner or a non-finite UV is skipped and counted, and so is one whose
+ * clipped corners double precision cannot place ({@link Clipper#representable}), or whose facing
+ * it cannot decide (larger than {@link #LARGE} and the determinant within its rounding error of zero). One wholly outside
  * a plane of the view volume is culled. Facing comes from the sign of the homogeneous determinant of
  * the corners' (x, y, w), right even for triangles that cross the eye plane; zero is degenerate.
  * Triangles that cross the near or far plane, or the guard band {@link #GUARD_PIXELS} beyond the
@@ -32,6 +34,11 @@ import java.util.Arrays;
 final class ChunkGeometry {
     /** Guard band beyond each side of the viewport, pixels. */
     static final int GUARD_PIXELS = 8192;
+    /**
+     * Clip coordinates above which a triangle whose determinant is zero within its rounding error is
+     * skipped as unrepresentable rather than called degenerate or given a facing: 2<sup>26</sup>.
+     */
+    static final double LARGE = 0x1p26;
     /** Triangles per timing batch inside a chunk. */
     private static final int BATCH = 1024;
 
@@ -175,6 +182,14 @@ final class ChunkGeometry {
             // Facing from the homogeneous determinant of (x, y, w): its sign is the projected
             // winding for w > 0 and stays right for triangles crossing the eye plane.
             double det = determinant(corner);
+            // Far larger than the view (beyond LARGE clip units) and zero within rounding: rounding may
+            // have hidden its facing (a quad 1e20 wide passing 3 units from the eye), so it is skipped
+            // and counted, unless it has no area where it was made. Smaller triangles keep the plain rule.
+            if (largest(corner) > LARGE && Math.abs(det) <= determinantError(corner)
+                    && !zeroArea(mesh.positions(), corners[c], corners[c + 1], corners[c + 2])) {
+                chunk.invalid++;
+                continue;
+            }
             if (det == 0) {
                 chunk.culledDegenerate++;
                 continue;
@@ -194,6 +209,10 @@ final class ChunkGeometry {
             int n = clipper.clip(corner, 0, c1, c2, g);
             if (n == 0) {
                 chunk.culledFrustum++;
+                continue;
+            }
+            if (!clipper.representable(n, largest(corner))) {
+                chunk.invalid++;
                 continue;
             }
             double[] poly = clipper.vertices();
@@ -233,6 +252,45 @@ final class ChunkGeometry {
         double y2 = c[c2 + Y];
         double w2 = c[c2 + W];
         return x0 * (y1 * w2 - y2 * w1) - y0 * (x1 * w2 - x2 * w1) + w0 * (x1 * y2 - x2 * y1);
+    }
+
+    /**
+     * A bound on the rounding error of {@link #determinant}: each of its 11 operations rounds by at
+     * most 2<sup>-53</sup> of its magnitude, so the error is at most about 6 * 2<sup>-53</sup> times
+     * the sum of the magnitudes of its six products (Higham, section 3.1); 8 units are taken.
+     */
+    private static double determinantError(double[] c) {
+        int c1 = CLIP_STRIDE;
+        int c2 = 2 * CLIP_STRIDE;
+        double sum = Math.abs(c[X]) * (Math.abs(c[c1 + Y] * c[c2 + W]) + Math.abs(c[c2 + Y] * c[c1 + W]))
+                + Math.abs(c[Y]) * (Math.abs(c[c1 + X] * c[c2 + W]) + Math.abs(c[c2 + X] * c[c1 + W]))
+                + Math.abs(c[W]) * (Math.abs(c[c1 + X] * c[c2 + Y]) + Math.abs(c[c2 + X] * c[c1 + Y]));
+        return 8 * 0x1p-53 * sum;
+    }
+
+    /**
+     * Whether the object-space triangle of positions {@code a, b, c} has no area: its edge vectors'
+     * cross product, computed in doubles from the float positions, is exactly zero.
+     */
+    private static boolean zeroArea(float[] p, int a, int b, int c) {
+        double ux = (double) p[3 * b] - p[3 * a];
+        double uy = (double) p[3 * b + 1] - p[3 * a + 1];
+        double uz = (double) p[3 * b + 2] - p[3 * a + 2];
+        double vx = (double) p[3 * c] - p[3 * a];
+        double vy = (double) p[3 * c + 1] - p[3 * a + 1];
+        double vz = (double) p[3 * c + 2] - p[3 * a + 2];
+        return uy * vz - uz * vy == 0 && uz * vx - ux * vz == 0 && ux * vy - uy * vx == 0;
+    }
+
+    /** The largest magnitude among the three corners' clip coordinates x, y, z, w. */
+    private static double largest(double[] c) {
+        double m = 0;
+        for (int k = 0; k < 3; k++) {
+            int o = k * CLIP_STRIDE;
+            m = Math.max(m, Math.max(Math.max(Math.abs(c[o + X]), Math.abs(c[o + Y])),
+                    Math.max(Math.abs(c[o + Z]), Math.abs(c[o + W]))));
+        }
+        return m;
     }
 
     private static int append(Scratch w, int count, double[] src, int a, int b, int c, int id, int material) {

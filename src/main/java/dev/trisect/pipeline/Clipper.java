@@ -21,6 +21,15 @@ import dev.trisect.tessellate.VertexLayout;
  * triangles that share an edge get bit-identical new vertices and the clipped mesh keeps no cracks.
  * Vertices are {@link VertexLayout#CLIP_STRIDE} doubles in {@link VertexLayout}: clip x, y, z, w and
  * texel s, t, the tessellator's input.
+ *
+ * <p>An intersection {@code in + t (out - in)} of an edge whose ends are far larger than the new
+ * vertex cancels: with corners at 1e17 units and a near plane at 0.1 the new vertex is made of
+ * rounding error only. Each operation rounds by at most 2<sup>-53</sup> of its magnitude (Higham,
+ * "Accuracy and Stability of Numerical Algorithms", 2nd ed., section 2.2), so a vertex made from
+ * corners no larger than M is off by a few units of 2<sup>-53</sup> M per plane; {@link #representable}
+ * refuses a result where that error, taken as {@link #ROUNDING_UNITS} such units, exceeds
+ * {@link #MAX_RELATIVE_ERROR} of a vertex's own w, i.e. of its screen position in normalised device
+ * coordinates.
  */
 final class Clipper {
     static final int NEAR = 1;
@@ -31,6 +40,14 @@ final class Clipper {
     static final int TOP = 32;
     /** At most 3 + one vertex per plane. */
     private static final int MAX_VERTICES = 9;
+
+    /**
+     * Largest error of a clipped vertex's clip coordinates accepted, as a fraction of its w: in
+     * normalised device coordinates, so 2<sup>-16</sup> is 0.06 px on an 8192-pixel-wide image.
+     */
+    static final double MAX_RELATIVE_ERROR = 0x1p-16;
+    /** Units of 2<sup>-53</sup> M taken as a clipped vertex's error: the rounding of the transform and of each plane's intersection. */
+    static final double ROUNDING_UNITS = 8;
 
     private double[] current = new double[CLIP_STRIDE * MAX_VERTICES];
     private double[] next = new double[CLIP_STRIDE * MAX_VERTICES];
@@ -116,6 +133,22 @@ final class Clipper {
     /** The clipped polygon's vertices after {@link #clip}. */
     double[] vertices() {
         return current;
+    }
+
+    /**
+     * Whether the {@code n} vertices of the last {@link #clip}, made from corners whose largest
+     * clip coordinate has magnitude {@code largest}, are placed to within {@link #MAX_RELATIVE_ERROR}
+     * of their w. When not, the triangle's corners are too far from its part in view for double
+     * precision, and it is to be skipped and counted rather than drawn wrong.
+     */
+    boolean representable(int n, double largest) {
+        double error = ROUNDING_UNITS * 0x1p-53 * largest;
+        for (int i = 0; i < n; i++) {
+            if (!(error <= MAX_RELATIVE_ERROR * Math.abs(current[i * CLIP_STRIDE + W]))) {
+                return false;
+            }
+        }
+        return true;
     }
 
     private int clipPlane(int n, int plane) {

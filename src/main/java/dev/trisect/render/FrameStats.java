@@ -17,7 +17,9 @@ import dev.trisect.base.internal.JsonObject;
  * @param culledBackFace   dropped as seen from behind
  * @param culledFrustum    dropped as wholly outside the view volume (or clipped away entirely)
  * @param culledDegenerate dropped for having no area
- * @param skippedInvalid   skipped for NaN or infinite coordinates
+ * @param skippedInvalid   skipped for NaN or infinite coordinates, or for corners so far from the part of
+ *                         the triangle in view that double precision cannot clip it (see
+ *                         docs/reading-limits.md)
  * @param clipped          cut by the near, far or guard-band planes
  * @param pieces           triangles filled (tessellated pieces, or clipped triangles in the other paths)
  * @param piecesOffScreen  tessellated pieces dropped unsplit for lying wholly outside the viewport

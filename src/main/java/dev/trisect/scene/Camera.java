@@ -10,7 +10,8 @@ import dev.trisect.math.Viewport;
  *
  * @param eye    camera position, world space
  * @param target point looked at, world space; {@link #MIN_DISTANCE} to {@link #MAX_DISTANCE} from {@code eye}
- * @param up     approximate up direction, world space; not parallel to the view direction
+ * @param up     approximate up direction, world space; not zero and not parallel to the view direction;
+ *               any finite magnitude (only its direction is used)
  * @param fovY   vertical field of view, degrees, in (0, 180)
  * @param near   distance to the near plane, world units, &gt; 0
  * @param far    distance to the far plane, world units, &gt; near
@@ -57,9 +58,13 @@ public record Camera(Vec3 eye, Vec3 target, Vec3 up, double fovY, double near, d
             throw new IllegalArgumentException("eye " + eye + " and target " + target + " are too close together "
                     + "(less than " + MIN_DISTANCE + " units apart): the view direction cannot be computed");
         }
+        if (up.x() == 0 && up.y() == 0 && up.z() == 0) {
+            throw new IllegalArgumentException("up (" + up + ") is zero: it must give the direction of up");
+        }
+        // Both directions unit length first, so that up's magnitude, from 1e-300 to 1e300, does not matter.
         Vec3 forward = target.sub(eye).normalize();
-        if (forward.cross(up).length() < 1e-9 * Math.max(1, up.length())) {
-            throw new IllegalArgumentException("up (" + up + ") is parallel to the view direction or zero");
+        if (forward.cross(up.normalize()).length() < 1e-9) {
+            throw new IllegalArgumentException("up (" + up + ") is parallel to the view direction");
         }
     }
 
