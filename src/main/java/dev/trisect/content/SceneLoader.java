@@ -28,6 +28,15 @@ public final class SceneLoader {
      * @throws dev.trisect.base.InputException for anything unreadable, with a one-line message
      */
     public static SceneAsset load(Path obj, Path texture, Consumer<String> notes) {
+        return load(obj, texture, notes, false);
+    }
+
+    /**
+     * As {@link #load(Path, Path, Consumer)}; with {@code placeholders}, a {@code map_Kd} texture that
+     * cannot be read gets a placeholder and a note instead of rejecting the model (see
+     * {@link SceneObject#load(Path, Consumer, boolean)}): for the demo, not for renders.
+     */
+    public static SceneAsset load(Path obj, Path texture, Consumer<String> notes, boolean placeholders) {
         Mesh mesh;
         List<Texture> textures = new ArrayList<>();
         if (texture != null) {
@@ -37,7 +46,7 @@ public final class SceneLoader {
                 textures.add(t);
             }
         } else {
-            SceneObject object = SceneObject.load(obj, notes);
+            SceneObject object = SceneObject.load(obj, notes, placeholders);
             mesh = object.mesh();
             for (Material m : object.materials()) {
                 textures.add(m.texture());

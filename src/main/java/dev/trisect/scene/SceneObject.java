@@ -131,6 +131,21 @@ public final class SceneObject extends Node {
      * @throws InputException for anything unreadable, with a one-line message naming the file and line
      */
     public static SceneObject load(Path obj, Consumer<String> notes) {
+        return load(obj, notes, false);
+    }
+
+    /**
+     * As {@link #load(Path, Consumer)}, but where {@code placeholders} is true a {@code map_Kd}
+     * texture that cannot be read (missing, unreadable, not an image) does not reject the model: its
+     * materials get a magenta and black checkerboard that no real texture is mistaken for, and
+     * {@code notes} hears the one-line message the strict load would have thrown. For viewers, where a
+     * model with one lost texture is still worth seeing; renders that must be exact use the strict load.
+     *
+     * @param notes        receives one-line remarks for the user
+     * @param placeholders whether an unreadable texture gets a placeholder (true) or rejects the model
+     * @throws InputException for anything else unreadable, with a one-line message naming the file and line
+     */
+    public static SceneObject load(Path obj, Consumer<String> notes, boolean placeholders) {
         ObjModel model = ObjReader.read(obj, true);
         Mesh mesh = model.mesh();
         List<Material> materials = new ArrayList<>();
@@ -147,7 +162,17 @@ public final class SceneObject extends Node {
                 untextured.add(mesh.materialNames().get(i));
             } else {
                 String source = model.textureSources().get(i);
-                materials.add(loaded.computeIfAbsent(map, file -> Material.of(readMapKd(file, source))));
+                materials.add(loaded.computeIfAbsent(map, file -> {
+                    try {
+                        return Material.of(readMapKd(file, source));
+                    } catch (InputException e) {
+                        if (!placeholders) {
+                            throw e;
+                        }
+                        notes.accept(e.getMessage() + "; drawn with a magenta checkerboard instead");
+                        return Material.of(ProceduralTextures.checker(64, 8, 0xFFFF00FF, 0xFF000000));
+                    }
+                }));
             }
         }
         if (!untextured.isEmpty()) {

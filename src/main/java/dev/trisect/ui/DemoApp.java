@@ -192,7 +192,9 @@ public final class DemoApp implements Callable<Integer> {
         AtomicReference<DemoWindow> window = new AtomicReference<>();
         SwingUtilities.invokeAndWait(() -> {
             FlatDarkLaf.setup();
-            DemoWindow w = new DemoWindow(scene, threads);
+            // Its own memory of files, apart from the user's.
+            DemoWindow w = new DemoWindow(scene, threads,
+                    new RecentFiles(java.nio.file.Path.of(System.getProperty("java.io.tmpdir"), "trisect-demo-test.properties")));
             w.start();
             window.set(w);
         });

@@ -4,7 +4,6 @@ import dev.trisect.base.InputException;
 import dev.trisect.content.AssetScenes;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.content.SceneAsset;
-import dev.trisect.content.SceneLoader;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.view.FrameInfo;
 import dev.trisect.view.TrisectView;
@@ -23,7 +22,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 import java.time.LocalDateTime;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.ExecutionException;
@@ -36,20 +34,17 @@ import javax.swing.ButtonGroup;
 import javax.swing.InputMap;
 import javax.swing.JCheckBoxMenuItem;
 import javax.swing.JComponent;
-import javax.swing.JFileChooser;
 import javax.swing.JFrame;
 import javax.swing.JLabel;
 import javax.swing.JMenu;
 import javax.swing.JMenuBar;
 import javax.swing.JMenuItem;
-import javax.swing.JOptionPane;
 import javax.swing.JPanel;
 import javax.swing.JRadioButtonMenuItem;
 import javax.swing.KeyStroke;
 import javax.swing.SwingWorker;
 import javax.swing.Timer;
 import javax.swing.WindowConstants;
-import javax.swing.filechooser.FileNameExtensionFilter;
 
 /**
  * The demo's main window: a {@link TrisectView} with menus (built from the view's own commands), a
@@ -71,8 +66,14 @@ final class DemoWindow {
     final Action screenshotCommand;
     final Action openCommand;
     final Action exitCommand;
+    final FileMenu fileMenu;
 
     DemoWindow(SceneAsset scene, int threads) {
+        this(scene, threads, new RecentFiles());
+    }
+
+    /** @param recent where the files opened and Open OBJ's folder are remembered */
+    DemoWindow(SceneAsset scene, int threads, RecentFiles recent) {
         frame = new JFrame(title(scene));
         frame.setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
         view = new TrisectView(AssetScenes.scene(scene), threads);
@@ -84,8 +85,8 @@ final class DemoWindow {
         screenshotCommand = command("Save screenshot", "Save the frame on screen as a PNG in "
                 + Screenshots.folder(), KeyStroke.getKeyStroke(KeyEvent.VK_S, InputEvent.CTRL_DOWN_MASK),
                 this::saveScreenshot);
-        openCommand = command("Open OBJ\u2026", "Load a Wavefront OBJ model (with its map_Kd textures)",
-                KeyStroke.getKeyStroke(KeyEvent.VK_O, InputEvent.CTRL_DOWN_MASK), this::openObj);
+        fileMenu = new FileMenu(this, recent);
+        openCommand = fileMenu.open;
         exitCommand = command("Exit", "Close Trisect", KeyStroke.getKeyStroke(KeyEvent.VK_Q, InputEvent.CTRL_DOWN_MASK),
                 () -> frame.dispatchEvent(new WindowEvent(frame, WindowEvent.WINDOW_CLOSING)));
 
@@ -114,7 +115,7 @@ final class DemoWindow {
     }
 
     /** A plain command of the demo's own: one action for its menu item and its key. */
-    private static Action command(String name, String description, KeyStroke key, Runnable behaviour) {
+    static Action command(String name, String description, KeyStroke key, Runnable behaviour) {
         Action a = new AbstractAction(name) {
             private static final long serialVersionUID = 1L;
 
@@ -168,7 +169,8 @@ final class DemoWindow {
         JMenuBar bar = new JMenuBar();
         JMenu file = new JMenu("File");
         file.setMnemonic(KeyEvent.VK_F);
-        file.add(new JMenuItem(openCommand));
+        fileMenu.addTo(file);
+        file.addSeparator();
         file.add(new JMenuItem(screenshotCommand));
         file.addSeparator();
         file.add(new JMenuItem(exitCommand));
@@ -295,44 +297,16 @@ final class DemoWindow {
         }.execute();
     }
 
-    private void openObj() {
-        JFileChooser chooser = new JFileChooser(Path.of("").toAbsolutePath().toFile());
-        chooser.setDialogTitle("Open OBJ");
-        chooser.setFileFilter(new FileNameExtensionFilter("Wavefront OBJ (*.obj)", "obj"));
-        if (chooser.showOpenDialog(frame) != JFileChooser.APPROVE_OPTION) {
-            return;
-        }
-        loadObj(chooser.getSelectedFile().toPath());
+    /** Loads an OBJ in the background (see {@link FileMenu#load}). */
+    void loadObj(Path file) {
+        fileMenu.load(file);
     }
 
-    /** Loads an OBJ in the background; the demo keeps running, and a bad file gets a dialog. */
-    void loadObj(Path file) {
-        status("Loading " + file + " \u2026");
-        List<String> notes = new ArrayList<>();
-        new SwingWorker<SceneAsset, Void>() {
-            @Override
-            protected SceneAsset doInBackground() {
-                return SceneLoader.load(file, null, notes::add);
-            }
-
-            @Override
-            protected void done() {
-                try {
-                    SceneAsset s = get();
-                    view.setScene(AssetScenes.scene(s));
-                    view.setCamera(s.camera());
-                    frame.setTitle(title(s));
-                    status("Loaded " + file.getFileName() + " (" + s.mesh().triangleCount() + " triangles)"
-                            + (notes.isEmpty() ? "" : ". " + notes.get(0)));
-                } catch (ExecutionException e) {
-                    String line = "trisect: " + message(e.getCause());
-                    status(line);
-                    JOptionPane.showMessageDialog(frame, line, "Cannot open OBJ", JOptionPane.ERROR_MESSAGE);
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                }
-            }
-        }.execute();
+    /** Shows a scene from its own camera, named in the title. */
+    void show(SceneAsset s) {
+        view.setScene(AssetScenes.scene(s));
+        view.setCamera(s.camera());
+        frame.setTitle(title(s));
     }
 
     /** The one-line message the command line would print for this failure. */

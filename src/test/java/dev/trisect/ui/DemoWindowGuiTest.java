@@ -501,4 +501,25 @@ class DemoWindowGuiTest {
         press(KeyEvent.VK_P);
         waitFor("back", () -> state().settings().render().tessellation().policy() == start);
     }
+
+    @Test
+    @Order(15)
+    void theFileMenuGoesBackToTheBuiltInScenes() throws Exception {
+        javax.swing.JMenu scenes = onEdt(() -> window.fileMenu.scenesMenu());
+        assertEquals(DemoScenes.names().size(), (int) onEdt(scenes::getItemCount));
+        javax.swing.JMenuItem floor = onEdt(() -> {
+            for (int i = 0; i < scenes.getItemCount(); i++) {
+                if (scenes.getItem(i).getText().equals("Floor")) {
+                    return scenes.getItem(i);
+                }
+            }
+            return null;
+        });
+        assertNotNull(floor);
+        SwingUtilities.invokeAndWait(floor::doClick);
+        waitFor("the floor scene", () -> onEdt(() -> window.frame().getTitle()).equals("Trisect \u2014 floor"));
+        javax.swing.JMenuItem demo = onEdt(() -> scenes.getItem(DemoScenes.names().indexOf("demo")));
+        SwingUtilities.invokeAndWait(demo::doClick);
+        waitFor("the demo scene again", () -> onEdt(() -> window.frame().getTitle()).equals("Trisect \u2014 demo"));
+    }
 }

@@ -1,0 +1,142 @@
+package dev.trisect.ui;
+
+import dev.trisect.content.DemoScenes;
+import dev.trisect.content.SceneAsset;
+import dev.trisect.content.SceneLoader;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.ExecutionException;
+import javax.swing.Action;
+import javax.swing.JFileChooser;
+import javax.swing.JMenu;
+import javax.swing.JMenuItem;
+import javax.swing.JOptionPane;
+import javax.swing.KeyStroke;
+import javax.swing.SwingWorker;
+import javax.swing.filechooser.FileNameExtensionFilter;
+
+/**
+ * The demo's ways to a scene: Open OBJ (in the folder it showed last), the files opened lately, and
+ * the built-in scenes, each one action for its menu item (and key). A file that cannot be opened gets
+ * the command line's one-line message in a dialog and the demo keeps running. Event thread only.
+ */
+final class FileMenu {
+    private final DemoWindow window;
+    private final RecentFiles recent;
+    private final JMenu recentMenu = new JMenu("Open recent");
+    private final JMenu scenes = new JMenu("Built-in scene");
+    final Action open;
+
+    FileMenu(DemoWindow window, RecentFiles recent) {
+        this.window = window;
+        this.recent = recent;
+        open = action("Open OBJ\u2026", "Load a Wavefront OBJ model (with its map_Kd textures); opens in the folder "
+                + "used last", KeyStroke.getKeyStroke(KeyEvent.VK_O, InputEvent.CTRL_DOWN_MASK), this::openObj);
+        recentMenu.setToolTipText("The OBJ files opened lately, newest first");
+        scenes.setToolTipText("Go back to one of the scenes the demo comes with");
+        for (String name : DemoScenes.names()) {
+            String label = name.substring(0, 1).toUpperCase(Locale.ROOT) + name.substring(1);
+            scenes.add(new JMenuItem(action(label, DemoScenes.describe(name), null,
+                    () -> window.show(DemoScenes.byName(name).orElseThrow()))));
+        }
+        rebuildRecent();
+    }
+
+    /** Adds Open OBJ, Open recent and the built-in scenes to {@code file}. */
+    void addTo(JMenu file) {
+        file.add(new JMenuItem(open));
+        file.add(recentMenu);
+        file.add(scenes);
+    }
+
+    /** The submenus, for tests. */
+    JMenu recentMenu() {
+        return recentMenu;
+    }
+
+    JMenu scenesMenu() {
+        return scenes;
+    }
+
+    private static Action action(String name, String description, KeyStroke key, Runnable behaviour) {
+        return DemoWindow.command(name, description, key, behaviour);
+    }
+
+    private void rebuildRecent() {
+        recentMenu.removeAll();
+        List<Path> files = recent.files();
+        for (Path p : files) {
+            JMenuItem item = new JMenuItem(action(String.valueOf(p.getFileName()), p.toString(), null, () -> load(p)));
+            recentMenu.add(item);
+        }
+        if (files.isEmpty()) {
+            JMenuItem none = new JMenuItem("(none yet)");
+            none.setEnabled(false);
+            recentMenu.add(none);
+        } else {
+            recentMenu.addSeparator();
+            recentMenu.add(new JMenuItem(action("Clear recent files", "Forget the files opened lately", null, () -> {
+                recent.clear();
+                rebuildRecent();
+            })));
+        }
+    }
+
+    private void openObj() {
+        JFileChooser chooser = new JFileChooser(recent.folder().toFile());
+        chooser.setDialogTitle("Open OBJ");
+        chooser.setFileFilter(new FileNameExtensionFilter("Wavefront OBJ (*.obj)", "obj"));
+        if (chooser.showOpenDialog(window.frame()) != JFileChooser.APPROVE_OPTION) {
+            return;
+        }
+        load(chooser.getSelectedFile().toPath());
+    }
+
+    /** Loads an OBJ in the background; the demo keeps running, and a bad file gets a dialog. */
+    void load(Path file) {
+        window.status("Loading " + file + " \u2026");
+        List<String> notes = new ArrayList<>();
+        new SwingWorker<SceneAsset, Void>() {
+            @Override
+            protected SceneAsset doInBackground() {
+                // A lost texture does not reject the model here: a placeholder and a warning instead.
+                return SceneLoader.load(file, null, notes::add, true);
+            }
+
+            @Override
+            protected void done() {
+                try {
+                    SceneAsset s = get();
+                    window.show(s);
+                    recent.opened(file);
+                    rebuildRecent();
+                    window.status(loaded(file, s.mesh().triangleCount(), notes));
+                } catch (ExecutionException e) {
+                    String line = "trisect: " + DemoWindow.message(e.getCause());
+                    window.status(line);
+                    if (!Files.exists(file)) {
+                        recent.forget(file);
+                        rebuildRecent();
+                    }
+                    JOptionPane.showMessageDialog(window.frame(), line, "Cannot open OBJ", JOptionPane.ERROR_MESSAGE);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            }
+        }.execute();
+    }
+
+    /** The status line after a load: what was loaded, and the first note (a placeholder texture...) with how many follow. */
+    static String loaded(Path file, int triangles, List<String> notes) {
+        String s = "Loaded " + file.getFileName() + " (" + triangles + " triangles)";
+        if (notes.isEmpty()) {
+            return s;
+        }
+        return s + ". \u26a0 " + notes.get(0) + (notes.size() > 1 ? " (and " + (notes.size() - 1) + " more)" : "");
+    }
+}
