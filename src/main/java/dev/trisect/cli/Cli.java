@@ -56,10 +56,11 @@ public final class Cli {
             boolean verbose = verbose(parseResult);
             int status;
             if (ex instanceof InputException ie) {
-                err.println("trisect: " + ie.getMessage());
+                err.println("trisect: " + oneLine(ie.getMessage()));
                 status = ie.exitStatus();
             } else {
-                err.println("trisect: internal error: " + ex + (verbose ? "" : " (run with --verbose for details)"));
+                err.println("trisect: internal error: " + oneLine(String.valueOf(ex))
+                        + (verbose ? "" : " (run with --verbose for details)"));
                 status = 3;
             }
             if (verbose) {
@@ -89,6 +90,28 @@ public final class Cli {
             err.flush();
             return 1;
         }
+    }
+
+    /**
+     * {@code message} kept to one line: a value the user typed can hold a newline or other control
+     * character ({@code --scene $'floor\nX'}), which is shown escaped as {@code \xNN}, as
+     * {@link InputException#quote} does.
+     */
+    static String oneLine(String message) {
+        StringBuilder sb = null;
+        for (int i = 0; i < message.length(); i++) {
+            char c = message.charAt(i);
+            boolean control = c < 0x20 || (c >= 0x7f && c <= 0x9f);
+            if (control && sb == null) {
+                sb = new StringBuilder(message.length() + 8).append(message, 0, i);
+            }
+            if (control) {
+                sb.append(String.format(java.util.Locale.ROOT, "\\x%02X", (int) c));
+            } else if (sb != null) {
+                sb.append(c);
+            }
+        }
+        return sb == null ? message : sb.toString();
     }
 
     private static boolean rendersFrame(CommandLine cl) {

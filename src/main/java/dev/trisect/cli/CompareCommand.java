@@ -62,7 +62,7 @@ final class CompareCommand extends SceneCommand {
         // Case ignored, as for every named value (--mode, --filter, --split).
         String scale = heatmapScale.toLowerCase(java.util.Locale.ROOT);
         if (!scale.equals("linear") && !scale.equals("log")) {
-            throw InputException.usage("--heatmap-scale must be linear or log, got " + heatmapScale);
+            throw InputException.usage("--heatmap-scale must be linear or log, got '" + heatmapScale + "'");
         }
         heatmapScale = scale;
         if (heatmap == null && (heatmapScaleGiven() || heatmapMaxGiven())) {

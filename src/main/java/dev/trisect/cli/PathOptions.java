@@ -90,7 +90,7 @@ final class PathOptions {
                 return new BorderStyle(c, borderFade);
             }
         }
-        throw InputException.usage("--border-colour must be yellow, depth or bound, got " + borderColour);
+        throw InputException.usage("--border-colour must be yellow, depth or bound, got '" + borderColour + "'");
     }
 
     /** The split settings, checked. */

@@ -200,4 +200,21 @@ class BadInputTest {
                 "--reference", dir.resolve("b.png").toString(), "--reference-uv", dir.resolve("b.pfm").toString()),
                 "is 16x16 but");
     }
+
+    @Test
+    void aNewlineInsideAValueKeepsTheMessageOnOneLine() {
+        String a = dir.resolve("a.png").toString();
+        String[][] runs = {
+            {"render", "--scene", "floor\nX", "--out", a},
+            {"render", "--scene", "floor", "--borders", "--border-colour", "yel\nlow", "--out", a},
+            {"compare", "--scene", "floor", "--heatmap", a, "--heatmap-scale", "li\nnear"},
+            {"render", "--obj", dir.resolve("m\nx.obj").toString(), "--out", a},
+            {"render", "--scene", "floor", "--out", dir.resolve("no\ndir/b.png").toString()},
+        };
+        for (String[] args : runs) {
+            CliRun r = CliRun.of(args);
+            assertTrue(r.status() == 1 || r.status() == 2, String.join(" ", args) + ": " + r.err());
+            assertTrue(r.errLine().contains("\\x0A"), "the newline is shown escaped: " + r.err());
+        }
+    }
 }
