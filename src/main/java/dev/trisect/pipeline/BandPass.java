@@ -59,7 +59,6 @@ final class BandPass {
         }
         boolean spans = settings.mode() == RenderMode.SPANS;
         boolean perspective = settings.mode() == RenderMode.PERSPECTIVE || spans;
-        boolean pieces = settings.mode() == RenderMode.TESSELLATED;
         double spanError = spans ? settings.tessellation().maxError() : 0;
         int width = frame.width();
         int height = frame.height();
@@ -88,12 +87,8 @@ final class BandPass {
             rasterizer.spans(spanError);
             for (int c = 0; c < chunkCount; c++) {
                 Chunk chunk = chunks.get(c);
-                int[] items = chunk.bins.items();
-                lane.pixels += pieces
-                        ? rasterizer.fillPieces(frame, chunk.out, items, chunk.bins.start(b), chunk.bins.start(b + 1),
-                        textures, 0, y0, width, y1)
-                        : rasterizer.fill(frame, chunk.out, items, chunk.bins.start(b), chunk.bins.start(b + 1),
-                        textures, perspective, 0, y0, width, y1);
+                lane.pixels += rasterizer.fill(frame, chunk.out, chunk.bins.items(), chunk.bins.start(b),
+                        chunk.bins.start(b + 1), textures, perspective, 0, y0, width, y1);
             }
             lane.fillNanos += System.nanoTime() - t0;
             // The wait for the preparations is neither filling nor outlining: it is left out of both measures.

@@ -38,38 +38,7 @@ final class NearestSpans {
         double tBase = setup.tPlane.base;
         double tDx = setup.tPlane.dx;
         double tDy = setup.tPlane.dy;
-        long written = 0;
-        int[] sp = spans;
-        for (int y = setup.rowStart, j = 0; y < setup.rowEnd; y++, j += 2) {
-            int spanStart = sp[j];
-            int spanEnd = sp[j + 1];
-            if (spanStart >= spanEnd) {
-                continue;
-            }
-            written += perPixelRow(qBase + qDy * y, qDx, sBase + sDy * y, sDx, tBase + tDy * y, tDx, y, spanStart,
-                    spanEnd, frame, texture, uvId, perspective);
-        }
-        return written;
-    }
-
-    /**
-     * One row's pixels [spanStart, spanEnd) of {@link #perPixel}, or of a fallback piece of the
-     * one-pass fill (the piece's planes at {@code piece} of {@code rows}, {@link PieceRows#PERSPECTIVE}
-     * dividing).
-     */
-    static long perPixelRow(PieceRows rows, int piece, int y, int spanStart, int spanEnd, Framebuffer frame,
-                            Texture texture, int uvId) {
-        double[] pl = rows.planes;
-        int o = piece * PieceRows.PLANE_STRIDE;
-        return perPixelRow(pl[o] + pl[o + 2] * y, pl[o + 1], pl[o + 3] + pl[o + 5] * y, pl[o + 4],
-                pl[o + 6] + pl[o + 8] * y, pl[o + 7], y, spanStart, spanEnd, frame, texture, uvId,
-                rows.kind[piece] == PieceRows.PERSPECTIVE);
-    }
-
-    /** Pixels [spanStart, spanEnd) of row y, from the planes' values on the row and their steps along it. */
-    private static long perPixelRow(double qRow, double qDx, double sRow, double sDx, double tRow, double tDx, int y,
-                                    int spanStart, int spanEnd, Framebuffer frame, Texture texture, int uvId,
-                                    boolean perspective) {
+        int width = frame.width();
         int[] color = frame.color();
         float[] depth = frame.depth();
         double[] uv = frame.uv();
@@ -80,34 +49,45 @@ final class NearestSpans {
         int wMask = tw - 1;
         int hMask = th - 1;
         int topRow = th - 1;
-        int rowOffset = y * frame.width();
         long written = 0;
-        // Every value comes from the plane at this pixel, not by accumulation along the row, so
-        // no rounding error builds up across a wide triangle. The column is counted as a double too
-        // (exact): C2 compiles (double) x to cvtsi2sd, which merges into its register's old value;
-        // where that value waits on the previous pixel's division, every pixel waits for the one
-        // before, about 40 cycles a pixel instead of 14 (docs/performance.md, "The false dependency").
-        double xd = spanStart;
-        for (int x = spanStart; x < spanEnd; x++, xd++) {
-            double q = qRow + qDx * xd;
-            float qf = (float) q;
-            int i = rowOffset + x;
-            if (qf > depth[i]) {
-                depth[i] = qf;
-                double r = perspective ? 1.0 / q : 1.0;
-                double s = (sRow + sDx * xd) * r;
-                double t = (tRow + tDx * xd) * r;
-                int si = (int) Math.floor(s);
-                int ti = (int) Math.floor(t);
-                int column = pot ? si & wMask : Math.floorMod(si, tw);
-                int rowFromBottom = pot ? ti & hMask : Math.floorMod(ti, th);
-                color[i] = texels[(topRow - rowFromBottom) * tw + column] | 0xFF000000;
-                if (uv != null) {
-                    uv[3 * i] = s;
-                    uv[3 * i + 1] = t;
-                    uv[3 * i + 2] = uvId;
+        int[] sp = spans;
+        for (int y = setup.rowStart, j = 0; y < setup.rowEnd; y++, j += 2) {
+            int spanStart = sp[j];
+            int spanEnd = sp[j + 1];
+            if (spanStart >= spanEnd) {
+                continue;
+            }
+            double qRow = qBase + qDy * y;
+            double sRow = sBase + sDy * y;
+            double tRow = tBase + tDy * y;
+            int rowOffset = y * width;
+            // Every value comes from the plane at this pixel, not by accumulation along the row, so
+            // no rounding error builds up across a wide triangle. The column is counted as a double too
+            // (exact): C2 compiles (double) x to cvtsi2sd, which merges into its register's old value;
+            // where that value waits on the previous pixel's division, every pixel waits for the one
+            // before, about 40 cycles a pixel instead of 14 (docs/performance.md, "The false dependency").
+            double xd = spanStart;
+            for (int x = spanStart; x < spanEnd; x++, xd++) {
+                double q = qRow + qDx * xd;
+                float qf = (float) q;
+                int i = rowOffset + x;
+                if (qf > depth[i]) {
+                    depth[i] = qf;
+                    double r = perspective ? 1.0 / q : 1.0;
+                    double s = (sRow + sDx * xd) * r;
+                    double t = (tRow + tDx * xd) * r;
+                    int si = (int) Math.floor(s);
+                    int ti = (int) Math.floor(t);
+                    int column = pot ? si & wMask : Math.floorMod(si, tw);
+                    int rowFromBottom = pot ? ti & hMask : Math.floorMod(ti, th);
+                    color[i] = texels[(topRow - rowFromBottom) * tw + column] | 0xFF000000;
+                    if (uv != null) {
+                        uv[3 * i] = s;
+                        uv[3 * i + 1] = t;
+                        uv[3 * i + 2] = uvId;
+                    }
+                    written++;
                 }
-                written++;
             }
         }
         return written;

@@ -25,8 +25,6 @@ import dev.trisect.texture.TextureFilter;
 public final class Rasterizer {
     private final TriangleSetup setup = new TriangleSetup();
     private final SpanSolver solver = new SpanSolver();
-    /** The pieces of the input triangle being filled in one pass. */
-    private final PieceRows rows = new PieceRows();
     /** How {@link #fill} samples textures. */
     private TextureFilter filter = TextureFilter.NEAREST;
     /** The span path's largest displacement between knots, pixels; 0: perspective fills divide per pixel. */
@@ -67,102 +65,44 @@ public final class Rasterizer {
     public long fill(Framebuffer frame, ScreenTriangles triangles, int[] order, int from, int to,
                      Texture[] textures, boolean perspective, int x0, int y0, int x1, int y1) {
         long written = 0;
-        for (int n = from; n < to; n++) {
-            written += fillOne(frame, triangles, order[n], textures, perspective, x0, y0, x1, y1);
-        }
-        return written;
-    }
-
-    /**
-     * Fills the pieces of the tessellated path, triangles {@code order[from..to)} of {@code triangles},
-     * into the pixels {@code [x0, x1) x [y0, y1)} of the frame, with exactly the pixels, depth and UV
-     * output of {@link #fill} with {@code perspective} false, but in one pass per input triangle: the
-     * consecutive pieces of one input triangle are set up together ({@link PieceRows}) and each of
-     * their rows is filled by one loop across them ({@link OnePassSpans}).
-     *
-     * @return the number of pixels written (depth test passed)
-     */
-    public long fillPieces(Framebuffer frame, ScreenTriangles triangles, int[] order, int from, int to,
-                           Texture[] textures, int x0, int y0, int x1, int y1) {
-        if (filter != TextureFilter.NEAREST) {
-            return fill(frame, triangles, order, from, to, textures, false, x0, y0, x1, y1);
-        }
-        long written = 0;
+        int[] materials = triangles.materials();
         int[] ids = triangles.ids();
-        int n = from;
-        while (n < to) {
-            int id = ids[order[n]];
-            int m = n + 1;
-            while (m < to && ids[order[m]] == id) {
-                m++;
-            }
-            written += m - n == 1
-                    ? fillOne(frame, triangles, order[n], textures, false, x0, y0, x1, y1)
-                    : onePass(frame, triangles, order, n, m, textures, x0, y0, x1, y1);
-            n = m;
-        }
-        return written;
-    }
-
-    /** The pieces {@code order[from..to)} of one input triangle in one pass (see {@link #fillPieces}). */
-    private long onePass(Framebuffer frame, ScreenTriangles triangles, int[] order, int from, int to,
-                         Texture[] textures, int x0, int y0, int x1, int y1) {
         boolean[] perPixel = triangles.perPixel();
         TriangleSetup t = setup;
-        PieceRows r = rows;
-        r.begin(y0, y1);
         for (int n = from; n < to; n++) {
             int tri = order[n];
-            boolean divide = perPixel[tri];
-            if (!t.prepare(triangles, tri, divide, x0, y0, x1, y1)) {
+            boolean divide = perspective || perPixel[tri];
+            // The span path places its knots on each row's covered columns within the frame, whatever
+            // the rectangle, so that a pixel never depends on the rectangle being filled.
+            boolean knots = perspective && spanError > 0;
+            if (!t.prepare(triangles, tri, divide, knots ? 0 : x0, y0, knots ? frame.width() : x1, y1)) {
                 continue;
             }
+            if (knots && !t.fixedPointSafe) {
+                // Texel coordinates beyond 32.32 fixed point: filled per pixel, over the rectangle.
+                knots = false;
+                if ((x0 != 0 || x1 != frame.width()) && !t.prepare(triangles, tri, true, x0, y0, x1, y1)) {
+                    continue;
+                }
+            }
             solver.walk(t);
-            r.add(t, solver.spans(), tri, divide ? PieceRows.PERSPECTIVE
-                    : t.fixedPointSafe ? PieceRows.FIXED : PieceRows.AFFINE_DOUBLE);
-        }
-        if (r.count == 0) {
-            return 0;
-        }
-        r.build();
-        int tri = order[from];
-        return OnePassSpans.nearest(r, frame, textures[triangles.materials()[tri]], triangles.ids()[tri] + 1);
-    }
-
-    /** Fills one triangle, as {@link #fill} fills each. */
-    private long fillOne(Framebuffer frame, ScreenTriangles triangles, int tri, Texture[] textures,
-                         boolean perspective, int x0, int y0, int x1, int y1) {
-        TriangleSetup t = setup;
-        boolean divide = perspective || triangles.perPixel()[tri];
-        // The span path places its knots on each row's covered columns within the frame, whatever
-        // the rectangle, so that a pixel never depends on the rectangle being filled.
-        boolean knots = perspective && spanError > 0;
-        if (!t.prepare(triangles, tri, divide, knots ? 0 : x0, y0, knots ? frame.width() : x1, y1)) {
-            return 0;
-        }
-        if (knots && !t.fixedPointSafe) {
-            // Texel coordinates beyond 32.32 fixed point: filled per pixel, over the rectangle.
-            knots = false;
-            if ((x0 != 0 || x1 != frame.width()) && !t.prepare(triangles, tri, true, x0, y0, x1, y1)) {
-                return 0;
+            int[] spans = solver.spans();
+            Texture texture = textures[materials[tri]];
+            int uvId = ids[tri] + 1;
+            if (knots) {
+                written += filter == TextureFilter.NEAREST
+                        ? KnotSpans.nearest(t, spans, frame, texture, uvId, spanError, x0, x1)
+                        : KnotFilteredSpans.fill(t, spans, frame, texture.mipChain(), uvId, spanError,
+                        filter == TextureFilter.TRILINEAR, x0, x1);
+            } else if (filter != TextureFilter.NEAREST) {
+                written += FilteredSpans.fill(t, spans, frame, texture.mipChain(), uvId, divide, filter);
+            } else if (!divide && t.fixedPointSafe) {
+                written += NearestSpans.affineFixed(t, spans, frame, texture, uvId);
+            } else {
+                written += NearestSpans.perPixel(t, spans, frame, texture, uvId, divide);
             }
         }
-        solver.walk(t);
-        int[] spans = solver.spans();
-        Texture texture = textures[triangles.materials()[tri]];
-        int uvId = triangles.ids()[tri] + 1;
-        if (knots) {
-            return filter == TextureFilter.NEAREST
-                    ? KnotSpans.nearest(t, spans, frame, texture, uvId, spanError, x0, x1)
-                    : KnotFilteredSpans.fill(t, spans, frame, texture.mipChain(), uvId, spanError,
-                    filter == TextureFilter.TRILINEAR, x0, x1);
-        } else if (filter != TextureFilter.NEAREST) {
-            return FilteredSpans.fill(t, spans, frame, texture.mipChain(), uvId, divide, filter);
-        } else if (!divide && t.fixedPointSafe) {
-            return NearestSpans.affineFixed(t, spans, frame, texture, uvId);
-        } else {
-            return NearestSpans.perPixel(t, spans, frame, texture, uvId, divide);
-        }
+        return written;
     }
 
     /**
