@@ -88,6 +88,19 @@ class LauncherTest {
     }
 
     @Test
+    void demoHelpOnAFullStandardOutputFails() throws Exception {
+        org.junit.jupiter.api.Assumptions.assumeTrue(Files.exists(Path.of("/dev/full")));
+        ProcessBuilder pb = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"), Trisect.class.getName(),
+                "demo", "--help").redirectOutput(new java.io.File("/dev/full"));
+        Process p = pb.start();
+        assertTrue(p.waitFor(60, TimeUnit.SECONDS), "the launcher ended");
+        assertEquals(1, p.exitValue());
+        assertEquals("trisect: cannot write to standard output",
+                new String(p.getErrorStream().readAllBytes(), StandardCharsets.UTF_8).strip());
+    }
+
+    @Test
     void theSoakReportIsWrittenAllOrNothing(@TempDir Path dir) throws IOException {
         Path report = Files.writeString(dir.resolve("r.json"), "OLD");
         InputException directory = assertThrows(InputException.class, () -> Trisect.openReport(dir));

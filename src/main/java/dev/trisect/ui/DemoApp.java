@@ -103,7 +103,14 @@ public final class DemoApp implements Callable<Integer> {
             err.println("trisect: " + DemoWindow.message(ex));
             return ex instanceof InputException ie ? ie.exitStatus() : 1;
         });
-        return cl.execute(args);
+        int status = cl.execute(args);
+        // --help and --version print; a standard output that cannot take it fails as in every command.
+        // Both are asked (no short cut): picocli's writer flushes into System.out, which keeps the error.
+        if (status == 0 && (cl.getOut().checkError() | System.out.checkError())) {
+            err.println("trisect: cannot write to standard output");
+            return 1;
+        }
+        return status;
     }
 
     @Override
