@@ -12,6 +12,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.stream.Stream;
+import javax.tools.Tool;
 import javax.tools.ToolProvider;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -20,7 +21,8 @@ import org.junit.jupiter.api.io.TempDir;
  * The API's Javadoc stays clean: every package says whether it is API or internal, and the javadoc
  * tool over the exported packages, with the overview page, reports nothing under the doclint groups
  * the build uses ({@link #DOCLINT}, the same as the pom's {@code maven-javadoc-plugin}, which also fails
- * on a warning).
+ * on a warning); in the packages listed {@link #COMPLETE}, no parameter or return value is left
+ * undocumented either.
  */
 class JavadocTest {
     /**
@@ -28,6 +30,13 @@ class JavadocTest {
      * first sentence, as on accessors, is not required).
      */
     static final String DOCLINT = "-Xdoclint:all,-missing";
+
+    /**
+     * The API packages whose public and protected members are documented in full (every parameter,
+     * return value and serial field): "missing" is checked on these too, and the list only grows until
+     * it holds every API package (then {@link #DOCLINT} becomes {@code -Xdoclint:all}).
+     */
+    static final List<String> COMPLETE = List.of("base", "scene", "view");
     private static final Path SOURCES = Path.of("src/main/java/dev/trisect");
 
     @Test
@@ -63,6 +72,19 @@ class JavadocTest {
     }
 
     @Test
+    void theCompletePackagesMissNoParameterOrReturnValue(@TempDir Path out) throws IOException {
+        // javac runs the same doclint checks as javadoc, without writing pages.
+        List<String> args = new ArrayList<>(List.of("-Xdoclint:all/protected", "-Werror", "-proc:none", "-d",
+                out.toString(), "-cp", System.getProperty("java.class.path")));
+        for (String pkg : COMPLETE) {
+            try (Stream<Path> s = Files.list(SOURCES.resolve(pkg))) {
+                s.filter(f -> f.toString().endsWith(".java")).sorted().map(Path::toString).forEach(args::add);
+            }
+        }
+        assertEquals("", run(ToolProvider.getSystemJavaCompiler(), args), "doclint said something");
+    }
+
+    @Test
     void theApiJavadocHasNoWarnings(@TempDir Path out) throws IOException {
         List<String> args = new ArrayList<>(List.of("-quiet", DOCLINT, "-Xmaxwarns", "10000", "-d", out.toString(),
                 "-cp", System.getProperty("java.class.path"), "-overview", "src/main/javadoc/overview.html"));
@@ -71,12 +93,17 @@ class JavadocTest {
                 s.filter(f -> f.toString().endsWith(".java")).sorted().map(Path::toString).forEach(args::add);
             }
         }
+        assertEquals("", run(ToolProvider.getSystemDocumentationTool(), args), "javadoc said something");
+        assertTrue(Files.exists(out.resolve("dev/trisect/scene/SceneRenderer.html")), "the pages were written");
+    }
+
+    /** Runs javac or javadoc, which must succeed; returns what it printed, stripped. */
+    private static String run(Tool tool, List<String> args) {
         ByteArrayOutputStream log = new ByteArrayOutputStream();
         PrintStream print = new PrintStream(log, true, StandardCharsets.UTF_8);
-        int status = ToolProvider.getSystemDocumentationTool().run(null, print, print, args.toArray(new String[0]));
+        int status = tool.run(null, print, print, args.toArray(new String[0]));
         String text = log.toString(StandardCharsets.UTF_8);
         assertEquals(0, status, text);
-        assertEquals("", text.strip(), "javadoc said something");
-        assertTrue(Files.exists(out.resolve("dev/trisect/scene/SceneRenderer.html")), "the pages were written");
+        return text.strip();
     }
 }

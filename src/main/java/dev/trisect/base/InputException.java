@@ -11,16 +11,31 @@ public final class InputException extends RuntimeException {
     private static final long serialVersionUID = 1L;
 
     /** Whether the input could not be read at all (exit status 1) or was a usage error (exit status 2). */
-    public enum Kind { UNREADABLE, USAGE }
+    public enum Kind {
+        /** The input could not be read, or is malformed: exit status 1. */
+        UNREADABLE,
+        /** A value the user gave is out of range or inconsistent: exit status 2. */
+        USAGE
+    }
 
+    /** Usage error or unreadable input. */
     private final Kind kind;
 
-    /** An unreadable or malformed input file: exit status 1. */
+    /**
+     * An unreadable or malformed input file: exit status 1.
+     *
+     * @param message one line naming the file, the line and the problem
+     */
     public InputException(String message) {
         this(Kind.UNREADABLE, message, null);
     }
 
-    /** An unreadable or malformed input file, with the low-level cause kept for {@code --verbose}. */
+    /**
+     * An unreadable or malformed input file, with the low-level cause kept for {@code --verbose}.
+     *
+     * @param message one line naming the file, the line and the problem
+     * @param cause   what the reading code threw
+     */
     public InputException(String message, Throwable cause) {
         this(Kind.UNREADABLE, message, cause);
     }
@@ -30,17 +45,30 @@ public final class InputException extends RuntimeException {
         this.kind = kind;
     }
 
-    /** A value the user gave that is out of range or inconsistent (exit status 2). */
+    /**
+     * A value the user gave that is out of range or inconsistent (exit status 2).
+     *
+     * @param message one line naming the option or value and what is wrong
+     * @return the error, to throw
+     */
     public static InputException usage(String message) {
         return new InputException(Kind.USAGE, message, null);
     }
 
-    /** Whether this is a usage error (exit 2) or unreadable input (exit 1). */
+    /**
+     * Whether this is a usage error (exit 2) or unreadable input (exit 1).
+     *
+     * @return {@link Kind#USAGE} or {@link Kind#UNREADABLE}
+     */
     public Kind kind() {
         return kind;
     }
 
-    /** The conventional process exit status for this error. */
+    /**
+     * The conventional process exit status for this error.
+     *
+     * @return 2 for a usage error, 1 for unreadable input
+     */
     public int exitStatus() {
         return kind == Kind.USAGE ? 2 : 1;
     }
@@ -49,6 +77,10 @@ public final class InputException extends RuntimeException {
      * {@code text} quoted for a one-line message: in single quotes, control characters escaped as
      * {@code \xNN} so the message stays one printable line, and cut to {@code max} characters
      * (then ending in {@code ...}).
+      *
+     * @param text any text, from a file or an option
+     * @param max  characters of {@code text} kept
+     * @return the quoted, escaped, possibly cut text
      */
     public static String quote(String text, int max) {
         StringBuilder sb = new StringBuilder("'");

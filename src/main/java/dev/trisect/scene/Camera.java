@@ -30,7 +30,17 @@ public record Camera(Vec3 eye, Vec3 target, Vec3 up, double fovY, double near, d
     /** Smallest distance from eye to target, world units: its square stays a normal double. */
     public static final double MIN_DISTANCE = 1e-150;
 
-    /** Checks every rule above; the message names the offending value. */
+    /**
+     * Checks every rule above; the message names the offending value.
+     *
+     * @param eye    camera position, world space
+     * @param target point looked at, world space
+     * @param up     approximate up direction, world space
+     * @param fovY   vertical field of view, degrees
+     * @param near   distance to the near plane, world units
+     * @param far    distance to the far plane, world units
+     * @throws IllegalArgumentException when a value breaks a rule, naming it
+     */
     public Camera {
         if (!eye.isFinite() || !target.isFinite() || !up.isFinite()) {
             throw new IllegalArgumentException("camera eye, target and up must be finite numbers");
@@ -68,22 +78,42 @@ public record Camera(Vec3 eye, Vec3 target, Vec3 up, double fovY, double near, d
         }
     }
 
-    /** A camera with the default field of view, near and far, and +y up. */
+    /**
+     * A camera with the default field of view, near and far, and +y up.
+     *
+     * @param eye    camera position, world space
+     * @param target point looked at, world space
+     * @return the camera
+     */
     public static Camera looking(Vec3 eye, Vec3 target) {
         return new Camera(eye, target, Vec3.UP, DEFAULT_FOV, DEFAULT_NEAR, DEFAULT_FAR);
     }
 
-    /** World space to view space. */
+    /**
+     * World space to view space.
+     *
+     * @return the view matrix, as {@code gluLookAt}
+     */
     public Mat4 view() {
         return Mat4.lookAt(eye, target, up);
     }
 
-    /** View space to clip space for a viewport of the given aspect (width / height). */
+    /**
+     * View space to clip space for a viewport of the given aspect (width / height).
+     *
+     * @param aspect width / height of the viewport
+     * @return the projection matrix, as {@code gluPerspective}
+     */
     public Mat4 projection(double aspect) {
         return Mat4.perspective(fovY, aspect, near, far);
     }
 
-    /** World space to clip space for the viewport. */
+    /**
+     * World space to clip space for the viewport.
+     *
+     * @param viewport the frame's size, pixels
+     * @return projection times view
+     */
     public Mat4 viewProjection(Viewport viewport) {
         return projection(viewport.aspect()).mul(view());
     }

@@ -24,7 +24,11 @@ public sealed class Group extends Node permits Scene {
         super(null);
     }
 
-    /** An empty group with a name. */
+    /**
+     * An empty group with a name.
+     *
+     * @param name the group's name, or null
+     */
     public Group(String name) {
         super(name);
     }
@@ -33,7 +37,8 @@ public sealed class Group extends Node permits Scene {
      * Adds nodes at the end of this group. A node already in a group (this one included) is moved
      * here; a node is never in two groups.
      *
-     * @return this group
+     * @param nodes the nodes to add, in order
+     * @return this group, for chaining
      * @throws NullPointerException     for a null node
      * @throws IllegalArgumentException for a {@link Scene}, or a group that holds this one (a cycle)
      */
@@ -70,6 +75,7 @@ public sealed class Group extends Node permits Scene {
     /**
      * Takes a node out of this group.
      *
+     * @param node the node to take out
      * @return whether it was in this group
      */
     public boolean remove(Node node) {
@@ -98,7 +104,11 @@ public sealed class Group extends Node permits Scene {
         }
     }
 
-    /** The nodes in this group as of now, in order: an unmodifiable copy. */
+    /**
+     * The nodes in this group as of now, in order: an unmodifiable copy.
+     *
+     * @return the children, in order
+     */
     public List<Node> children() {
         return children;
     }

@@ -25,6 +25,8 @@ public final class Material {
     /**
      * A textured material, sampled with the frame's texture filter.
      *
+     * @param texture the texture, not null
+     * @return the material
      * @throws NullPointerException when {@code texture} is null
      */
     public static Material of(Texture texture) {
@@ -37,6 +39,7 @@ public final class Material {
      * A material of one opaque colour.
      *
      * @param rgb the colour as 0xRRGGBB (any alpha bits are ignored)
+     * @return the material
      */
     public static Material colour(int rgb) {
         int opaque = rgb | 0xFF000000;
@@ -44,12 +47,20 @@ public final class Material {
                 OptionalInt.of(rgb & 0xFFFFFF));
     }
 
-    /** The texture drawn: the material's own, or for a colour material a 1x1 texture of that colour. */
+    /**
+     * The texture drawn: the material's own, or for a colour material a 1x1 texture of that colour.
+     *
+     * @return the texture the rasterizer samples
+     */
     public Texture texture() {
         return texture;
     }
 
-    /** The colour of a colour material as 0xRRGGBB; empty for a textured material. */
+    /**
+     * The colour of a colour material as 0xRRGGBB; empty for a textured material.
+     *
+     * @return the colour, or empty
+     */
     public OptionalInt rgb() {
         return rgb;
     }

@@ -33,7 +33,11 @@ public abstract sealed class Node permits Group, SceneObject {
         this.name = name;
     }
 
-    /** The node's place in its parent's space (in world space for a node at the top of a scene). */
+    /**
+     * The node's place in its parent's space (in world space for a node at the top of a scene).
+     *
+     * @return the node's own transform
+     */
     public Transform transform() {
         return transform;
     }
@@ -42,6 +46,7 @@ public abstract sealed class Node permits Group, SceneObject {
      * Places the node; takes effect from the next frame drawn. The node's points go through
      * {@code transform} and then through each enclosing group's transform.
      *
+     * @param transform the new transform, in the parent's space
      * @throws NullPointerException when {@code transform} is null
      */
     public void setTransform(Transform transform) {
@@ -56,12 +61,20 @@ public abstract sealed class Node permits Group, SceneObject {
         }
     }
 
-    /** Whether the node is drawn (when its groups are too). */
+    /**
+     * Whether the node is drawn (when its groups are too).
+     *
+     * @return true unless hidden
+     */
     public boolean isVisible() {
         return visible;
     }
 
-    /** Shows or hides the node, and for a group everything in it. */
+    /**
+     * Shows or hides the node, and for a group everything in it.
+     *
+     * @param visible true to show, false to hide
+     */
     public void setVisible(boolean visible) {
         LOCK.lock();
         try {
@@ -71,17 +84,29 @@ public abstract sealed class Node permits Group, SceneObject {
         }
     }
 
-    /** The node's name, for the application's own use; may be null. */
+    /**
+     * The node's name, for the application's own use; may be null.
+     *
+     * @return the name, or null
+     */
     public String name() {
         return name;
     }
 
-    /** Names the node (any string, or null). */
+    /**
+     * Names the node (any string, or null).
+     *
+     * @param name the new name, or null
+     */
     public void setName(String name) {
         this.name = name;
     }
 
-    /** The group this node is in, or null when it is in none. */
+    /**
+     * The group this node is in, or null when it is in none.
+     *
+     * @return the enclosing group, or null
+     */
     public Group parent() {
         return parent;
     }
@@ -89,6 +114,8 @@ public abstract sealed class Node permits Group, SceneObject {
     /**
      * Object space to world space as of now: the transforms of the node and of every enclosing group,
      * innermost applied first.
+      *
+     * @return object space to world space, as of now
      */
     public Mat4 worldMatrix() {
         LOCK.lock();

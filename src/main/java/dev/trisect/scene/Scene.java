@@ -48,6 +48,8 @@ public final class Scene extends Group {
      * Runs {@code changes} so that no frame shows some of them without the others: snapshots wait
      * until it returns. Keep it short (a view's next frame waits for it); the calls inside may be any
      * of the graph's methods, on any scene.
+      *
+     * @param changes the changes, run on the calling thread under the scene's lock
      */
     public void update(Runnable changes) {
         LOCK.lock();
@@ -61,6 +63,8 @@ public final class Scene extends Group {
     /**
      * The visible objects as of now with their world matrices, in drawing order (depth-first, groups'
      * children in order). Hidden nodes and everything in hidden groups are left out.
+      *
+     * @return the visible objects as of now, in drawing order: an unmodifiable list
      */
     public List<Placed> snapshot() {
         List<Placed> out = new ArrayList<>();
@@ -89,7 +93,11 @@ public final class Scene extends Group {
         }
     }
 
-    /** Every object in the scene, visible or not, depth-first. */
+    /**
+     * Every object in the scene, visible or not, depth-first.
+     *
+     * @return every object, depth-first: an unmodifiable list
+     */
     public List<SceneObject> objects() {
         List<SceneObject> out = new ArrayList<>();
         LOCK.lock();

@@ -40,6 +40,8 @@ public final class SceneObject extends Node {
     /**
      * An object drawing every material of {@code mesh} with {@code material}.
      *
+     * @param mesh     the mesh, object space; shared freely
+     * @param material drawn for every material of the mesh
      * @throws NullPointerException when either is null
      */
     public SceneObject(Mesh mesh, Material material) {
@@ -51,6 +53,8 @@ public final class SceneObject extends Node {
      * An object drawing {@code mesh} with one material per mesh material, in the mesh's material order
      * ({@link Mesh#materialNames()}).
      *
+     * @param mesh      the mesh, object space; shared freely
+     * @param materials one per mesh material, in its order
      * @throws NullPointerException     when the mesh, the list or one of its materials is null
      * @throws IllegalArgumentException when the list's size is not the mesh's material count
      */
@@ -59,29 +63,51 @@ public final class SceneObject extends Node {
         this.look = look(mesh, materials);
     }
 
-    /** An object drawing {@code mesh} with {@code material}, placed by {@code transform}. */
+    /**
+     * An object drawing {@code mesh} with {@code material}, placed by {@code transform}.
+     *
+     * @param mesh      the mesh, object space; shared freely
+     * @param material  drawn for every material of the mesh
+     * @param transform the object's place in its parent's space
+     */
     public SceneObject(Mesh mesh, Material material, Transform transform) {
         this(mesh, material);
         setTransform(transform);
     }
 
-    /** The mesh, in object space. */
+    /**
+     * The mesh, in object space.
+     *
+     * @return the mesh
+     */
     public Mesh mesh() {
         return look.mesh();
     }
 
-    /** The materials, one per mesh material: an unmodifiable list. */
+    /**
+     * The materials, one per mesh material: an unmodifiable list.
+     *
+     * @return the materials, by mesh material
+     */
     public List<Material> materials() {
         return look.materials();
     }
 
-    /** Draws every material of the mesh with {@code material} from the next frame on. */
+    /**
+     * Draws every material of the mesh with {@code material} from the next frame on.
+     *
+     * @param material the material for every mesh material
+     */
     public void setMaterial(Material material) {
         Objects.requireNonNull(material, "material is null: use Material.of(texture) or Material.colour(rgb)");
         setMaterials(Collections.nCopies(look.mesh().materialCount(), material));
     }
 
-    /** Replaces the materials (one per mesh material) from the next frame on. */
+    /**
+     * Replaces the materials (one per mesh material) from the next frame on.
+     *
+     * @param materials one per mesh material, in its order
+     */
     public void setMaterials(List<Material> materials) {
         Look next = look(look.mesh(), materials);
         LOCK.lock();
@@ -117,7 +143,12 @@ public final class SceneObject extends Node {
         return new Look(mesh, List.copyOf(copy));
     }
 
-    /** {@link #load(Path, Consumer)} without remarks. */
+    /**
+     * {@link #load(Path, Consumer)} without remarks.
+     *
+     * @param obj the OBJ file
+     * @return the object, named after the file
+     */
     public static SceneObject load(Path obj) {
         return load(obj, note -> { });
     }
@@ -127,7 +158,9 @@ public final class SceneObject extends Node {
      * material without a texture gets the built-in UV grid (as the command line and the demo show such
      * files), and {@code notes} hears of it. The object is named after the file.
      *
+     * @param obj   the OBJ file
      * @param notes receives one-line remarks for the user (never errors; those are thrown)
+     * @return the object, named after the file
      * @throws InputException for anything unreadable, with a one-line message naming the file and line
      */
     public static SceneObject load(Path obj, Consumer<String> notes) {
@@ -141,8 +174,10 @@ public final class SceneObject extends Node {
      * {@code notes} hears the one-line message the strict load would have thrown. For viewers, where a
      * model with one lost texture is still worth seeing; renders that must be exact use the strict load.
      *
+     * @param obj          the OBJ file
      * @param notes        receives one-line remarks for the user
      * @param placeholders whether an unreadable texture gets a placeholder (true) or rejects the model
+     * @return the object, named after the file
      * @throws InputException for anything else unreadable, with a one-line message naming the file and line
      */
     public static SceneObject load(Path obj, Consumer<String> notes, boolean placeholders) {

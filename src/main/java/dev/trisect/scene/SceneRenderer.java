@@ -50,7 +50,11 @@ public final class SceneRenderer implements AutoCloseable {
         this.renderer = new FrameRenderer(threads);
     }
 
-    /** Threads this renderer draws with. */
+    /**
+     * Threads this renderer draws with.
+     *
+     * @return the number of threads, the calling one included
+     */
     public int threads() {
         return renderer.threads();
     }
@@ -59,6 +63,10 @@ public final class SceneRenderer implements AutoCloseable {
      * Draws every visible object of {@code scene}, as one {@link Scene#snapshot()}, into {@code frame},
      * which is cleared to the settings' background first.
      *
+     * @param scene    what to draw, as of now
+     * @param camera   where from
+     * @param settings how (path, filter, borders, background)
+     * @param frame    where to; its size gives the projection's aspect
      * @return what the frame did
      * @throws IllegalStateException after {@link #close()}
      * @throws NullPointerException  for a null argument
@@ -119,14 +127,26 @@ public final class SceneRenderer implements AutoCloseable {
      * Draws {@code scene} seen by {@code camera} with the default settings ({@link RenderSettings#defaults()}:
      * tessellated, black background) into a new image.
      *
+     * @param scene  what to draw
+     * @param camera where from
      * @param width  pixels, 1..{@link Viewport#MAX_SIDE}
      * @param height pixels, 1..{@link Viewport#MAX_SIDE}
+     * @return the picture, {@code TYPE_INT_RGB}
      */
     public static BufferedImage renderImage(Scene scene, Camera camera, int width, int height) {
         return renderImage(scene, camera, RenderSettings.defaults(), width, height);
     }
 
-    /** Draws {@code scene} seen by {@code camera} with {@code settings} into a new image. */
+    /**
+     * Draws {@code scene} seen by {@code camera} with {@code settings} into a new image.
+     *
+     * @param scene    what to draw
+     * @param camera   where from
+     * @param settings how
+     * @param width    pixels, 1..{@link Viewport#MAX_SIDE}
+     * @param height   pixels, 1..{@link Viewport#MAX_SIDE}
+     * @return the picture, {@code TYPE_INT_RGB}
+     */
     public static BufferedImage renderImage(Scene scene, Camera camera, RenderSettings settings, int width,
                                             int height) {
         new Viewport(width, height); // checks the size with its message
