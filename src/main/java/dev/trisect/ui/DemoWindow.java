@@ -184,6 +184,7 @@ final class DemoWindow {
         viewMenu.add(new JMenuItem(view.action(ViewAction.TEXTURE_FILTER)));
         viewMenu.addSeparator();
         viewMenu.add(new JCheckBoxMenuItem(view.action(ViewAction.PIXEL_INSPECTOR)));
+        viewMenu.add(new JMenuItem(view.action(ViewAction.COPY_INSPECTION)));
         viewMenu.add(new JCheckBoxMenuItem(view.action(ViewAction.FREEZE)));
         viewMenu.add(new JMenuItem(view.action(ViewAction.STEP)));
         viewMenu.addSeparator();

@@ -41,7 +41,9 @@ public enum ViewAction {
     /** F6: show the displacement against the per-pixel path as a heat map (opens the developer tools). */
     SHOW_DIFFERENCE("view-difference"),
     /** F7: this path left of a divider, the per-pixel path right of it (opens the developer tools). */
-    SHOW_SPLIT("view-split");
+    SHOW_SPLIT("view-split"),
+    /** Ctrl+C: copy the pixel inspector's readout to the clipboard as text. */
+    COPY_INSPECTION("copy-inspection");
 
     final String id;
 

@@ -485,6 +485,16 @@ class DemoWindowGuiTest {
         robot.mouseMove(at.x + 200, at.y + 200);
         Thread.sleep(300);
         assertEquals(pinnedAt, state().inspected(), "a pinned inspector stays put");
+        // Ctrl+C copies the readout as text (the View menu's "Copy inspector readout").
+        robot.keyPress(KeyEvent.VK_CONTROL);
+        press(KeyEvent.VK_C);
+        robot.keyRelease(KeyEvent.VK_CONTROL);
+        waitFor("the readout on the clipboard", () -> onEdt(() -> {
+            var clip = java.awt.Toolkit.getDefaultToolkit().getSystemClipboard();
+            Object text = clip.isDataFlavorAvailable(java.awt.datatransfer.DataFlavor.stringFlavor)
+                    ? clip.getData(java.awt.datatransfer.DataFlavor.stringFlavor) : "";
+            return text.toString().startsWith("pixel " + front().inspection.x() + "," + front().inspection.y());
+        }));
         press(KeyEvent.VK_I);
         waitFor("the inspector off", () -> state().inspected() < 0);
     }

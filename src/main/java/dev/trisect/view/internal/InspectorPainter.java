@@ -42,8 +42,10 @@ public final class InspectorPainter {
     /** The inspector's readout lines for an inspection (also what tests check). */
     static List<String> lines(PixelInspector.Inspection in, boolean pinned) {
         List<String> l = new ArrayList<>();
-        l.add(String.format(Locale.ROOT, "pixel %d,%d %s #%06X", in.x(), in.y(), pinned ? "(pinned)" : "",
-                in.argb() & 0xFFFFFF));
+        // Both paths' colours side by side (swatches follow the text in the view).
+        l.add(String.format(Locale.ROOT, "pixel %d,%d %s#%06X", in.x(), in.y(), pinned ? "(pinned) " : "",
+                in.argb() & 0xFFFFFF) + (in.refArgb() == 0 ? "" : String.format(Locale.ROOT, ", per-pixel #%06X",
+                in.refArgb() & 0xFFFFFF)));
         PieceInfo mark = in.outline();
         if (mark != null) {
             // The magenta mark on the pixel belongs to this piece, which may not be the pixel's own.
@@ -57,6 +59,10 @@ public final class InspectorPainter {
         PieceInfo p = in.piece();
         l.add(triangleOf(in.owner(), in.triangle()) + (p == null ? "" : ", piece " + p.index() + ", split level " + p.level()
                 + (p.fallback() ? ", " + perPixel(p) : "")));
+        if (p != null || in.triangle2d() != null) {
+            l.add("in the view: " + (p == null ? "" : "piece outlined cyan" + (in.triangle2d() == null ? "" : ", "))
+                    + (in.triangle2d() == null ? "" : "input triangle dashed"));
+        }
         l.add(String.format(Locale.ROOT, "depth w %.4f", in.w()));
         l.add(String.format(Locale.ROOT, "texel s,t this path %.3f, %.3f", in.s(), in.t()));
         l.add(Double.isNaN(in.refS()) ? "per-pixel path: other triangle"
@@ -74,6 +80,11 @@ public final class InspectorPainter {
         l.add(String.format(Locale.ROOT, "mip level %d (lambda %.2f%s), texel %d,%d", in.mipLevel(), in.lambda(),
                 in.segment() >= 0 ? " of the segment" : "", in.texelX(), in.texelY()));
         return l;
+    }
+
+    /** The readout as text, one line each, for the clipboard. */
+    static String text(PixelInspector.Inspection in) {
+        return String.join(System.lineSeparator(), lines(in, false)) + System.lineSeparator();
     }
 
     /** Why a fallback piece is filled per pixel: a sliver, or a cap stopped its splitting. */
@@ -112,6 +123,7 @@ public final class InspectorPainter {
         int px = (int) Math.round((in.x() + 0.5) * sx);
         int py = (int) Math.round((in.y() + 0.5) * sy);
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_OFF);
+        paintShapes(g, in, sx, sy);
         // Crosshair with a gap over the pixel itself, dark under light so it shows on any texture.
         for (int pass = 0; pass < 2; pass++) {
             g.setColor(pass == 0 ? new Color(0, 0, 0, 160) : Color.WHITE);
@@ -132,6 +144,7 @@ public final class InspectorPainter {
             textW = Math.max(textW, g.getFontMetrics().stringWidth(s));
         }
         int magnifier = MAGNIFIED * (MAGNIFIER_SIZE / MAGNIFIED);
+        textW = Math.max(textW, g.getFontMetrics().stringWidth(lines.get(0)) + 2 * lineH + 6);
         Rectangle panel = place(Math.max(magnifier + 2, textW + 12), magnifier + 2 + GAP + lines.size() * lineH + 8,
                 px, py, viewW, viewH);
         // The magnifier on the panel's outer side, the numbers under it.
@@ -144,6 +157,43 @@ public final class InspectorPainter {
         g.setColor(Color.WHITE);
         for (int k = 0; k < lines.size(); k++) {
             g.drawString(lines.get(k), panel.x + 6, by + 4 + (k + 1) * lineH - 3);
+        }
+        // Swatches of the two colours after the first line, this path's first.
+        int sw = lineH - 5;
+        int sxw = panel.x + 6 + g.getFontMetrics().stringWidth(lines.get(0)) + 6;
+        int[] colours = in.refArgb() == 0 ? new int[] {in.argb()} : new int[] {in.argb(), in.refArgb()};
+        for (int c = 0; c < colours.length; c++) {
+            g.setColor(new Color(colours[c], false));
+            g.fillRect(sxw + c * (sw + 3), by + 6, sw, sw);
+            g.setColor(Color.WHITE);
+            g.drawRect(sxw + c * (sw + 3), by + 6, sw, sw);
+        }
+    }
+
+    /**
+     * The inspected piece outlined in cyan and its input triangle dashed (both over a dark edge, so
+     * that they show on any texture), in view pixels.
+     */
+    private static void paintShapes(Graphics2D g, PixelInspector.Inspection in, double sx, double sy) {
+        double[][] shapes = {in.triangle2d(), in.piece() == null ? null : in.piece().screen()};
+        for (int k = 0; k < 2; k++) {
+            double[] c = shapes[k];
+            if (c == null) {
+                continue;
+            }
+            java.awt.geom.Path2D.Double path = new java.awt.geom.Path2D.Double();
+            path.moveTo(c[0] * sx, c[1] * sy);
+            for (int v = 2; v < c.length; v += 2) {
+                path.lineTo(c[v] * sx, c[v + 1] * sy);
+            }
+            path.closePath();
+            float[] dash = k == 0 ? new float[] {6, 4} : null;
+            g.setColor(new Color(0, 0, 0, 150));
+            g.setStroke(new BasicStroke(3, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, dash, 0));
+            g.draw(path);
+            g.setColor(k == 0 ? Color.WHITE : Color.CYAN);
+            g.setStroke(new BasicStroke(1, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, dash, 0));
+            g.draw(path);
         }
     }
 

@@ -1,6 +1,9 @@
 package dev.trisect.view.internal;
 
+import dev.trisect.math.Viewport;
+import dev.trisect.mesh.Mesh;
 import dev.trisect.metrics.TexelToScreen;
+import dev.trisect.pipeline.Draws;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.PieceInfo;
 import dev.trisect.raster.RowKnots;
@@ -47,10 +50,15 @@ public final class PixelInspector {
      *                     short) whose magenta outline lights this pixel, the last drawn when several do;
      *                     else null. It explains a magenta mark the pixel's own piece does not.
      * @param outlineOwner the object of that outline's triangle, or null without an outline
+     * @param refArgb      the per-pixel path's colour at this pixel, or 0 when it was not drawn
+     * @param triangle2d   the input triangle on screen, frame pixels {x0, y0, x1, y1, ...}: its corners, or
+     *                     where it crosses the near plane the part in front of it (four corners); null
+     *                     where nothing was drawn
      */
     public record Inspection(int x, int y, int argb, int triangle, DrawnFrame.Owner owner, double w, double s, double t,
                       double refS, double refT, double displacement, PieceInfo piece, double lambda, int mipLevel,
-                      int texelX, int texelY, RowKnots knots, PieceInfo outline, DrawnFrame.Owner outlineOwner) {
+                      int texelX, int texelY, RowKnots knots, PieceInfo outline, DrawnFrame.Owner outlineOwner,
+                      int refArgb, double[] triangle2d) {
         /** The span segment holding the pixel (the index of its first knot), or -1 (not the span path, or a lone knot). */
         public int segment() {
             return knots == null ? -1 : knots.segmentOf(x);
@@ -74,9 +82,10 @@ public final class PixelInspector {
         int argb = frame.color()[i];
         PieceInfo outline = borders ? renderer.fallbackOutlineAt(x, y, frame.depth()[i]) : null;
         DrawnFrame.Owner outlineOwner = outline == null ? null : drawn.ownerOf(outline.triangle());
+        int refArgb = reference == null ? 0 : reference.color()[i];
         if (id < 0) {
             return new Inspection(x, y, argb, -1, null, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN,
-                    Double.NaN, null, Double.NaN, 0, 0, 0, null, outline, outlineOwner);
+                    Double.NaN, null, Double.NaN, 0, 0, 0, null, outline, outlineOwner, refArgb, null);
         }
         double q = frame.depth()[i];
         double s = uv[3 * i];
@@ -110,7 +119,59 @@ public final class PixelInspector {
         int tx = Math.floorMod((int) Math.floor(s * chain.scaleS(level)), chain.width(level));
         int ty = Math.floorMod((int) Math.floor(t * chain.scaleT(level)), chain.height(level));
         return new Inspection(x, y, argb, id, drawn.ownerOf(id), 1 / q, s, t, refS, refT, displacement, piece, lambda,
-                level, tx, ty, knots, outline, outlineOwner);
+                level, tx, ty, knots, outline, outlineOwner, refArgb, onScreen(drawn.draws(), id, frame.width(),
+                frame.height()));
+    }
+
+    /**
+     * Frame triangle {@code id} on screen, frame pixels {x0, y0, x1, y1, ...}: its corners projected by
+     * its draw's model-view-projection, the part in front of the near plane (z &ge; -w in clip space)
+     * where it crosses it — a triangle, or a quadrilateral. Null where no part lies in front.
+     */
+    static double[] onScreen(Draws draws, int id, int width, int height) {
+        int d = draws.drawOf(id);
+        int local = id - draws.firstTriangle(d);
+        Mesh mesh = draws.mesh(d);
+        float[] pos = mesh.positions();
+        double[][] clip = new double[3][4];
+        for (int k = 0; k < 3; k++) {
+            int p = 3 * mesh.cornerPositions()[3 * local + k];
+            draws.transform(d).transformPoint(pos[p], pos[p + 1], pos[p + 2], clip[k], 0);
+        }
+        // Sutherland-Hodgman against the near plane alone: the outline is drawn, not filled, so the sides
+        // may reach past the screen.
+        double[] kept = new double[4 * 4];
+        int n = 0;
+        for (int k = 0; k < 3; k++) {
+            double[] a = clip[k];
+            double[] b = clip[(k + 1) % 3];
+            double da = a[2] + a[3];
+            double db = b[2] + b[3];
+            if (da >= 0) {
+                System.arraycopy(a, 0, kept, 4 * n++, 4);
+            }
+            if ((da >= 0) != (db >= 0)) {
+                double t = da / (da - db);
+                for (int c = 0; c < 4; c++) {
+                    kept[4 * n + c] = a[c] + t * (b[c] - a[c]);
+                }
+                n++;
+            }
+        }
+        if (n < 3) {
+            return null;
+        }
+        Viewport viewport = new Viewport(width, height);
+        double[] out = new double[2 * n];
+        for (int k = 0; k < n; k++) {
+            double w = kept[4 * k + 3];
+            if (!(w > 0)) {
+                return null;
+            }
+            out[2 * k] = viewport.screenX(kept[4 * k], w);
+            out[2 * k + 1] = viewport.screenY(kept[4 * k + 1], w);
+        }
+        return out;
     }
 
     /**

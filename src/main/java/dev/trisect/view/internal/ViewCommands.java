@@ -33,6 +33,7 @@ public final class ViewCommands {
     public final Command freeze;
     public final Command step;
     public final Command splitPolicy;
+    public final Command copyInspection;
     /** Perspective, affine, tessellated, spans, by {@link RenderMode} ordinal. */
     public final List<Command> modes;
     /** Image, Difference, Split: what the view shows, by {@link ViewKind} ordinal. */
@@ -84,6 +85,9 @@ public final class ViewCommands {
                     c.update(s -> s.withRender(s.render().withTessellation(s.render().tessellation()
                             .withPolicy(next))));
                 }));
+        copyInspection = add("copy-inspection", Command.action("Copy inspector readout", "Copy the pixel inspector's "
+                + "numbers of the inspected pixel to the clipboard as text", KeyStroke.getKeyStroke(KeyEvent.VK_C,
+                java.awt.event.InputEvent.CTRL_DOWN_MASK), c::copyInspection));
         String[] modeTips = {
             "Per-pixel perspective: u/w, v/w, 1/w interpolated and divided at every pixel (the reference)",
             "Affine: u, v interpolated linearly on screen (fast, visibly warped)",

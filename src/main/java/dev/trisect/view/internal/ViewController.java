@@ -192,6 +192,18 @@ public final class ViewController {
         surface.inspector(on);
     }
 
+    /** Puts the inspector's readout of the frame on screen on the clipboard as text (or says why not). */
+    void copyInspection() {
+        FrameSlot f = front;
+        if (f == null || f.inspection == null) {
+            message("Nothing to copy: turn the pixel inspector on (I) and point at a pixel.");
+            return;
+        }
+        java.awt.Toolkit.getDefaultToolkit().getSystemClipboard().setContents(
+                new java.awt.datatransfer.StringSelection(InspectorPainter.text(f.inspection)), null);
+        message("Copied the inspector's readout of pixel " + f.inspection.x() + "," + f.inspection.y() + ".");
+    }
+
     /** Shows or hides the developer tools window (the F12 command's behaviour). */
     public void showDevTools(boolean on) {
         commands.devTools.show(on);

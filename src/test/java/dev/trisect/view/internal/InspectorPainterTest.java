@@ -19,7 +19,7 @@ class InspectorPainterTest {
         // A full readout: a triangle, its piece, both paths' texel coordinates, the displacement, the mip level.
         PieceInfo piece = new PieceInfo(8, 3, 2, false, new double[] {10, 10, 60, 10, 35, 40}, new double[9]);
         f.inspection = new PixelInspector.Inspection(x, y, 0xFF808080, 3, null, 2.5, 10.25, 3.5, 10.25, 3.5, 0.125,
-                piece, 1.5, 1, 12, 4, null, null, null);
+                piece, 1.5, 1, 12, 4, null, null, null, 0xFF404040, new double[] {5, 5, 90, 5, 5, 90});
         BufferedImage view = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = view.createGraphics();
         g.drawImage(f.image, 0, 0, null);
@@ -64,5 +64,20 @@ class InspectorPainterTest {
     void inAViewTooSmallForAnyCornerThePanelGoesToTheFarthest() {
         Rectangle r = InspectorPainter.place(300, 300, 40, 40, 320, 320);
         assertTrue(r.x > 0 && r.y > 0, "the bottom right, away from a pixel at the top left: " + r);
+    }
+
+    @Test
+    void theInspectedPieceAndItsTriangleAreDrawnAndBothColoursNamed() {
+        BufferedImage v = painted(1280, 720, 600, 400);
+        assertEquals(0x00FFFF, v.getRGB(35, 10) & 0xFFFFFF, "the piece's top edge in cyan");
+        assertEquals(0xFFFFFF, v.getRGB(7, 5) & 0xFFFFFF, "the input triangle's top edge, dashed white");
+        FrameSlot f = new FrameSlot(8, 8);
+        PieceInfo piece = new PieceInfo(8, 3, 2, false, new double[] {10, 10, 60, 10, 35, 40}, new double[9]);
+        var in = new PixelInspector.Inspection(1, 2, 0xFF808080, 3, null, 2.5, 10.25, 3.5, 10.25, 3.5, 0.125, piece,
+                1.5, 1, 12, 4, null, null, null, 0xFF404040, new double[] {5, 5, 90, 5, 5, 90});
+        String text = InspectorPainter.text(in);
+        assertTrue(text.startsWith("pixel 1,2 #808080, per-pixel #404040" + System.lineSeparator()), text);
+        assertTrue(text.contains("in the view: piece outlined cyan, input triangle dashed"), text);
+        assertTrue(f.width() == 8);
     }
 }

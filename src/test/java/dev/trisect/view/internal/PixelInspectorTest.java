@@ -86,6 +86,15 @@ class PixelInspectorTest {
             r.render(floor.mesh(), floor.textureArray(), vp, v.render().withMode(RenderMode.PERSPECTIVE), ref);
         }
         assertEquals(ref.uv()[3 * i], in.refS(), 0.0);
+        assertEquals(ref.color()[i], in.refArgb(), "the per-pixel path's colour beside this path's");
+        double[] c = in.triangle2d();
+        assertTrue(c != null && c.length >= 6, "the input triangle (its part before the near plane) on screen");
+        boolean covers = false;
+        for (int k = 2; k + 3 < c.length; k += 2) {
+            // A fan of the convex outline: one of its triangles covers the pixel.
+            covers |= inside(new double[] {c[0], c[1], c[k], c[k + 1], c[k + 2], c[k + 3]}, x + 0.5, y + 0.5);
+        }
+        assertTrue(covers, "and covers the pixel: " + java.util.Arrays.toString(c));
         assertEquals(ref.uv()[3 * i + 1], in.refT(), 0.0);
         double exact = new TexelToScreen(floor.mesh(), floor.textureArray(), vp, new Viewport(W, H))
                 .displacement(in.triangle(), in.s(), in.t(), x, y);
@@ -150,7 +159,7 @@ class PixelInspectorTest {
         PieceInfo capped = new PieceInfo(8, 3, 2, true, new double[] {10, 10, 60, 10, 35, 40}, new double[9]);
         assertTrue(sliver.sliver());
         PixelInspector.Inspection on = new PixelInspector.Inspection(35, 10, 0xFFFF00FF, 3, null, 2, 0, 0, 0, 0, 0, capped,
-                0, 0, 0, 0, null, sliver, null);
+                0, 0, 0, 0, null, sliver, null, 0, null);
         var lines = InspectorPainter.lines(on, false);
         assertTrue(lines.contains("magenta outline: piece 7 of triangle 3, filled per pixel: a sliver (thinner than 1/16 px)"),
                 lines.toString());
