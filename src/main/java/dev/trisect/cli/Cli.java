@@ -48,7 +48,7 @@ public final class Cli {
         cl.setErr(err);
         cl.setParameterExceptionHandler((ex, arguments) -> {
             String where = ex.getCommandLine().getCommandSpec().qualifiedName();
-            err.println(where + ": " + firstLine(ex.getMessage()) + " (see " + where + " --help)");
+            err.println(where + ": " + firstLine(escapeValues(ex.getMessage(), args)) + " (see " + where + " --help)");
             err.flush();
             return 2;
         });
@@ -129,6 +129,28 @@ public final class Cli {
             }
         }
         return false;
+    }
+
+    /**
+     * picocli's message with each argument that holds a control character escaped as {@link #oneLine}
+     * does: its own messages may run over lines (a suggestion on the second), the user's values may not.
+     */
+    private static String escapeValues(String message, String[] args) {
+        if (message == null) {
+            return null;
+        }
+        for (String arg : args) {
+            String escaped = oneLine(arg);
+            if (!escaped.equals(arg)) {
+                message = message.replace(arg, escaped);
+                // An option given as --name=value reaches the message as the value alone.
+                int eq = arg.indexOf('=');
+                if (eq >= 0) {
+                    message = message.replace(arg.substring(eq + 1), oneLine(arg.substring(eq + 1)));
+                }
+            }
+        }
+        return message;
     }
 
     private static String firstLine(String message) {

@@ -41,7 +41,7 @@ final class CommonOptions {
 
     /** A remark for the user on standard error, prefixed so it is not mistaken for output. */
     void note(String message) {
-        err().println("trisect: note: " + message);
+        err().println("trisect: note: " + Cli.oneLine(message));
         err().flush();
     }
 

@@ -113,6 +113,27 @@ public final class TextureReader {
         }
     }
 
+    /**
+     * The operating system's reason why {@code file}'s attributes cannot be read, in lower case
+     * ("too many levels of symbolic links", "permission denied").
+     */
+    static String whyUnreachable(Path file) {
+        try {
+            Files.readAttributes(file, java.nio.file.attribute.BasicFileAttributes.class);
+            return "it could not be reached";
+        } catch (AccessDeniedException e) {
+            return "permission denied (a folder on its path cannot be searched)";
+        } catch (java.nio.file.FileSystemException e) {
+            String reason = e.getReason();
+            if (reason == null || reason.isEmpty()) {
+                return "it could not be reached";
+            }
+            return Character.toLowerCase(reason.charAt(0)) + reason.substring(1);
+        } catch (IOException e) {
+            return "it could not be reached";
+        }
+    }
+
     /** Checks the file can be read and returns how many of its first bytes went into {@code head}. */
     private static int readHead(Path file, String name, byte[] head) {
         if (Files.notExists(file)) {
@@ -122,7 +143,9 @@ public final class TextureReader {
             throw error(name, "is a directory, not an image file");
         }
         if (!Files.exists(file)) {
-            throw error(name, "cannot be read: its folder cannot be searched (permission denied?)");
+            // Neither there nor known to be missing: ask the system why (a loop of symbolic links, a
+            // folder that cannot be searched).
+            throw error(name, "cannot be read: " + whyUnreachable(file));
         }
         if (!Files.isRegularFile(file)) {
             // A pipe or device could block forever or never end.

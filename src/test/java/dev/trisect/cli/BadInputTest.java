@@ -217,4 +217,30 @@ class BadInputTest {
             assertTrue(r.errLine().contains("\\x0A"), "the newline is shown escaped: " + r.err());
         }
     }
+
+    @Test
+    void aLoopOfSymbolicLinksIsCalledSoWhereverAFileIsRead() throws IOException {
+        Path a = dir.resolve("a.png");
+        Path b = dir.resolve("b.png");
+        Files.createSymbolicLink(a, b);
+        Files.createSymbolicLink(b, a);
+        Path obj = dir.resolve("t.obj");
+        Files.writeString(obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1\n");
+        unreadable(render("--obj", obj.toString(), "--texture", a.toString()), "too many levels of symbolic links");
+        Files.writeString(dir.resolve("l.mtl"), "newmtl m\nmap_Kd a.png\n");
+        Path withMtl = dir.resolve("m.obj");
+        Files.writeString(withMtl, "mtllib l.mtl\nusemtl m\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1\n");
+        CliRun r = render("--obj", withMtl.toString());
+        unreadable(r, "too many levels of symbolic links");
+        assertTrue(r.errLine().contains("l.mtl:2: map_Kd"), r.err());
+        unreadable(CliRun.of("diff", "--image", a.toString(), "--uv", dir.resolve("a.pfm").toString(),
+                "--reference", b.toString(), "--reference-uv", dir.resolve("b.pfm").toString()),
+                "too many levels of symbolic links");
+    }
+
+    @Test
+    void aNewlineInAValueThatPicocliRefusesStaysInsideTheOneLineMessage() {
+        usage(render("--mode", "fa\nst"), "fa\\x0Ast");
+        usage(render("--bogus\nopt", "1"), "--bogus\\x0Aopt");
+    }
 }
