@@ -76,10 +76,19 @@ public record HeatScale(boolean logarithmic, double maxPixels) {
     public List<Label> labels() {
         List<Label> out = new ArrayList<>();
         int marks = logarithmic ? DECADES : 2;
+        String previous = null;
         for (int k = 0; k <= marks; k++) {
             double f = (double) k / marks;
-            String text = number(pixelsAt(f));
-            out.add(new Label(f, k == marks ? "\u2265 " + text + " px" : text));
+            // The top is the scale's own maximum; a mark in between that rounds to the one before it (or
+            // to 0 at the bottom of the doubles, as 4.9e-324 / 2 does) says nothing and is left out.
+            double value = k == marks ? maxPixels : pixelsAt(f);
+            String text = number(value);
+            if (k == marks) {
+                out.add(new Label(f, "\u2265 " + text + " px"));
+            } else if (k == 0 || (value != 0 && !text.equals(previous))) {
+                out.add(new Label(f, text));
+            }
+            previous = text;
         }
         return out;
     }
@@ -110,13 +119,21 @@ public record HeatScale(boolean logarithmic, double maxPixels) {
         return out;
     }
 
-    /** A short number for labels: up to 3 significant digits, no exponent for everyday sizes. */
+    /**
+     * A short number for labels: up to 3 significant digits, without an exponent from 0.0001 to
+     * 99,999, and as {@code 1e308} or {@code 4.94e-324} beyond, so that labels stay short at any
+     * {@code --heatmap-max}.
+     */
     public static String number(double v) {
         if (v == 0) {
             return "0";
         }
-        String s = v >= 100 ? String.format(Locale.ROOT, "%.0f", v)
-                : new java.math.BigDecimal(v).round(new java.math.MathContext(3)).stripTrailingZeros().toPlainString();
-        return s;
+        java.math.BigDecimal d = new java.math.BigDecimal(v).round(new java.math.MathContext(3)).stripTrailingZeros();
+        double a = Math.abs(v);
+        if (a >= 1e-4 && a < 1e5) {
+            return a >= 100 ? String.format(Locale.ROOT, "%.0f", v) : d.toPlainString();
+        }
+        int exponent = d.precision() - d.scale() - 1;
+        return d.movePointLeft(exponent).toPlainString() + "e" + exponent;
     }
 }

@@ -77,18 +77,38 @@ class HeatScaleTest {
 
     @Test
     void legendLabelsNeverRunIntoEachOther() {
-        for (double top : new double[] {0.1, 2, 17.5, 1000}) {
-            for (int barW : new int[] {60, 120, 200, 220}) {
-                var placed = HeatScale.layout(HeatScale.log(top).labels(), barW, t -> 7 * t.length(), 6);
+        for (double top : new double[] {0.1, 2, 17.5, 1000, 1e308, Double.MAX_VALUE, 4.9e-324, 1e-320}) {
+            for (int barW : new int[] {120, 200, 220}) {
+              for (HeatScale scale : new HeatScale[] {HeatScale.log(top), HeatScale.linear(top)}) {
+                var placed = HeatScale.layout(scale.labels(), barW, t -> 7 * t.length(), 6);
                 for (int i = 1; i < placed.size(); i++) {
                     int prevEnd = placed.get(i - 1).x() + 7 * placed.get(i - 1).text().length();
                     assertTrue(placed.get(i).x() >= prevEnd + 6, placed + " on " + barW + " px");
                 }
                 assertTrue(placed.size() == 1 || placed.get(0).x() == 0, "the bottom at the bar's left: " + placed);
                 assertTrue(placed.get(placed.size() - 1).text().startsWith("\u2265"));
+                assertTrue(placed.get(placed.size() - 1).x() >= 0, "the top label fits the bar: " + placed);
+              }
             }
         }
         assertEquals(5, HeatScale.layout(HeatScale.log(2).labels(), 260, t -> 6 * t.length(), 6).size(),
                 "all five fit on the view's legend");
+    }
+
+    @Test
+    void numbersStayShortAtTheEndsOfTheDoubles() {
+        assertEquals("1e308", HeatScale.number(1e308));
+        assertEquals("1.8e308", HeatScale.number(Double.MAX_VALUE));
+        assertEquals("4.94e-324", HeatScale.number(4.9e-324));
+        assertEquals("0.0002", HeatScale.number(2e-4));
+        assertEquals("2e-5", HeatScale.number(2e-5));
+        assertEquals("0.002", HeatScale.number(0.002));
+        assertEquals("17.5", HeatScale.number(17.5));
+        assertEquals("99999", HeatScale.number(99999));
+        assertEquals("1e5", HeatScale.number(1e5));
+        assertEquals(java.util.List.of("0", "\u2265 4.94e-324 px"),
+                HeatScale.linear(4.9e-324).labels().stream().map(HeatScale.Label::text).toList(),
+                "half the smallest double rounds to 0: no second 0 in the middle");
+        assertEquals("\u2265 1e308 px", HeatScale.log(1e308).labels().get(4).text());
     }
 }
