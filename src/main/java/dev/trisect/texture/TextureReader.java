@@ -208,12 +208,44 @@ public final class TextureReader {
         reader.addIIOReadWarningListener((source, warning) -> warnings.add(warning));
         reader.setInput(in);
         checkSize(name, format.label, reader.getWidth(0), reader.getHeight(0));
+        if (format == ImageFormat.JPEG && channels(reader) == 4) {
+            // The JDK decodes CMYK and YCCK JPEGs without their colour profile, so #3366CC came out
+            // as #7CA9E7: refused rather than shown in wrong colours.
+            throw error(name, "a CMYK JPEG (4 colour channels), which cannot be shown in its true colours: "
+                    + "convert it to RGB first (e.g. convert in.jpg -colorspace sRGB out.png)");
+        }
         BufferedImage image = reader.read(0);
         // The JPEG decoder only warns about damaged or missing scan data and fills the gap with grey.
         if (format == ImageFormat.JPEG && !warnings.isEmpty()) {
             throw error(name, "corrupt or truncated JPEG data (" + oneLine(warnings.get(0)) + ")");
         }
         return new Texture(name, image.getWidth(), image.getHeight(), ImageConversion.toArgb(image));
+    }
+
+    /** The number of colour channels the image's standard metadata gives (0 if it gives none). */
+    private static int channels(ImageReader reader) throws IOException {
+        javax.imageio.metadata.IIOMetadata metadata = reader.getImageMetadata(0);
+        if (metadata == null || !metadata.isStandardMetadataFormatSupported()) {
+            return 0;
+        }
+        org.w3c.dom.Node root = metadata.getAsTree(javax.imageio.metadata.IIOMetadataFormatImpl.standardMetadataFormatName);
+        for (org.w3c.dom.Node n = root.getFirstChild(); n != null; n = n.getNextSibling()) {
+            if (!n.getNodeName().equals("Chroma")) {
+                continue;
+            }
+            for (org.w3c.dom.Node c = n.getFirstChild(); c != null; c = c.getNextSibling()) {
+                if (c.getNodeName().equals("NumChannels")) {
+                    String value = ((org.w3c.dom.Element) c).getAttribute("value").trim();
+                    // The value is a list of integers; its first is the count.
+                    try {
+                        return Integer.parseInt(value.split("\\s+")[0]);
+                    } catch (NumberFormatException e) {
+                        return 0;
+                    }
+                }
+            }
+        }
+        return 0;
     }
 
     /** An exception as a short phrase for a one-line message. */

@@ -269,4 +269,15 @@ class TextureReaderErrorsTest {
         assertFailsSaying("zero.ppm", ppm("P6\n0 5\n255\n", 255), "empty image (0x5)");
         assertFailsSaying("zero.tga", concat(tgaHeader(2, 4, 0, 24, 0), new byte[40]), "empty image (4x0)");
     }
+
+    @Test
+    void aCmykJpegIsRefusedRatherThanShownInWrongColours() throws IOException {
+        // #3366CC written as CMYK by ImageMagick (convert -size 16x16 xc:'#3366CC' -colorspace CMYK):
+        // decoded without its profile it came out #7CA9E7.
+        Path file = dir.resolve("cmyk.jpg");
+        try (java.io.InputStream in = getClass().getResourceAsStream("cmyk-3366cc.jpg")) {
+            Files.copy(in, file);
+        }
+        assertFailsSaying(file, "a CMYK JPEG", "convert it to RGB first");
+    }
 }
