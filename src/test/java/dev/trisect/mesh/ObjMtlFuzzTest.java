@@ -13,7 +13,8 @@ import java.util.Arrays;
 
 /**
  * Jazzer fuzz target: the OBJ reader with its MTL library. The input is the OBJ text, a NUL byte, then
- * the MTL text (named {@code m.mtl}, so an OBJ with {@code mtllib m.mtl} reads it). Every input must give
+ * the MTL text (named {@code m.mtl} and {@code mät.mtl}, so an OBJ with {@code mtllib m.mtl} or
+ * {@code mtllib mät.mtl} reads it). Every input must give
  * a consistent model or an {@link InputException} with a one-line message naming a file; any other
  * exception, a hang or running out of memory is a finding. Seeds and regression cases are in
  * {@code src/test/resources/dev/trisect/mesh/ObjMtlFuzzTestInputs}.
@@ -28,8 +29,15 @@ class ObjMtlFuzzTest {
                 nul++;
             }
             Path obj = Files.write(dir.resolve("m.obj"), Arrays.copyOf(input, nul));
-            Files.write(dir.resolve("m.mtl"), nul < input.length ? Arrays.copyOfRange(input, nul + 1, input.length)
-                    : new byte[0]);
+            byte[] mtl = nul < input.length ? Arrays.copyOfRange(input, nul + 1, input.length) : new byte[0];
+            Files.write(dir.resolve("m.mtl"), mtl);
+            // The same library under a name outside ASCII, so that `mtllib mät.mtl` finds it too (where the
+            // locale maps file names as UTF-8; elsewhere such a name cannot be made at all).
+            try {
+                Files.write(dir.resolve("m\u00e4t.mtl"), mtl);
+            } catch (java.nio.file.InvalidPathException e) {
+                // Not a UTF-8 locale: the fuzzer still reaches the reader's UTF-8 checks through names.
+            }
             try {
                 ObjModel model = ObjReader.read(obj, true);
                 Mesh mesh = model.mesh();
