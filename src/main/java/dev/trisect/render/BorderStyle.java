@@ -27,29 +27,54 @@ public record BorderStyle(Colouring colouring, boolean fade, boolean onlyFallbac
          */
         BOUND;
 
-        /** The name on the command line: yellow, depth or bound. */
+        /**
+         * The name on the command line: yellow, depth or bound.
+         *
+         * @return the lower-case name
+         */
         public String id() {
             return name().toLowerCase(Locale.ROOT);
         }
     }
 
-    /** A style outlining every piece. */
+    /**
+     * A style outlining every piece.
+     *
+     * @param colouring yellow, by split depth, or by error bound
+     * @param fade      draw the outlines of small pieces translucent
+     */
     public BorderStyle(Colouring colouring, boolean fade) {
         this(colouring, fade, false);
     }
 
-    /** Only the fallback pieces, in magenta. */
+    /**
+     * Only the fallback pieces, in magenta.
+     *
+     * @return the style
+     */
     public static BorderStyle fallbackOnly() {
         return new BorderStyle(Colouring.YELLOW, false, true);
     }
 
+    /**
+     * Checks that a colouring is given.
+     *
+     * @param colouring    yellow, by split depth, or by error bound
+     * @param fade         draw the outlines of small pieces translucent
+     * @param onlyFallback outline the fallback pieces alone
+     * @throws IllegalArgumentException when {@code colouring} is null
+     */
     public BorderStyle {
         if (colouring == null) {
             throw new IllegalArgumentException("a border style needs a colouring");
         }
     }
 
-    /** Plain yellow, no fading: the overlay as it always was. */
+    /**
+     * Plain yellow, no fading: the overlay as it always was.
+     *
+     * @return the style
+     */
     public static BorderStyle plain() {
         return new BorderStyle(Colouring.YELLOW, false);
     }

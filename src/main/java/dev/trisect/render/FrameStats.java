@@ -53,12 +53,20 @@ public record FrameStats(long trianglesIn, long culledBackFace, long culledFrust
                          long transformNanos, long clipNanos, long tessellateNanos, long rasterNanos,
                          long overlayNanos, boolean bandTimesEstimated, long totalNanos) {
 
-    /** Whether the frame's pieces exceeded its budget, so that its depth cap was lowered. */
+    /**
+     * Whether the frame's pieces exceeded its budget, so that its depth cap was lowered.
+     *
+     * @return true when the budget lowered the depth cap
+     */
     public boolean budgetReached() {
         return budgetDepth >= 0;
     }
 
-    /** All culled triangles. */
+    /**
+     * All culled triangles.
+     *
+     * @return back-face, frustum and degenerate culls together
+     */
     public long culled() {
         return culledBackFace + culledFrustum + culledDegenerate;
     }
@@ -98,7 +106,11 @@ public record FrameStats(long trianglesIn, long culledBackFace, long culledFrust
                         .put("total", totalNanos / 1e6, 3));
     }
 
-    /** The statistics as one line of JSON: snake_case keys, times in milliseconds (see {@code json}). */
+    /**
+     * The statistics as one line of JSON: snake_case keys, times in milliseconds (see {@code json}).
+     *
+     * @return the JSON line, without a line break
+     */
     public String toJson() {
         return json().toString();
     }

@@ -36,32 +36,56 @@ public final class Framebuffer {
         this.depth = new float[width * height];
     }
 
-    /** Width in pixels. */
+    /**
+     * Width in pixels.
+     *
+     * @return the width, pixels
+     */
     public int width() {
         return width;
     }
 
-    /** Height in pixels. */
+    /**
+     * Height in pixels.
+     *
+     * @return the height, pixels
+     */
     public int height() {
         return height;
     }
 
-    /** ARGB pixels, row 0 at the top; wrap it in a {@code DataBufferInt} to show it without copying. */
+    /**
+     * ARGB pixels, row 0 at the top; wrap it in a {@code DataBufferInt} to show it without copying.
+     *
+     * @return the colour buffer, {@code width * height} ARGB values, live (not a copy)
+     */
     public int[] color() {
         return color;
     }
 
-    /** Depth as 1/w per pixel (view-space units^-1), 0 = nothing drawn. */
+    /**
+     * Depth as 1/w per pixel (view-space units^-1), 0 = nothing drawn.
+     *
+     * @return the depth buffer, {@code width * height} values of 1/w, live
+     */
     public float[] depth() {
         return depth;
     }
 
-    /** The UV output (3 doubles a pixel: s, t in texels, id), or null when it is not being recorded. */
+    /**
+     * The UV output (3 doubles a pixel: s, t in texels, id), or null when it is not being recorded.
+     *
+     * @return the UV output, {@code 3 * width * height} values, live; or null
+     */
     public double[] uv() {
         return uv;
     }
 
-    /** Starts or stops recording the UV output; the buffer is kept once made. */
+    /**
+     * Starts or stops recording the UV output; the buffer is kept once made.
+     *
+     * @param on true to record from the next frame on, false to stop
+     */
     public void recordUv(boolean on) {
         if (on && uv == null) {
             uv = new double[3 * width * height];
@@ -73,6 +97,10 @@ public final class Framebuffer {
     /**
      * Clears rows {@code [y0, y1)} of every buffer: colour to {@code background} (opaque), depth to
      * 0, UV output to 0.
+     *
+     * @param y0         first row cleared, 0 at the top
+     * @param y1         the row after the last one cleared
+     * @param background colour, 0xRRGGBB
      */
     public void clearRows(int y0, int y1, int background) {
         int from = y0 * width;
@@ -87,6 +115,8 @@ public final class Framebuffer {
     /**
      * A copy of the colour buffer as an image ({@code TYPE_INT_RGB}), for {@code ImageIO.write} or
      * drawing; later frames drawn into this framebuffer do not change it.
+     *
+     * @return the copy
      */
     public BufferedImage toImage() {
         BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
@@ -99,6 +129,8 @@ public final class Framebuffer {
      * line, to bring them into the cache before scattered access (the hardware fetches ahead on such
      * a walk, and not on a scattered one).
      *
+     * @param y0 first row read, 0 at the top
+     * @param y1 the row after the last one read
      * @return a sum of what was read, for the caller to keep (so that the reads are not optimised away)
      */
     public int touchRows(int y0, int y1) {

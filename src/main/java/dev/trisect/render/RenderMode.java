@@ -18,7 +18,11 @@ public enum RenderMode {
      */
     SPANS;
 
-    /** The name used on the command line: perspective, affine, tessellated or spans. */
+    /**
+     * The name used on the command line: perspective, affine, tessellated or spans.
+     *
+     * @return the mode's name on the command line
+     */
     public String id() {
         return name().toLowerCase(Locale.ROOT);
     }

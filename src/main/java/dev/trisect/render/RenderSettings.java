@@ -20,6 +20,18 @@ public record RenderSettings(RenderMode mode, TessellationSettings tessellation,
                              int background, boolean borders, TextureFilter filter,
                              BorderStyle borderStyle) {
 
+    /**
+     * Checks that every part is given.
+     *
+     * @param mode         texturing path
+     * @param tessellation split policy and caps
+     * @param cull         back-face culling
+     * @param background   background colour, 0xRRGGBB
+     * @param borders      draw the outline of every piece filled
+     * @param filter       texture filter
+     * @param borderStyle  how the outlines are coloured
+     * @throws IllegalArgumentException when one is null
+     */
     public RenderSettings {
         if (mode == null || tessellation == null || cull == null || filter == null || borderStyle == null) {
             throw new IllegalArgumentException(
@@ -27,54 +39,110 @@ public record RenderSettings(RenderMode mode, TessellationSettings tessellation,
         }
     }
 
-    /** Settings with plain yellow borders. */
+    /**
+     * Settings with plain yellow borders.
+     *
+     * @param mode         texturing path
+     * @param tessellation split policy and caps
+     * @param cull         back-face culling
+     * @param background   background colour, 0xRRGGBB
+     * @param borders      draw the outline of every piece filled
+     * @param filter       texture filter
+     */
     public RenderSettings(RenderMode mode, TessellationSettings tessellation, CullMode cull, int background,
                           boolean borders, TextureFilter filter) {
         this(mode, tessellation, cull, background, borders, filter, BorderStyle.plain());
     }
 
-    /** Settings with nearest sampling. */
+    /**
+     * Settings with nearest sampling.
+     *
+     * @param mode         texturing path
+     * @param tessellation split policy and caps
+     * @param cull         back-face culling
+     * @param background   background colour, 0xRRGGBB
+     * @param borders      draw the outline of every piece filled
+     */
     public RenderSettings(RenderMode mode, TessellationSettings tessellation, CullMode cull, int background,
                           boolean borders) {
         this(mode, tessellation, cull, background, borders, TextureFilter.NEAREST);
     }
 
-    /** Tessellated, default split settings, back-face culling, black, no borders, nearest sampling. */
+    /**
+     * Tessellated, default split settings, back-face culling, black, no borders, nearest sampling.
+     *
+     * @return the default settings
+     */
     public static RenderSettings defaults() {
         return new RenderSettings(RenderMode.TESSELLATED, TessellationSettings.defaults(), CullMode.BACK, 0, false);
     }
 
-    /** A copy with another mode. */
+    /**
+     * A copy with another mode.
+     *
+     * @param m the texturing path
+     * @return a copy with that path
+     */
     public RenderSettings withMode(RenderMode m) {
         return new RenderSettings(m, tessellation, cull, background, borders, filter, borderStyle);
     }
 
-    /** A copy with other tessellation settings. */
+    /**
+     * A copy with other tessellation settings.
+     *
+     * @param t the split settings
+     * @return a copy with those
+     */
     public RenderSettings withTessellation(TessellationSettings t) {
         return new RenderSettings(mode, t, cull, background, borders, filter, borderStyle);
     }
 
-    /** A copy with another cull mode. */
+    /**
+     * A copy with another cull mode.
+     *
+     * @param c the culling
+     * @return a copy with that culling
+     */
     public RenderSettings withCull(CullMode c) {
         return new RenderSettings(mode, tessellation, c, background, borders, filter, borderStyle);
     }
 
-    /** A copy with another background. */
+    /**
+     * A copy with another background.
+     *
+     * @param rgb the background colour, 0xRRGGBB
+     * @return a copy with that background
+     */
     public RenderSettings withBackground(int rgb) {
         return new RenderSettings(mode, tessellation, cull, rgb, borders, filter, borderStyle);
     }
 
-    /** A copy with the border overlay on or off. */
+    /**
+     * A copy with the border overlay on or off.
+     *
+     * @param on whether the piece outlines are drawn
+     * @return a copy with the borders on or off
+     */
     public RenderSettings withBorders(boolean on) {
         return new RenderSettings(mode, tessellation, cull, background, on, filter, borderStyle);
     }
 
-    /** A copy with another texture filter. */
+    /**
+     * A copy with another texture filter.
+     *
+     * @param f the texture filter
+     * @return a copy with that filter
+     */
     public RenderSettings withFilter(TextureFilter f) {
         return new RenderSettings(mode, tessellation, cull, background, borders, f, borderStyle);
     }
 
-    /** A copy with another border style. */
+    /**
+     * A copy with another border style.
+     *
+     * @param b the outlines' style
+     * @return a copy with that style
+     */
     public RenderSettings withBorderStyle(BorderStyle b) {
         return new RenderSettings(mode, tessellation, cull, background, borders, filter, b);
     }

@@ -28,7 +28,11 @@ public enum SplitPoint {
      */
     GEOMETRIC;
 
-    /** The name used on the command line and in the demo. */
+    /**
+     * The name used on the command line and in the demo.
+     *
+     * @return the split point's name on the command line
+     */
     public String id() {
         return name().toLowerCase(Locale.ROOT);
     }

@@ -42,6 +42,18 @@ public record TessellationSettings(SplitPolicy policy, double maxEdge, double ma
      */
     public static final int PIXELS_PER_PIECE = 16;
 
+    /**
+     * Checks every value against the ranges above; the message names the one out of range.
+     *
+     * @param policy         which measure decides a split
+     * @param maxEdge        longest edge allowed, screen pixels
+     * @param maxError       largest displacement allowed, screen pixels
+     * @param maxDepth       edge level cap, 0..30
+     * @param maxPieces      piece cap per input triangle
+     * @param splitPoint     where an edge is cut
+     * @param maxFramePieces piece budget of a frame, or {@link #AUTO_FRAME_PIECES}
+     * @throws IllegalArgumentException for a value out of range or a missing policy or split point
+     */
     public TessellationSettings {
         if (policy == null) {
             throw new IllegalArgumentException("split policy is missing");
@@ -71,6 +83,10 @@ public record TessellationSettings(SplitPolicy policy, double maxEdge, double ma
      * The piece budget of a frame of {@code pixels} pixels drawing {@code triangles} input triangles:
      * {@code maxFramePieces}, or when automatic {@code triangles + pixels / PIXELS_PER_PIECE} — one
      * piece per triangle, which no frame can do with less, plus the pieces the frame's size is worth.
+     *
+     * @param pixels    the frame's pixel count
+     * @param triangles the frame's input triangles
+     * @return the most pieces the frame may have
      */
     public long framePieceBudget(long pixels, long triangles) {
         return maxFramePieces != AUTO_FRAME_PIECES ? maxFramePieces : triangles + Math.max(1, pixels / PIXELS_PER_PIECE);
@@ -79,43 +95,80 @@ public record TessellationSettings(SplitPolicy policy, double maxEdge, double ma
     /**
      * The defaults: edge policy, 32 px, 0.5 px, depth 16, 65536 pieces, cut at the screen midpoint,
      * automatic frame budget.
+     *
+     * @return the default settings
      */
     public static TessellationSettings defaults() {
         return new TessellationSettings(SplitPolicy.EDGE, DEFAULT_MAX_EDGE, DEFAULT_MAX_ERROR,
                 DEFAULT_MAX_DEPTH, DEFAULT_MAX_PIECES, DEFAULT_SPLIT_POINT, AUTO_FRAME_PIECES);
     }
 
-    /** A copy with another policy. */
+    /**
+     * A copy with another policy.
+     *
+     * @param p the split policy
+     * @return a copy with that policy
+     */
     public TessellationSettings withPolicy(SplitPolicy p) {
         return new TessellationSettings(p, maxEdge, maxError, maxDepth, maxPieces, splitPoint, maxFramePieces);
     }
 
-    /** A copy with another max edge. */
+    /**
+     * A copy with another max edge.
+     *
+     * @param px the longest edge, screen pixels
+     * @return a copy with that max edge
+     */
     public TessellationSettings withMaxEdge(double px) {
         return new TessellationSettings(policy, px, maxError, maxDepth, maxPieces, splitPoint, maxFramePieces);
     }
 
-    /** A copy with another max error. */
+    /**
+     * A copy with another max error.
+     *
+     * @param px the largest displacement, screen pixels
+     * @return a copy with that max error
+     */
     public TessellationSettings withMaxError(double px) {
         return new TessellationSettings(policy, maxEdge, px, maxDepth, maxPieces, splitPoint, maxFramePieces);
     }
 
-    /** A copy with another depth cap. */
+    /**
+     * A copy with another depth cap.
+     *
+     * @param depth the edge level cap
+     * @return a copy with that cap
+     */
     public TessellationSettings withMaxDepth(int depth) {
         return new TessellationSettings(policy, maxEdge, maxError, depth, maxPieces, splitPoint, maxFramePieces);
     }
 
-    /** A copy with another piece cap. */
+    /**
+     * A copy with another piece cap.
+     *
+     * @param pieces the piece cap per input triangle
+     * @return a copy with that cap
+     */
     public TessellationSettings withMaxPieces(int pieces) {
         return new TessellationSettings(policy, maxEdge, maxError, maxDepth, pieces, splitPoint, maxFramePieces);
     }
 
-    /** A copy with another split point. */
+    /**
+     * A copy with another split point.
+     *
+     * @param point where an edge is cut
+     * @return a copy with that split point
+     */
     public TessellationSettings withSplitPoint(SplitPoint point) {
         return new TessellationSettings(policy, maxEdge, maxError, maxDepth, maxPieces, point, maxFramePieces);
     }
 
-    /** A copy with another frame piece budget ({@link #AUTO_FRAME_PIECES} for automatic). */
+    /**
+     * A copy with another frame piece budget ({@link #AUTO_FRAME_PIECES} for automatic).
+     *
+     * @param pieces the frame's piece budget, or {@link #AUTO_FRAME_PIECES}
+     * @return a copy with that budget
+     */
     public TessellationSettings withMaxFramePieces(int pieces) {
         return new TessellationSettings(policy, maxEdge, maxError, maxDepth, maxPieces, splitPoint, pieces);
     }

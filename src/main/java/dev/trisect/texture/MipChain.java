@@ -84,32 +84,61 @@ public final class MipChain {
         }
     }
 
-    /** Number of levels of a {@code width x height} texture: {@code floor(log2(max(width, height))) + 1}. */
+    /**
+     * Number of levels of a {@code width x height} texture: {@code floor(log2(max(width, height))) + 1}.
+     *
+     * @param width  level 0's width, texels
+     * @param height level 0's height, texels
+     * @return {@code floor(log2(max(width, height))) + 1}
+     */
     public static int levelCount(int width, int height) {
         return 32 - Integer.numberOfLeadingZeros(Math.max(width, height));
     }
 
-    /** Number of levels, level 0 included. */
+    /**
+     * Number of levels, level 0 included.
+     *
+     * @return the number of levels, level 0 included
+     */
     public int levels() {
         return texels.length;
     }
 
-    /** The largest level index, {@code q} in OpenGL's terms. */
+    /**
+     * The largest level index, {@code q} in OpenGL's terms.
+     *
+     * @return the last level's index, {@code levels() - 1}
+     */
     public int maxLevel() {
         return texels.length - 1;
     }
 
-    /** Texels of level {@code d}, ARGB, row 0 at the top; read-only. */
+    /**
+     * Texels of level {@code d}, ARGB, row 0 at the top; read-only.
+     *
+     * @param d the level, {@code 0..maxLevel()}
+     * @return its ARGB texels, row 0 at the top: read-only
+     */
     public int[] texels(int d) {
         return texels[d];
     }
 
-    /** Width of level {@code d}, texels. */
+    /**
+     * Width of level {@code d}, texels.
+     *
+     * @param d the level, {@code 0..maxLevel()}
+     * @return its width, texels
+     */
     public int width(int d) {
         return widths[d];
     }
 
-    /** Height of level {@code d}, texels. */
+    /**
+     * Height of level {@code d}, texels.
+     *
+     * @param d the level, {@code 0..maxLevel()}
+     * @return its height, texels
+     */
     public int height(int d) {
         return heights[d];
     }
@@ -117,12 +146,20 @@ public final class MipChain {
     /**
      * Level {@code d}'s width over level 0's: multiplies a level-0 texel coordinate s into level d's
      * texel units ({@code u * width(d)}). A power of two {@code 2^-d} for power-of-two sides.
+     *
+     * @param d the level, {@code 0..maxLevel()}
+     * @return {@code width(d) / width(0)}
      */
     public double scaleS(int d) {
         return scaleS[d];
     }
 
-    /** Level {@code d}'s height over level 0's (see {@link #scaleS}). */
+    /**
+     * Level {@code d}'s height over level 0's (see {@link #scaleS}).
+     *
+     * @param d the level, {@code 0..maxLevel()}
+     * @return {@code height(d) / height(0)}
+     */
     public double scaleT(int d) {
         return scaleT[d];
     }
@@ -130,6 +167,8 @@ public final class MipChain {
     /**
      * Whether both sides of level 0 are powers of two, and with them the sides of every level: then
      * {@link #shape} describes each level by shifts and masks.
+     *
+     * @return true when both sides of level 0 are powers of two
      */
     public boolean powerOfTwo() {
         return powerOfTwo;
@@ -142,6 +181,9 @@ public final class MipChain {
      * 2 to minus that); bits 8–15 the same for heights; bits 16–23 {@code log2(width(d))}; bits 24–31
      * {@code log2(height(d))}. Zero for chains that are not power-of-two. (The pixel loops now read
      * the lanes' level descriptors instead; this stays for the reference samples.)
+     *
+     * @param d the level, {@code 0..maxLevel()}
+     * @return the packed shifts and sizes, or 0
      */
     public int shape(int d) {
         return shapes[d];
@@ -167,7 +209,11 @@ public final class MipChain {
         return l;
     }
 
-    /** Total texels of the levels beyond level 0 (memory check: at most a third of level 0). */
+    /**
+     * Total texels of the levels beyond level 0 (memory check: at most a third of level 0).
+     *
+     * @return texels of levels 1 and up
+     */
     public long extraTexels() {
         long n = 0;
         for (int d = 1; d < texels.length; d++) {

@@ -43,6 +43,7 @@ public final class ProceduralTextures {
      * for them (under 16 texels, i.e. a size under 128).
      *
      * @param size width and height in texels
+     * @return the texture
      */
     public static Texture uvGrid(int size) {
         Pixels.requireSide("UV grid size", size);
@@ -134,6 +135,9 @@ public final class ProceduralTextures {
      *
      * @param size  width and height in texels
      * @param cells squares per side, {@code 1..size}
+     * @param argbA colour of the bottom-left square and every second one from it, 0xAARRGGBB
+     * @param argbB colour of the squares that alternate with those, 0xAARRGGBB
+     * @return the texture
      */
     public static Texture checker(int size, int cells, int argbA, int argbB) {
         Pixels.requireSide("checker size", size);
@@ -155,6 +159,7 @@ public final class ProceduralTextures {
      * from the bottom-left to the top-right corner and a nail at each corner of the frame.
      *
      * @param size width and height in texels
+     * @return the texture
      */
     public static Texture crate(int size) {
         Pixels.requireSide("crate size", size);
@@ -224,6 +229,7 @@ public final class ProceduralTextures {
      *
      * @param width  width in texels
      * @param height height in texels
+     * @return the texture
      */
     public static Texture bricks(int width, int height) {
         Pixels.requireSide("bricks width", width);
@@ -264,6 +270,7 @@ public final class ProceduralTextures {
      *
      * @param width  width in texels (2:1 with the height looks right)
      * @param height height in texels
+     * @return the texture
      */
     public static Texture globe(int width, int height) {
         Pixels.requireSide("globe width", width);

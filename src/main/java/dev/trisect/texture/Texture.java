@@ -54,6 +54,7 @@ public final class Texture {
      * bottom-left corner, as in OpenGL and OBJ files.
      *
      * @param image any {@code BufferedImage}, 1..{@link #MAX_SIDE} pixels a side
+     * @return a texture of the image's pixels, row 0 at the top
      * @throws NullPointerException     when {@code image} is null
      * @throws IllegalArgumentException when it is larger than {@link #MAX_SIDE} a side
      */
@@ -66,32 +67,58 @@ public final class Texture {
         return new Texture(name, image.getWidth(), image.getHeight(), ImageConversion.toArgb(image));
     }
 
-    /** A texture of one colour, for meshes without one. */
+    /**
+     * A texture of one colour, for meshes without one.
+     *
+     * @param name a name for messages and statistics
+     * @param argb the colour, 0xAARRGGBB
+     * @return a 1x1 texture of that colour
+     */
     public static Texture solid(String name, int argb) {
         return new Texture(name, 1, 1, new int[] {argb});
     }
 
-    /** Where the texture came from, for messages. */
+    /**
+     * Where the texture came from, for messages.
+     *
+     * @return the name given at creation (a file name for read textures)
+     */
     public String name() {
         return name;
     }
 
-    /** Width in texels. */
+    /**
+     * Width in texels.
+     *
+     * @return width, texels
+     */
     public int width() {
         return width;
     }
 
-    /** Height in texels. */
+    /**
+     * Height in texels.
+     *
+     * @return height, texels
+     */
     public int height() {
         return height;
     }
 
-    /** The texels, ARGB, row 0 at the top. Handed out without a copy for the rasterizer: read-only. */
+    /**
+     * The texels, ARGB, row 0 at the top. Handed out without a copy for the rasterizer: read-only.
+     *
+     * @return the ARGB texels, row-major, row 0 at the top: read-only
+     */
     public int[] argb() {
         return argb;
     }
 
-    /** The mipmap levels, level 0 being {@link #argb()} itself; built with the texture. */
+    /**
+     * The mipmap levels, level 0 being {@link #argb()} itself; built with the texture.
+     *
+     * @return the mipmap levels, built with the texture
+     */
     public MipChain mipChain() {
         return mipChain;
     }
@@ -102,6 +129,7 @@ public final class Texture {
      *
      * @param s texel coordinate {@code u * width} (texels; any value, negative included)
      * @param t texel coordinate {@code v * height} (texels, from the bottom)
+     * @return the index into {@link #argb()} of the texel sampled
      */
     public int texelIndex(double s, double t) {
         int column = Math.floorMod((int) Math.floor(s), width);
@@ -109,7 +137,13 @@ public final class Texture {
         return (height - 1 - rowFromBottom) * width + column;
     }
 
-    /** The ARGB texel that nearest sampling with repeat picks at UV (u, v). */
+    /**
+     * The ARGB texel that nearest sampling with repeat picks at UV (u, v).
+     *
+     * @param u texture coordinate, any value (repeats)
+     * @param v texture coordinate, from the bottom, any value (repeats)
+     * @return the ARGB texel
+     */
     public int sampleUv(double u, double v) {
         return argb[texelIndex(u * width, v * height)];
     }

@@ -17,7 +17,11 @@ public enum TextureFilter {
      */
     TRILINEAR;
 
-    /** The name used on the command line: nearest, bilinear or trilinear. */
+    /**
+     * The name used on the command line: nearest, bilinear or trilinear.
+     *
+     * @return the filter's name on the command line and in statistics
+     */
     public String id() {
         return name().toLowerCase(Locale.ROOT);
     }

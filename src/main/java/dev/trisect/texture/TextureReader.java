@@ -44,6 +44,7 @@ public final class TextureReader {
      * after the path as given.
      *
      * @param file an image file on the default file system
+     * @return the texture, named after the file
      * @throws InputException for anything wrong with the file, its message naming the file
      */
     public static Texture read(Path file) {
