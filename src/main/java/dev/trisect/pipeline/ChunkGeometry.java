@@ -185,7 +185,11 @@ final class ChunkGeometry {
             // Far larger than the view (beyond LARGE clip units) and zero within rounding: rounding may
             // have hidden its facing (a quad 1e20 wide passing 3 units from the eye), so it is skipped
             // and counted, unless it has no area where it was made. Smaller triangles keep the plain rule.
-            if (largest(corner) > LARGE && Math.abs(det) <= determinantError(corner)
+            // Inside the view volume every coordinate is within [-w, w]: the largest w bounds them all,
+            // which spares the full search for almost every triangle.
+            double size = (f0 | f1 | f2) == 0 ? Math.max(corner[W], Math.max(corner[c1 + W], corner[c2 + W]))
+                    : largest(corner);
+            if (size > LARGE && Math.abs(det) <= determinantError(corner)
                     && !zeroArea(mesh.positions(), corners[c], corners[c + 1], corners[c + 2])) {
                 chunk.invalid++;
                 continue;
