@@ -30,52 +30,92 @@ public final class Mesh {
         this.materialNames = List.copyOf(materialNames);
     }
 
-    /** Number of triangles. */
+    /**
+     * Number of triangles.
+     *
+     * @return the triangle count
+     */
     public int triangleCount() {
         return triangleMaterials.length;
     }
 
-    /** Number of positions. */
+    /**
+     * Number of positions.
+     *
+     * @return the position count
+     */
     public int positionCount() {
         return positions.length / 3;
     }
 
-    /** Number of texture coordinates. */
+    /**
+     * Number of texture coordinates.
+     *
+     * @return the texture-coordinate count
+     */
     public int uvCount() {
         return uvs.length / 2;
     }
 
-    /** Positions in object space (world units), x, y, z per position: stride 3. Read-only. */
+    /**
+     * Positions in object space (world units), x, y, z per position: stride 3. Read-only.
+     *
+     * @return the positions, not a copy
+     */
     public float[] positions() {
         return positions;
     }
 
-    /** Texture coordinates (u, v; (0, 0) is the texture's bottom-left), stride 2. Read-only. */
+    /**
+     * Texture coordinates (u, v; (0, 0) is the texture's bottom-left), stride 2. Read-only.
+     *
+     * @return the texture coordinates, not a copy
+     */
     public float[] uvs() {
         return uvs;
     }
 
-    /** Position index of each corner: triangle t has corners 3t, 3t+1, 3t+2. Read-only. */
+    /**
+     * Position index of each corner: triangle t has corners 3t, 3t+1, 3t+2. Read-only.
+     *
+     * @return three position indices per triangle, not a copy
+     */
     public int[] cornerPositions() {
         return cornerPositions;
     }
 
-    /** Texture-coordinate index of each corner, or -1 where the corner has none (UV (0, 0)). Read-only. */
+    /**
+     * Texture-coordinate index of each corner, or -1 where the corner has none (UV (0, 0)). Read-only.
+     *
+     * @return three texture-coordinate indices per triangle, not a copy
+     */
     public int[] cornerUvs() {
         return cornerUvs;
     }
 
-    /** Material index of each triangle, into {@link #materialNames()}. Read-only. */
+    /**
+     * Material index of each triangle, into {@link #materialNames()}. Read-only.
+     *
+     * @return one material index per triangle, not a copy
+     */
     public int[] triangleMaterials() {
         return triangleMaterials;
     }
 
-    /** Material names, indexed by material index; at least one. */
+    /**
+     * Material names, indexed by material index; at least one.
+     *
+     * @return the names, unmodifiable
+     */
     public List<String> materialNames() {
         return materialNames;
     }
 
-    /** Number of materials. */
+    /**
+     * Number of materials.
+     *
+     * @return the number of material names
+     */
     public int materialCount() {
         return materialNames.size();
     }

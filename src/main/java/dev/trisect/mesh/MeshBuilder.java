@@ -23,17 +23,29 @@ public final class MeshBuilder {
     private final List<String> materialNames = new ArrayList<>();
     private int currentMaterial = -1;
 
-    /** Number of positions added so far. */
+    /**
+     * Number of positions added so far.
+     *
+     * @return positions added so far
+     */
     public int positionCount() {
         return positionCount;
     }
 
-    /** Number of texture coordinates added so far. */
+    /**
+     * Number of texture coordinates added so far.
+     *
+     * @return texture coordinates added so far
+     */
     public int uvCount() {
         return uvCount;
     }
 
-    /** Number of triangles added so far. */
+    /**
+     * Number of triangles added so far.
+     *
+     * @return triangles added so far
+     */
     public int triangleCount() {
         return triangleCount;
     }
@@ -41,6 +53,7 @@ public final class MeshBuilder {
     /**
      * Makes {@code name} the material of the triangles that follow, adding it if it is new.
      *
+     * @param name the material's name (a new name adds a material)
      * @return the material's index
      */
     public int material(String name) {
@@ -53,7 +66,14 @@ public final class MeshBuilder {
         return index;
     }
 
-    /** Adds a position in object space and returns its index. */
+    /**
+     * Adds a position in object space and returns its index.
+     *
+     * @param x object space
+     * @param y object space
+     * @param z object space
+     * @return the new position's index
+     */
     public int position(double x, double y, double z) {
         if (3 * positionCount + 3 > positions.length) {
             positions = Arrays.copyOf(positions, positions.length * 2);
@@ -64,12 +84,23 @@ public final class MeshBuilder {
         return positionCount++;
     }
 
-    /** Adds a position in object space and returns its index. */
+    /**
+     * Adds a position in object space and returns its index.
+     *
+     * @param p the position, object space
+     * @return the new position's index
+     */
     public int position(Vec3 p) {
         return position(p.x(), p.y(), p.z());
     }
 
-    /** Adds a texture coordinate and returns its index. */
+    /**
+     * Adds a texture coordinate and returns its index.
+     *
+     * @param u texture coordinate, (0, 0) the bottom-left
+     * @param v texture coordinate
+     * @return the new texture coordinate's index
+     */
     public int uv(double u, double v) {
         if (2 * uvCount + 2 > uvs.length) {
             uvs = Arrays.copyOf(uvs, uvs.length * 2);
@@ -83,6 +114,12 @@ public final class MeshBuilder {
      * Adds a triangle from position indices and texture-coordinate indices (-1 for none).
      * Indices must already exist; this is checked.
      *
+     * @param p0 first corner's position index
+     * @param p1 second corner's position index
+     * @param p2 third corner's position index (counter-clockwise from the front)
+     * @param t0 first corner's texture-coordinate index, or -1
+     * @param t1 second corner's texture-coordinate index, or -1
+     * @param t2 third corner's texture-coordinate index, or -1
      * @return the new triangle's index
      */
     public int triangle(int p0, int p1, int p2, int t0, int t1, int t2) {
@@ -115,6 +152,19 @@ public final class MeshBuilder {
     /**
      * Adds a quad as two triangles (p0, p1, p2) and (p0, p2, p3); the corners run counter-clockwise
      * as seen from the front.
+     *
+     * @param p0 first corner, object space
+     * @param p1 second corner
+     * @param p2 third corner
+     * @param p3 fourth corner
+     * @param u0 u at {@code p0}
+     * @param v0 v at {@code p0}
+     * @param u1 u at {@code p1}
+     * @param v1 v at {@code p1}
+     * @param u2 u at {@code p2}
+     * @param v2 v at {@code p2}
+     * @param u3 u at {@code p3}
+     * @param v3 v at {@code p3}
      */
     public void quad(Vec3 p0, Vec3 p1, Vec3 p2, Vec3 p3,
                      double u0, double v0, double u1, double v1,
@@ -143,7 +193,11 @@ public final class MeshBuilder {
         }
     }
 
-    /** The mesh built so far (arrays trimmed to size). The builder may be reused afterwards. */
+    /**
+     * The mesh built so far (arrays trimmed to size). The builder may be reused afterwards.
+     *
+     * @return the mesh, immutable
+     */
     public Mesh build() {
         List<String> names = materialNames.isEmpty() ? List.of("default") : materialNames;
         return new Mesh(

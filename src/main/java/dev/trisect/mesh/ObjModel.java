@@ -20,7 +20,14 @@ import java.util.Objects;
  */
 public record ObjModel(Mesh mesh, List<Path> materialTextures, List<String> textureSources) {
 
-    /** Checks that there is one entry per material in each list and keeps unmodifiable copies. */
+    /**
+     * Checks that there is one entry per material in each list and keeps unmodifiable copies.
+     *
+     * @param mesh             the triangles
+     * @param materialTextures each material's texture file, or null
+     * @param textureSources   where each material's texture was named, or null
+     * @throws IllegalArgumentException when a list's length is not the mesh's material count
+     */
     public ObjModel {
         Objects.requireNonNull(mesh, "mesh");
         // List.copyOf rejects nulls, which mean "no texture" here.
@@ -32,7 +39,12 @@ public record ObjModel(Mesh mesh, List<Path> materialTextures, List<String> text
         }
     }
 
-    /** A model whose textures have no recorded source. */
+    /**
+     * A model whose textures have no recorded source.
+     *
+     * @param mesh             the triangles
+     * @param materialTextures each material's texture file, or null
+     */
     public ObjModel(Mesh mesh, List<Path> materialTextures) {
         this(mesh, materialTextures, Collections.nCopies(materialTextures.size(), null));
     }

@@ -74,6 +74,7 @@ public final class Primitives {
      * {@code right x up} points to. Corner {@code origin} gets UV (u0, v0); moving along {@code right}
      * increases u, along {@code up} increases v, so the texture appears upright to a viewer in front.
      *
+     * @param b        the builder the quads are added to
      * @param origin   bottom-left corner, world space
      * @param right    full edge along which u grows, world units
      * @param up       full edge along which v grows, world units
@@ -116,6 +117,16 @@ public final class Primitives {
      * A horizontal floor at height {@code y} facing +y, covering x in [x0, x1] and z in [z0, z1].
      * u grows with x and v grows toward -z (away from a camera looking down -z), one texture
      * repeat every {@code repeat} world units.
+     *
+     * @param b      the builder the quads are added to
+     * @param x0     left edge, world x
+     * @param x1     right edge, world x
+     * @param z0     far edge, world z
+     * @param z1     near edge, world z
+     * @param y      height, world units
+     * @param cellsX quads along x, &gt;= 1
+     * @param cellsZ quads along z, &gt;= 1
+     * @param repeat world units per texture repeat
      */
     public static void floor(MeshBuilder b, double x0, double x1, double z0, double z1, double y,
                              int cellsX, int cellsZ, double repeat) {
@@ -130,6 +141,7 @@ public final class Primitives {
     /**
      * An axis-aligned box, each face a quad with UVs (0, 0) to (1, 1), upright on the side faces.
      *
+     * @param b      the builder the faces are added to
      * @param center centre, world space
      * @param size   edge lengths along x, y and z, world units
      */
@@ -158,6 +170,7 @@ public final class Primitives {
      * A UV sphere: u runs once around (longitude), v from 0 at the bottom pole to 1 at the top.
      * The pole rows are single triangles, so no triangle is degenerate.
      *
+     * @param b      the builder the triangles are added to
      * @param center centre, world space
      * @param radius radius, world units
      * @param slices divisions around, &gt;= 3
