@@ -17,7 +17,11 @@ public final class Mat4 {
         this.m = m;
     }
 
-    /** The identity matrix. */
+    /**
+     * The identity matrix.
+     *
+     * @return the identity
+     */
     public static Mat4 identity() {
         double[] m = new double[16];
         m[0] = m[5] = m[10] = m[15] = 1;
@@ -26,6 +30,9 @@ public final class Mat4 {
 
     /**
      * A matrix from 16 values given row by row (as one reads a matrix on paper).
+     *
+     * @param rows 16 values, row by row
+     * @return the matrix
      */
     public static Mat4 ofRows(double... rows) {
         if (rows.length != 16) {
@@ -47,6 +54,7 @@ public final class Mat4 {
      * @param eye    camera position, world space
      * @param target point looked at, world space; must differ from {@code eye}
      * @param up     approximate up direction, world space; must not be parallel to the view direction
+     * @return the view matrix
      */
     public static Mat4 lookAt(Vec3 eye, Vec3 target, Vec3 up) {
         Vec3 f = target.sub(eye).normalize();
@@ -70,6 +78,7 @@ public final class Mat4 {
      * @param aspect      width / height of the viewport
      * @param near        distance to the near plane, view-space units, &gt; 0
      * @param far         distance to the far plane, view-space units, &gt; near
+     * @return the projection matrix
      */
     public static Mat4 perspective(double fovYDegrees, double aspect, double near, double far) {
         double f = 1.0 / Math.tan(Math.toRadians(fovYDegrees) / 2);
@@ -80,12 +89,23 @@ public final class Mat4 {
                 0, 0, -1, 0);
     }
 
-    /** Element at row {@code r}, column {@code c}. */
+    /**
+     * Element at row {@code r}, column {@code c}.
+     *
+     * @param r the row, 0..3
+     * @param c the column, 0..3
+     * @return the element
+     */
     public double get(int r, int c) {
         return m[c * 4 + r];
     }
 
-    /** {@code this * o}: applies {@code o} first, then {@code this}. */
+    /**
+     * {@code this * o}: applies {@code o} first, then {@code this}.
+     *
+     * @param o the matrix applied first
+     * @return the product
+     */
     public Mat4 mul(Mat4 o) {
         double[] r = new double[16];
         for (int c = 0; c < 4; c++) {
@@ -103,6 +123,12 @@ public final class Mat4 {
     /**
      * Transforms the point (x, y, z, 1) and writes (x', y', z', w') to {@code out[offset..offset+3]}.
      * Allocation-free, for the per-vertex stage.
+     *
+     * @param x      the point's x
+     * @param y      the point's y
+     * @param z      the point's z
+     * @param out    receives x', y', z', w'
+     * @param offset where in {@code out}
      */
     public void transformPoint(double x, double y, double z, double[] out, int offset) {
         out[offset] = m[0] * x + m[4] * y + m[8] * z + m[12];
@@ -111,7 +137,12 @@ public final class Mat4 {
         out[offset + 3] = m[3] * x + m[7] * y + m[11] * z + m[15];
     }
 
-    /** The point (x, y, z, 1) transformed and divided by w; meant for tests and setup, not hot loops. */
+    /**
+     * The point (x, y, z, 1) transformed and divided by w; meant for tests and setup, not hot loops.
+     *
+     * @param p the point
+     * @return the transformed point after the division by w
+     */
     public Vec3 transformProject(Vec3 p) {
         double[] o = new double[4];
         transformPoint(p.x(), p.y(), p.z(), o, 0);

@@ -21,6 +21,10 @@ public record Quaternion(double x, double y, double z, double w) {
     /**
      * Checks that the components are finite and not all zero.
      *
+     * @param x the vector part's x
+     * @param y the vector part's y
+     * @param z the vector part's z
+     * @param w the scalar part
      * @throws IllegalArgumentException otherwise
      */
     public Quaternion {
@@ -33,7 +37,15 @@ public record Quaternion(double x, double y, double z, double w) {
         }
     }
 
-    /** The quaternion (x, y, z, w) scaled to unit length. */
+    /**
+     * The quaternion (x, y, z, w) scaled to unit length.
+     *
+     * @param x the vector part's x
+     * @param y the vector part's y
+     * @param z the vector part's z
+     * @param w the scalar part
+     * @return the unit quaternion
+     */
     public static Quaternion of(double x, double y, double z, double w) {
         double n = Math.sqrt(x * x + y * y + z * z + w * w);
         return new Quaternion(x / n, y / n, z / n, w / n);
@@ -44,6 +56,7 @@ public record Quaternion(double x, double y, double z, double w) {
      *
      * @param axis    the axis, any non-zero length
      * @param degrees the angle, degrees, counter-clockwise looking down the axis toward the origin
+     * @return the rotation
      */
     public static Quaternion axisAngle(Vec3 axis, double degrees) {
         double len = axis.length();
@@ -58,22 +71,42 @@ public record Quaternion(double x, double y, double z, double w) {
         return of(axis.x() * s, axis.y() * s, axis.z() * s, Math.cos(half));
     }
 
-    /** A rotation by {@code degrees} about +x. */
+    /**
+     * A rotation by {@code degrees} about +x.
+     *
+     * @param degrees the angle, counter-clockwise looking down +x toward the origin
+     * @return the rotation
+     */
     public static Quaternion ofX(double degrees) {
         return axisAngle(new Vec3(1, 0, 0), degrees);
     }
 
-    /** A rotation by {@code degrees} about +y. */
+    /**
+     * A rotation by {@code degrees} about +y.
+     *
+     * @param degrees the angle, counter-clockwise looking down +y toward the origin
+     * @return the rotation
+     */
     public static Quaternion ofY(double degrees) {
         return axisAngle(new Vec3(0, 1, 0), degrees);
     }
 
-    /** A rotation by {@code degrees} about +z. */
+    /**
+     * A rotation by {@code degrees} about +z.
+     *
+     * @param degrees the angle, counter-clockwise looking down +z toward the origin
+     * @return the rotation
+     */
     public static Quaternion ofZ(double degrees) {
         return axisAngle(new Vec3(0, 0, 1), degrees);
     }
 
-    /** {@code this * o}: the rotation {@code o} followed by this one (Hamilton product, renormalized). */
+    /**
+     * {@code this * o}: the rotation {@code o} followed by this one (Hamilton product, renormalized).
+     *
+     * @param o the rotation applied first
+     * @return the combined rotation
+     */
     public Quaternion mul(Quaternion o) {
         return of(w * o.x + x * o.w + y * o.z - z * o.y,
                 w * o.y - x * o.z + y * o.w + z * o.x,
@@ -81,12 +114,21 @@ public record Quaternion(double x, double y, double z, double w) {
                 w * o.w - x * o.x - y * o.y - z * o.z);
     }
 
-    /** The inverse rotation. */
+    /**
+     * The inverse rotation.
+     *
+     * @return the conjugate
+     */
     public Quaternion inverse() {
         return of(-x, -y, -z, w);
     }
 
-    /** {@code v} rotated. */
+    /**
+     * {@code v} rotated.
+     *
+     * @param v the vector
+     * @return the rotated vector
+     */
     public Vec3 rotate(Vec3 v) {
         Mat4 m = matrix();
         return new Vec3(m.get(0, 0) * v.x() + m.get(0, 1) * v.y() + m.get(0, 2) * v.z(),
@@ -94,7 +136,11 @@ public record Quaternion(double x, double y, double z, double w) {
                 m.get(2, 0) * v.x() + m.get(2, 1) * v.y() + m.get(2, 2) * v.z());
     }
 
-    /** The rotation as a matrix (the upper-left 3x3 of a 4x4 with no translation). */
+    /**
+     * The rotation as a matrix (the upper-left 3x3 of a 4x4 with no translation).
+     *
+     * @return the rotation matrix
+     */
     public Mat4 matrix() {
         // The standard unit-quaternion rotation matrix (Shoemake, "Animating rotation with quaternion
         // curves", SIGGRAPH 1985), normalized here so that a slightly off-unit value still rotates.

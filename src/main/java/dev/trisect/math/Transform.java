@@ -23,6 +23,9 @@ public record Transform(Vec3 translation, Quaternion rotation, Vec3 scale) {
     /**
      * Checks the parts.
      *
+     * @param translation where the object's origin goes, parent's units
+     * @param rotation    the rotation about the object's origin
+     * @param scale       the scale per axis, applied first
      * @throws NullPointerException     for a missing part
      * @throws IllegalArgumentException for a non-finite translation or a non-finite or zero scale
      */
@@ -38,57 +41,117 @@ public record Transform(Vec3 translation, Quaternion rotation, Vec3 scale) {
         }
     }
 
-    /** A translation alone. */
+    /**
+     * A translation alone.
+     *
+     * @param x the move along x, parent's units
+     * @param y the move along y
+     * @param z the move along z
+     * @return the transform
+     */
     public static Transform translation(double x, double y, double z) {
         return IDENTITY.withTranslation(new Vec3(x, y, z));
     }
 
-    /** A rotation alone. */
+    /**
+     * A rotation alone.
+     *
+     * @param rotation the rotation
+     * @return the transform
+     */
     public static Transform rotation(Quaternion rotation) {
         return IDENTITY.withRotation(rotation);
     }
 
-    /** A uniform scale alone. */
+    /**
+     * A uniform scale alone.
+     *
+     * @param factor the scale on every axis
+     * @return the transform
+     */
     public static Transform scale(double factor) {
         return IDENTITY.withScale(factor);
     }
 
-    /** A copy with another translation. */
+    /**
+     * A copy with another translation.
+     *
+     * @param t the translation
+     * @return the copy
+     */
     public Transform withTranslation(Vec3 t) {
         return new Transform(t, rotation, scale);
     }
 
-    /** A copy with another translation. */
+    /**
+     * A copy with another translation.
+     *
+     * @param x the translation's x
+     * @param y the translation's y
+     * @param z the translation's z
+     * @return the copy
+     */
     public Transform withTranslation(double x, double y, double z) {
         return withTranslation(new Vec3(x, y, z));
     }
 
-    /** A copy with another rotation. */
+    /**
+     * A copy with another rotation.
+     *
+     * @param r the rotation
+     * @return the copy
+     */
     public Transform withRotation(Quaternion r) {
         return new Transform(translation, r, scale);
     }
 
-    /** A copy with another scale per axis. */
+    /**
+     * A copy with another scale per axis.
+     *
+     * @param s the scale per axis
+     * @return the copy
+     */
     public Transform withScale(Vec3 s) {
         return new Transform(translation, rotation, s);
     }
 
-    /** A copy with a uniform scale. */
+    /**
+     * A copy with a uniform scale.
+     *
+     * @param factor the scale on every axis
+     * @return the copy
+     */
     public Transform withScale(double factor) {
         return withScale(new Vec3(factor, factor, factor));
     }
 
-    /** A copy rotated further by {@code r} (about the object's origin, after its present rotation). */
+    /**
+     * A copy rotated further by {@code r} (about the object's origin, after its present rotation).
+     *
+     * @param r the further rotation
+     * @return the copy
+     */
     public Transform rotatedBy(Quaternion r) {
         return withRotation(r.mul(rotation));
     }
 
-    /** A copy moved further by (dx, dy, dz), in the parent's units. */
+    /**
+     * A copy moved further by (dx, dy, dz), in the parent's units.
+     *
+     * @param dx the move along x
+     * @param dy the move along y
+     * @param dz the move along z
+     * @return the copy
+     */
     public Transform movedBy(double dx, double dy, double dz) {
         return withTranslation(translation.add(new Vec3(dx, dy, dz)));
     }
 
-    /** The matrix {@code T * R * S}: object space to the parent's space. */
+    /**
+     * The matrix {@code T * R * S}: object space to the parent's space.
+     *
+     * @return the matrix
+     */
     public Mat4 matrix() {
         Mat4 r = rotation.matrix();
         double sx = scale.x();
@@ -101,7 +164,12 @@ public record Transform(Vec3 translation, Quaternion rotation, Vec3 scale) {
                 0, 0, 0, 1);
     }
 
-    /** The point {@code p} of object space in the parent's space. */
+    /**
+     * The point {@code p} of object space in the parent's space.
+     *
+     * @param p the point, object space
+     * @return the point in the parent's space
+     */
     public Vec3 apply(Vec3 p) {
         return translation.add(rotation.rotate(new Vec3(p.x() * scale.x(), p.y() * scale.y(), p.z() * scale.z())));
     }
