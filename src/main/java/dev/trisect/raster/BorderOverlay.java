@@ -39,6 +39,16 @@ public final class BorderOverlay {
     private double qMaxEarlier;
     private int colourEarlier;
     private double alphaEarlier;
+    /**
+     * Whether the edge's one or two outlines are opaque and not held to a depth range (no fading, no
+     * fallback piece): then a pixel is the later outline's colour where its test passes, else the
+     * earlier's where its test passes, with no blending or clamping to do.
+     */
+    private boolean simple;
+    /** The frame being drawn: its colours, depths and width. */
+    private int[] color;
+    private float[] depth;
+    private int width;
 
     /**
      * Outlines the edges of {@code plan}'s band {@code band} within pixels {@code [x0, x1) x [y0, y1)},
@@ -47,52 +57,59 @@ public final class BorderOverlay {
      * @return number of outline pixels drawn (each once, whether one or both triangles sharing its edge drew it)
      */
     public long draw(Framebuffer frame, OutlinePlan plan, int band, int x0, int y0, int x1, int y1) {
-        double[] planes = plan.planes;
-        double[] ranges = plan.depthRange;
+        double[] looks = plan.looks;
         int[] colours = plan.colours;
-        double[] alphas = plan.alphas;
         int[] items = plan.bins.items();
-        double[] lines = plan.edgeLine;
-        int[] spans = plan.edgeSpan;
-        int[] cross = plan.edgeCross;
+        int[] walks = plan.walks;
+        double[] lines = plan.lines;
+        color = frame.color();
+        depth = frame.depth();
+        width = frame.width();
         long painted = 0;
         int owner = -1;
+        boolean ownerSimple = false;
         for (int n = plan.bins.start(band), end = plan.bins.start(band + 1); n < end; n++) {
             int edge = items[n];
-            int tri = plan.edgeOwner[edge];
+            int w = OutlinePlan.WALK * edge;
+            int tri = walks[w];
             // A triangle's edges follow one another: its outline's values stay.
             if (tri != owner) {
                 owner = tri;
-                qBase = planes[3 * tri];
-                qDx = planes[3 * tri + 1];
-                qDy = planes[3 * tri + 2];
-                qMin = ranges[2 * tri];
-                qMax = ranges[2 * tri + 1];
+                int l = OutlinePlan.LOOK * tri;
+                qBase = looks[l];
+                qDx = looks[l + 1];
+                qDy = looks[l + 2];
+                qMin = looks[l + 3];
+                qMax = looks[l + 4];
+                alpha = looks[l + 5];
                 colour = colours[tri];
-                alpha = alphas[tri];
+                ownerSimple = simple(alpha, qMin, qMax);
             }
-            int earlier = plan.edgeEarlier[edge];
+            int earlier = walks[w + 1];
             shared = earlier >= 0;
             if (shared) {
-                qBaseEarlier = planes[3 * earlier];
-                qDxEarlier = planes[3 * earlier + 1];
-                qDyEarlier = planes[3 * earlier + 2];
-                qMinEarlier = ranges[2 * earlier];
-                qMaxEarlier = ranges[2 * earlier + 1];
+                int l = OutlinePlan.LOOK * earlier;
+                qBaseEarlier = looks[l];
+                qDxEarlier = looks[l + 1];
+                qDyEarlier = looks[l + 2];
+                qMinEarlier = looks[l + 3];
+                qMaxEarlier = looks[l + 4];
+                alphaEarlier = looks[l + 5];
                 colourEarlier = colours[earlier];
-                alphaEarlier = alphas[earlier];
             }
-            double xa = lines[3 * edge];
-            double ya = lines[3 * edge + 1];
-            double slope = lines[3 * edge + 2];
-            int first = spans[2 * edge];
-            int last = spans[2 * edge + 1];
-            int crossFirst = cross[2 * edge];
-            int crossLast = cross[2 * edge + 1];
-            if (plan.edgeByColumn[edge]) {
+            simple = ownerSimple && (!shared || simple(alphaEarlier, qMinEarlier, qMaxEarlier));
+            int first = walks[w + 2];
+            int last = walks[w + 3];
+            int crossFirst = walks[w + 4];
+            int crossLast = walks[w + 5];
+            int k = OutlinePlan.LINE * edge;
+            double xa = lines[k];
+            double ya = lines[k + 1];
+            double slope = lines[k + 2];
+            if (walks[w + 6] != 0) {
                 painted += crossFirst >= y0 && crossLast < y1 && first >= x0 && last < x1
                         ? byColumnInside(frame, xa, ya, slope, first, last)
-                        : byColumn(frame, xa, ya, slope, first, last, x0, y0, x1, y1);
+                        : byColumn(frame, xa, ya, slope, lines[k + 3], first, last, x0, y0, x1, y1);
             } else {
                 int from = Math.max(y0, first);
                 int to = Math.min(y1 - 1, last);
@@ -105,16 +122,16 @@ public final class BorderOverlay {
 
     /**
      * Walks a mostly horizontal edge: in column c, the pixel on row floor(ya + (c + 0.5 - xa) * slope).
-     * Only the columns whose rows can fall within [y0, y1) are visited, solved from the slope with a
-     * column of margin; the exact test decides.
+     * Only the columns whose rows can fall within [y0, y1) are visited, solved with the slope's
+     * {@code inverse} and a column of margin; the exact test decides.
      */
-    private int byColumn(Framebuffer frame, double xa, double ya, double slope, int first, int last,
+    private int byColumn(Framebuffer frame, double xa, double ya, double slope, double inverse, int first, int last,
                          int x0, int y0, int x1, int y1) {
         double from = first;
         double to = last;
         if (slope != 0) {
-            double c0 = xa - 0.5 + (y0 - ya) / slope;
-            double c1 = xa - 0.5 + (y1 - ya) / slope;
+            double c0 = xa - 0.5 + (y0 - ya) * inverse;
+            double c1 = xa - 0.5 + (y1 - ya) * inverse;
             from = Math.max(from, Math.floor(Math.min(c0, c1)) - 1);
             to = Math.min(to, Math.ceil(Math.max(c0, c1)) + 1);
         }
@@ -133,6 +150,9 @@ public final class BorderOverlay {
 
     /** {@link #byColumn} for an edge whose pixels all lie within the band and the frame. */
     private int byColumnInside(Framebuffer frame, double xa, double ya, double slope, int first, int last) {
+        if (simple) {
+            return byColumnSimple(xa, ya, slope, first, last);
+        }
         int painted = 0;
         for (int c = first; c <= last; c++) {
             // At least the edge's first row, >= 0, so the cast floors.
@@ -143,6 +163,9 @@ public final class BorderOverlay {
 
     /** {@link #byRow} for an edge whose pixels all lie within the frame's columns. */
     private int byRowInside(Framebuffer frame, double xa, double ya, double slope, int first, int last) {
+        if (simple) {
+            return byRowSimple(xa, ya, slope, first, last);
+        }
         int painted = 0;
         for (int r = first; r <= last; r++) {
             painted += plot(frame, (int) (xa + (r + 0.5 - ya) * slope), r);
@@ -159,6 +182,31 @@ public final class BorderOverlay {
             if (c >= x0 && c < x1) {
                 painted += plot(frame, (int) c, r);
             }
+        }
+        return painted;
+    }
+
+    /**
+     * {@link #byColumnInside} of a {@link #simple} edge, {@link #plot} written into the loop. Each
+     * value is the same double as there: column c and c + 0.5 are counted up exactly in doubles.
+     */
+    private int byColumnSimple(double xa, double ya, double slope, int first, int last) {
+        int painted = 0;
+        double x = first;
+        for (int c = first; c <= last; c++, x++) {
+            double y = Math.floor(ya + (x + 0.5 - xa) * slope);
+            painted += plotSimple((int) y * width + c, x, y);
+        }
+        return painted;
+    }
+
+    /** {@link #byRowInside} of a {@link #simple} edge, as {@link #byColumnSimple}. */
+    private int byRowSimple(double xa, double ya, double slope, int first, int last) {
+        int painted = 0;
+        double y = first;
+        for (int r = first; r <= last; r++, y++) {
+            double x = Math.floor(xa + (y + 0.5 - ya) * slope);
+            painted += plotSimple(r * width + (int) x, x, y);
         }
         return painted;
     }
@@ -186,15 +234,39 @@ public final class BorderOverlay {
     }
 
     /**
+     * {@link #plot} of a {@link #simple} edge at pixel index {@code i}, column x and row y: what the
+     * general case does when both outlines are opaque and not held.
+     */
+    private int plotSimple(int i, double x, double y) {
+        double limit = depth[i] * (1 - DEPTH_TOLERANCE);
+        if (!(qBase + qDx * x + qDy * y < limit)) {
+            color[i] = colour;
+            return 1;
+        }
+        if (shared && !(qBaseEarlier + qDxEarlier * x + qDyEarlier * y < limit)) {
+            color[i] = colourEarlier;
+            return 1;
+        }
+        return 0;
+    }
+
+    /** Whether an outline of opacity {@code a} held to 1/w range [min, max] is opaque and not held. */
+    private static boolean simple(double a, double min, double max) {
+        return a >= 1 && min == Double.NEGATIVE_INFINITY && max == Double.POSITIVE_INFINITY;
+    }
+
+    /**
      * Applies the earlier sharing triangle's outline, if any, then this one's at pixel (x, y). Where
      * this one's shows opaque it covers the earlier's, so the earlier's test is then spared.
      *
      * @return 1 when the pixel was drawn, else 0
      */
     private int plot(Framebuffer frame, int x, int y) {
-        int i = y * frame.width() + x;
-        double limit = frame.depth()[i] * (1 - DEPTH_TOLERANCE);
-        int[] color = frame.color();
+        int i = y * width + x;
+        if (simple) {
+            return plotSimple(i, x, y);
+        }
+        double limit = depth[i] * (1 - DEPTH_TOLERANCE);
         boolean shows = !(held(qBase + qDx * x + qDy * y, qMin, qMax) < limit);
         if (shows && alpha >= 1) {
             color[i] = colour;
@@ -212,7 +284,7 @@ public final class BorderOverlay {
         return painted;
     }
 
-    /** {@code q} held to [min, max] (see {@link OutlinePlan#depthRange}); NaN stays NaN. */
+    /** {@code q} held to [min, max] (see {@link OutlinePlan#looks}); NaN stays NaN. */
     private static double held(double q, double min, double max) {
         return q < min ? min : q > max ? max : q;
     }

@@ -54,7 +54,7 @@ public final class KnotTicks {
                 int tri = order[n];
                 if (plan.colours[tri] != 0 && setup.prepare(triangles, tri, true, 0, row, frame.width(), row + 1)) {
                     solver.walk(setup);
-                    painted += row(frame, row, plan.colours[tri], plan.alphas[tri], byBound, maxError, y0, y1);
+                    painted += row(frame, row, plan.colours[tri], plan.alpha(tri), byBound, maxError, y0, y1);
                 }
             }
         }

@@ -29,40 +29,44 @@ public final class OutlinePlan {
     /** Storage for more than this many triangles may shrink when it is far larger than needed. */
     private static final int TRIM_FLOOR = 16384;
 
-    /** Per triangle: the 1/w plane over pixel centres, base, dx, dy (as {@link Plane}). */
-    double[] planes = new double[0];
+    /** Doubles per triangle in {@link #looks}. */
+    static final int LOOK = 6;
     /**
-     * Per triangle: the least and greatest 1/w its outline's depth test may take. A piece filled per
-     * pixel by the fallback is mostly a sliver, whose plane is steep or ill-conditioned: evaluated
-     * half a pixel off it, it can put the outline in front of a nearer surface. Its depth is then held
-     * to the range of its corners' 1/w, which every point of it lies within (1/w is affine on screen).
-     * Other triangles are not held (infinite range): their plane is their surface's, bit for bit.
+     * Per triangle, {@link #LOOK} doubles: its 1/w plane over pixel centres (base, dx, dy, as {@link
+     * Plane}), the least and greatest 1/w its outline's depth test may take, and its outline's
+     * opacity (0..1). One record, so that drawing an edge reads one cache line for its triangle.
+     *
+     * <p>The range: a piece filled per pixel by the fallback is mostly a sliver, whose plane is steep
+     * or ill-conditioned: evaluated half a pixel off it, it can put the outline in front of a nearer
+     * surface. Its depth is then held to the range of its corners' 1/w, which every point of it lies
+     * within (1/w is affine on screen). Other triangles are not held (infinite range): their plane is
+     * their surface's, bit for bit.
      */
-    double[] depthRange = new double[0];
+    double[] looks = new double[0];
     /** Per triangle: outline colour, opaque ARGB, or 0 for a triangle not outlined. */
     int[] colours = new int[0];
-    /** Per triangle: outline opacity, 0..1. */
-    double[] alphas = new double[0];
     /** Per triangle corner edge (edge e from corner e to corner e + 1): the earlier sharer, ALONE or WALKED_LATER. */
     private int[] partner = new int[0];
 
-    /** Edges to walk, in drawing order: the triangle whose turn it is and the earlier sharer (or ALONE). */
-    int[] edgeOwner = new int[0];
-    int[] edgeEarlier = new int[0];
+    /** Ints per edge to walk in {@link #walks}. */
+    static final int WALK = 8;
+    /** Doubles per edge to walk in {@link #lines}. */
+    static final int LINE = 4;
     /**
-     * Per edge, pixels: the canonical (smaller x, then y) end's x and y, and the slope: dy/dx for a
-     * mostly horizontal edge, dx/dy for a mostly vertical one.
+     * Per edge to walk, in drawing order, {@link #WALK} ints: the triangle whose turn it is, the
+     * earlier sharer (or {@link #ALONE}); the first and last column (mostly horizontal) or row (mostly
+     * vertical) it lights; the first and last row (mostly horizontal) or column (mostly vertical) its
+     * pixels can fall on, unclipped, so that an edge within the band and the frame is walked without
+     * per-pixel tests; 1 when it is mostly horizontal (walked by column), else 0; and a pad to 32
+     * bytes. One record, so that a band's walk reads one cache line per edge for them.
      */
-    double[] edgeLine = new double[0];
-    /** Per edge: first and last column (mostly horizontal) or row (mostly vertical) it lights. */
-    int[] edgeSpan = new int[0];
+    int[] walks = new int[0];
     /**
-     * Per edge: the first and last row (mostly horizontal) or column (mostly vertical) its pixels
-     * can fall on, unclipped: an edge within the band and the frame is walked without per-pixel tests.
+     * Per edge to walk, {@link #LINE} doubles, pixels: the canonical (smaller x, then y) end's x and
+     * y, the slope (dy/dx for a mostly horizontal edge, dx/dy for a mostly vertical one), and its
+     * reciprocal, with which a band finds the columns of an edge that crosses it without dividing.
      */
-    int[] edgeCross = new int[0];
-    /** Per edge: whether it is mostly horizontal (walked by column). */
-    boolean[] edgeByColumn = new boolean[0];
+    double[] lines = new double[0];
     private int edgeCount;
 
     /** The edges of each band, in drawing order. */
@@ -117,15 +121,16 @@ public final class OutlinePlan {
             }
             int a = tri * ScreenTriangles.ATTRIBUTE_STRIDE;
             depth.fit(x0, y0, ex1, ey1, ex2, ey2, 1 / det, at[a], at[a + 3], at[a + 6]);
-            planes[3 * tri] = depth.base;
-            planes[3 * tri + 1] = depth.dx;
-            planes[3 * tri + 2] = depth.dy;
+            int l = LOOK * tri;
+            looks[l] = depth.base;
+            looks[l + 1] = depth.dx;
+            looks[l + 2] = depth.dy;
             boolean held = perPixel[tri];
-            depthRange[2 * tri] = held ? Math.min(at[a], Math.min(at[a + 3], at[a + 6])) : Double.NEGATIVE_INFINITY;
-            depthRange[2 * tri + 1] = held ? Math.max(at[a], Math.max(at[a + 3], at[a + 6])) : Double.POSITIVE_INFINITY;
+            looks[l + 3] = held ? Math.min(at[a], Math.min(at[a + 3], at[a + 6])) : Double.NEGATIVE_INFINITY;
+            looks[l + 4] = held ? Math.max(at[a], Math.max(at[a + 3], at[a + 6])) : Double.POSITIVE_INFINITY;
+            looks[l + 5] = style.fade() ? BorderOverlay.fadeAlpha(Math.abs(det) / 2, perimeter(sc, s)) : 1;
             colours[tri] = style.colouring() == BorderStyle.Colouring.YELLOW ? OverlayColours.of(triangles, tri)
                     : OverlayColours.of(triangles, tri, style.colouring(), maxLevel, maxError);
-            alphas[tri] = style.fade() ? BorderOverlay.fadeAlpha(Math.abs(det) / 2, perimeter(sc, s)) : 1;
         }
     }
 
@@ -253,12 +258,16 @@ public final class OutlinePlan {
                 int crossFirst;
                 int crossLast;
                 double slope;
+                double inverse = 0;
                 if (byColumn) {
                     if (dx == 0) {
                         continue;
                     }
                     // The quotient of the two differences in pixels: both are exact, and scaling both by 2^-BITS keeps it.
                     slope = dy / (double) dx;
+                    // Only to find the columns that may fall in a band, with a column of margin: no
+                    // pixel depends on its rounding.
+                    inverse = dy == 0 ? 0 : dx / (double) dy;
                     first = (ax + FixedPoint.HALF - 1) >> FixedPoint.BITS;
                     last = (bx - FixedPoint.HALF) >> FixedPoint.BITS;
                     crossFirst = cellBelow(Math.min(ay, by));
@@ -279,16 +288,19 @@ public final class OutlinePlan {
                 if (first > last || rowFirst > rowLast) {
                     continue;
                 }
-                edgeOwner[count] = tri;
-                edgeEarlier[count] = earlier;
-                edgeLine[3 * count] = ax / (double) FixedPoint.ONE;
-                edgeLine[3 * count + 1] = ay / (double) FixedPoint.ONE;
-                edgeLine[3 * count + 2] = slope;
-                edgeSpan[2 * count] = first;
-                edgeSpan[2 * count + 1] = last;
-                edgeCross[2 * count] = crossFirst;
-                edgeCross[2 * count + 1] = crossLast;
-                edgeByColumn[count] = byColumn;
+                int w = WALK * count;
+                walks[w] = tri;
+                walks[w + 1] = earlier;
+                walks[w + 2] = first;
+                walks[w + 3] = last;
+                walks[w + 4] = crossFirst;
+                walks[w + 5] = crossLast;
+                walks[w + 6] = byColumn ? 1 : 0;
+                int k = LINE * count;
+                lines[k] = ax / (double) FixedPoint.ONE;
+                lines[k + 1] = ay / (double) FixedPoint.ONE;
+                lines[k + 2] = slope;
+                lines[k + 3] = inverse;
                 bins.rows(count, rowFirst, rowLast, bandRows);
                 count++;
             }
@@ -299,6 +311,26 @@ public final class OutlinePlan {
     /** The number of edges to walk (for tests). */
     int edgeCount() {
         return edgeCount;
+    }
+
+    /** Edge {@code k}'s walker: the triangle whose turn it is (for tests). */
+    int owner(int k) {
+        return walks[WALK * k];
+    }
+
+    /** The earlier triangle sharing edge {@code k}, or {@link #ALONE} (for tests). */
+    int earlier(int k) {
+        return walks[WALK * k + 1];
+    }
+
+    /** Edge {@code k}'s line, i = 0, 1, 2: its canonical end's x and y, and its slope (for tests). */
+    double line(int k, int i) {
+        return lines[LINE * k + i];
+    }
+
+    /** Triangle {@code tri}'s outline opacity, 0..1. */
+    double alpha(int tri) {
+        return looks[LOOK * tri + 5];
     }
 
     /**
@@ -316,10 +348,8 @@ public final class OutlinePlan {
         int capacity = colours.length;
         if (capacity < n || capacity > TRIM_FLOOR && capacity > 4 * n) {
             int size = capacity < n ? Math.max(n, 2 * capacity) : 2 * n;
-            planes = new double[3 * size];
-            depthRange = new double[2 * size];
+            looks = new double[LOOK * size];
             colours = new int[size];
-            alphas = new double[size];
             partner = new int[3 * size];
         }
     }
@@ -347,15 +377,11 @@ public final class OutlinePlan {
     }
 
     private void ensureEdges(int n) {
-        int capacity = edgeOwner.length;
+        int capacity = walks.length / WALK;
         if (capacity < n || capacity > 3 * TRIM_FLOOR && capacity > 4 * n) {
             int size = capacity < n ? Math.max(n, 2 * capacity) : 2 * n;
-            edgeOwner = new int[size];
-            edgeEarlier = new int[size];
-            edgeLine = new double[3 * size];
-            edgeSpan = new int[2 * size];
-            edgeCross = new int[2 * size];
-            edgeByColumn = new boolean[size];
+            walks = new int[WALK * size];
+            lines = new double[LINE * size];
             bins.shrink(size, 4 * size);
             bins.prepare(size);
         }

@@ -16,7 +16,7 @@ public final class OutlineProbe {
      * whose depth buffer holds 1/w = {@code depth} there: the triangle is outlined (it covers a pixel
      * centre's row of the frame, has an area), one of its edges passes through the pixel as the overlay
      * walks it, and its 1/w there is not behind {@code depth} (held to its corners' range when it is
-     * filled per pixel, see {@link OutlinePlan#depthRange}).
+     * filled per pixel, see {@link OutlinePlan#looks}).
      */
     public static boolean lights(ScreenTriangles t, int tri, int x, int y, int height, double depth) {
         if (y < 0 || y >= height || Math.max(0, t.firstRow(tri)) >= Math.min(height, t.endRow(tri))) {

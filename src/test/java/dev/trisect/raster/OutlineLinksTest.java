@@ -141,8 +141,8 @@ class OutlineLinksTest {
         Map<String, Integer> drawn = new HashMap<>();
         int shared = 0;
         for (int k = 0; k < plan.edgeCount(); k++) {
-            int owner = plan.edgeOwner[k];
-            int earlier = plan.edgeEarlier[k];
+            int owner = plan.owner(k);
+            int earlier = plan.earlier(k);
             drawn.merge(line(plan, k, owner), 1, Integer::sum);
             if (earlier >= 0) {
                 drawn.merge(line(plan, k, earlier), 1, Integer::sum);
@@ -153,7 +153,7 @@ class OutlineLinksTest {
             }
         }
         for (int k = 0; k < every.edgeCount(); k++) {
-            String key = line(every, k, every.edgeOwner[k]);
+            String key = line(every, k, every.owner(k));
             assertEquals(1, drawn.getOrDefault(key, 0), "edge " + key + " is walked once");
             drawn.remove(key);
         }
@@ -174,16 +174,16 @@ class OutlineLinksTest {
 
     /** Walk k of the plan as drawn for triangle {@code tri}: the triangle and the walk's line. */
     private static String line(OutlinePlan plan, int k, int tri) {
-        return tri + ":" + plan.edgeLine[3 * k] + "," + plan.edgeLine[3 * k + 1] + "," + plan.edgeLine[3 * k + 2];
+        return tri + ":" + plan.line(k, 0) + "," + plan.line(k, 1) + "," + plan.line(k, 2);
     }
 
     private static void assertSamePlan(OutlinePlan expected, OutlinePlan actual, String what) {
         assertEquals(expected.edgeCount(), actual.edgeCount(), what);
         for (int k = 0; k < expected.edgeCount(); k++) {
-            assertEquals(expected.edgeOwner[k], actual.edgeOwner[k], what + " walk " + k);
-            assertEquals(expected.edgeEarlier[k], actual.edgeEarlier[k], what + " walk " + k);
+            assertEquals(expected.owner(k), actual.owner(k), what + " walk " + k);
+            assertEquals(expected.earlier(k), actual.earlier(k), what + " walk " + k);
             for (int i = 0; i < 3; i++) {
-                assertEquals(expected.edgeLine[3 * k + i], actual.edgeLine[3 * k + i], what + " walk " + k);
+                assertEquals(expected.line(k, i), actual.line(k, i), what + " walk " + k);
             }
         }
     }
