@@ -15,7 +15,9 @@ import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 /**
  * {@code trisect diff}: compares two renders given as files, such as Trisect's and OpenGL's (the glref
@@ -31,6 +33,9 @@ import picocli.CommandLine.Option;
 final class DiffCommand implements Callable<Integer> {
     @Mixin
     CommonOptions common;
+
+    @Spec
+    CommandSpec spec;
 
     @Option(names = "--image", required = true, paramLabel = "FILE", description = "Image under test (PNG, PPM, ...).")
     Path image;
@@ -54,6 +59,10 @@ final class DiffCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
+        if (heatmap == null && spec.commandLine().getParseResult().hasMatchedOption("--heatmap-max")) {
+            // As compare: a scale for a heat map nobody asked for is a mistake worth saying.
+            throw InputException.usage("--heatmap-max needs --heatmap");
+        }
         try (OutputBatch batch = new OutputBatch()) {
             if (heatmap != null) {
                 Outputs.checkPng("--heatmap", heatmap);

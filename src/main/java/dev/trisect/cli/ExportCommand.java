@@ -35,11 +35,22 @@ final class ExportCommand implements Callable<Integer> {
             throw dev.trisect.base.InputException.usage("--to FILE.obj is required");
         }
         Outputs.checkObj("--to", to);
-        try (OutputBatch batch = new OutputBatch()) {
-            // The folder is made and checked before the scene is read; the MTL and textures go beside the OBJ.
-            Outputs.createParent("--to", to);
-            batch.reserve(to);
-            return export(batch);
+        // The folder is made and checked before the scene is read; the MTL and textures go beside the OBJ.
+        // Should nothing be written after all (a bad scene, a full disk, a signal), the folders made
+        // here are removed again, so that a failed export leaves nothing behind.
+        Path made = Outputs.createParent("--to", to);
+        boolean written = false;
+        try {
+            try (OutputBatch batch = new OutputBatch()) {
+                batch.reserve(to);
+                int status = export(batch);
+                written = java.nio.file.Files.isRegularFile(to);
+                return status;
+            }
+        } finally {
+            if (!written) {
+                Outputs.removeMadeFolders(to, made);
+            }
         }
     }
 

@@ -36,16 +36,46 @@ final class Outputs {
     /**
      * Creates the directory an output goes into, if missing: an export writes several files there
      * (OBJ, MTL, textures), and asking the user to make it first gains nothing.
+     *
+     * @return the outermost folder made (for {@link #removeMadeFolders}), or null when the directory was there
      */
-    static void createParent(String option, Path file) {
+    static Path createParent(String option, Path file) {
         Path parent = file.toAbsolutePath().getParent();
         if (parent == null || Files.isDirectory(parent)) {
-            return;
+            return null;
+        }
+        Path top = parent;
+        while (top.getParent() != null && !Files.exists(top.getParent())) {
+            top = top.getParent();
         }
         try {
             OutputBatch.createFolders(parent);
         } catch (InputException e) {
             throw new InputException(option + " " + file + ": " + e.getMessage(), e.getCause());
+        }
+        return top;
+    }
+
+    /**
+     * Removes the folders {@link #createParent} made for {@code file}, from its parent up to {@code top},
+     * as far as they are empty: a command that wrote nothing leaves no trace. Best effort: a folder
+     * something else has written into since stays, and so does one that cannot be removed.
+     *
+     * @param top what {@code createParent} returned; null: nothing was made
+     */
+    static void removeMadeFolders(Path file, Path top) {
+        if (top == null) {
+            return;
+        }
+        for (Path folder = file.toAbsolutePath().getParent(); folder != null; folder = folder.getParent()) {
+            try {
+                Files.delete(folder);
+            } catch (java.io.IOException e) {
+                return;
+            }
+            if (folder.equals(top)) {
+                return;
+            }
         }
     }
 

@@ -157,6 +157,12 @@ class CommandsTest {
         assertFalse(compare.out().contains("_estimate"), compare.out());
         assertTrue(number(compare.out(), "max_displacement") > 1, compare.out());
         assertTrue(CliRun.of("diff", "--help").out().contains("max_displacement_estimate"));
+        // As compare, a heat map's scale without the heat map is refused.
+        CliRun alone = CliRun.of("diff", "--image", dir.resolve("a.png").toString(), "--uv",
+                dir.resolve("a.pfm").toString(), "--reference", dir.resolve("b.png").toString(), "--reference-uv",
+                dir.resolve("b.pfm").toString(), "--heatmap-max", "3");
+        assertEquals(2, alone.status(), alone.err());
+        assertEquals("trisect: --heatmap-max needs --heatmap", alone.errLine());
     }
 
     @Test

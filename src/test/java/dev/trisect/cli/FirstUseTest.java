@@ -1,6 +1,7 @@
 package dev.trisect.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.texture.TextureReader;
@@ -46,6 +47,16 @@ class FirstUseTest {
         assertEquals(0, r.status(), r.err());
         assertTrue(Files.isRegularFile(obj));
         assertTrue(Files.isRegularFile(dir.resolve("new/deeper/x.mtl")));
+    }
+
+    @Test
+    void aFailedExportLeavesNoFolderBehind() throws IOException {
+        Files.createDirectories(dir.resolve("kept"));
+        Path obj = dir.resolve("kept/new/deeper/x.obj");
+        CliRun r = CliRun.of("export", "--scene", "no-such-scene", "--to", obj.toString());
+        assertTrue(r.status() != 0, r.err());
+        assertFalse(Files.exists(dir.resolve("kept/new")), "the folders made for the export are gone again");
+        assertTrue(Files.isDirectory(dir.resolve("kept")), "a folder that was there stays");
     }
 
     @Test
