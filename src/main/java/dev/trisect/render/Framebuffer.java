@@ -21,6 +21,8 @@ public final class Framebuffer {
     private final int[] color;
     private final float[] depth;
     private double[] uv;
+    /** Calls of {@link #clearRows} so far: see {@link #clearCount()}. */
+    private final java.util.concurrent.atomic.AtomicLong clears = new java.util.concurrent.atomic.AtomicLong();
 
     /**
      * @param width  pixels, &gt;= 1
@@ -103,6 +105,7 @@ public final class Framebuffer {
      * @param background colour, 0xRRGGBB
      */
     public void clearRows(int y0, int y1, int background) {
+        clears.incrementAndGet();
         int from = y0 * width;
         int to = y1 * width;
         java.util.Arrays.fill(color, from, to, background | 0xFF000000);
@@ -110,6 +113,18 @@ public final class Framebuffer {
         if (uv != null) {
             java.util.Arrays.fill(uv, 3 * from, 3 * to, 0.0);
         }
+    }
+
+    /**
+     * How many times rows of this framebuffer have been cleared ({@link #clearRows}). Drawing a frame
+     * clears the framebuffer first, so code that keeps a reference to one can tell from a changed
+     * count that something has been drawn into it since (as {@code SceneRenderer.pick} does before
+     * reading a frame's UV output). Writes into the arrays themselves are not counted.
+     *
+     * @return the count, from 0
+     */
+    public long clearCount() {
+        return clears.get();
     }
 
     /**

@@ -80,6 +80,7 @@ public final class SceneRenderer implements AutoCloseable {
         Drawn d = new Drawn(scene.snapshot(), camera, settings, frame.width(), frame.height(), draws);
         FrameStats stats = renderer.render(draws, settings, frame);
         d.uvFrame = frame.uv() != null ? frame : null;
+        d.uvClears = frame.clearCount();
         last = d;
         return stats;
     }
@@ -87,7 +88,8 @@ public final class SceneRenderer implements AutoCloseable {
     /**
      * What pixel (x, y) of the last frame drawn shows: the object, its triangle, the 3D point and the
      * texel. It describes the objects as they were drawn, not as they may have moved since. When that
-     * frame recorded UV output ({@link Framebuffer#recordUv}) it is read from there; otherwise the
+     * frame recorded UV output ({@link Framebuffer#recordUv}) and nothing has been drawn into its
+     * framebuffer since ({@link Framebuffer#clearCount()}), it is read from there; otherwise the
      * frame is drawn once more, with UV output, into a framebuffer of its own (the same pixels: drawing
      * is deterministic) — about the cost of one frame.
      *
@@ -107,12 +109,16 @@ public final class SceneRenderer implements AutoCloseable {
             throw new IllegalArgumentException("pixel (" + x + ", " + y + ") is outside the last frame, "
                     + d.width + "x" + d.height);
         }
-        double[] uv = d.uvFrame != null && d.uvFrame.uv() != null ? d.uvFrame.uv() : null;
+        // The caller's framebuffer is read only while it still holds that frame: drawn into since
+        // (by another renderer, or cleared), it would describe another picture.
+        Framebuffer held = d.uvFrame;
+        double[] uv = held != null && held.uv() != null && held.clearCount() == d.uvClears ? held.uv() : null;
         if (uv == null) {
             Framebuffer f = new Framebuffer(d.width, d.height);
             f.recordUv(true);
             renderer.render(d.draws, d.settings.withBorders(false), f);
             d.uvFrame = f;
+            d.uvClears = f.clearCount();
             uv = f.uv();
         }
         int i = 3 * (y * d.width + x);
@@ -179,6 +185,8 @@ public final class SceneRenderer implements AutoCloseable {
         final Draws draws;
         /** The framebuffer holding this frame's UV output, or null. */
         Framebuffer uvFrame;
+        /** {@link Framebuffer#clearCount()} of {@link #uvFrame} right after this frame was drawn into it. */
+        long uvClears;
 
         Drawn(List<Scene.Placed> placed, Camera camera, RenderSettings settings, int width, int height, Draws draws) {
             this.frame = new DrawnFrame(placed, camera, width, height, draws);

@@ -154,6 +154,16 @@ class SceneRendererTest {
             f.recordUv(true);
             r.render(scene, CAMERA, PERSPECTIVE, f);
             assertEquals(p, r.pick(120, 100).orElseThrow());
+            // Something else drawn into that framebuffer since: the pick still describes this
+            // renderer's last frame, not what the framebuffer now holds.
+            Scene other = new Scene();
+            SceneObject moved = new SceneObject(square(), Material.colour(0x00FF00), FACING.withTranslation(-4, 0, -5));
+            other.add(moved);
+            try (SceneRenderer second = new SceneRenderer(1)) {
+                second.render(other, CAMERA, PERSPECTIVE, f);
+            }
+            assertTrue(f.uv()[3 * (100 * 200 + 120) + 2] == 0, "the framebuffer now shows the background there");
+            assertEquals(p, r.pick(120, 100).orElseThrow());
             assertThrows(IllegalArgumentException.class, () -> r.pick(200, 0));
         }
     }
