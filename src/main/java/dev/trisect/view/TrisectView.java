@@ -1,50 +1,27 @@
 package dev.trisect.view;
 
-import dev.trisect.content.SceneAsset;
-import dev.trisect.devtools.DevToolsDialog;
 import dev.trisect.devtools.DevToolsPanel;
-import dev.trisect.metrics.HeatMap;
+import dev.trisect.devtools.DevToolsWindow;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.math.Vec3;
 import dev.trisect.scene.Camera;
-import dev.trisect.scene.Pick;
 import dev.trisect.scene.Scene;
 import dev.trisect.view.internal.FramePainter;
-import dev.trisect.view.internal.FrameReport;
 import dev.trisect.view.internal.FrameSlot;
-import dev.trisect.view.internal.InputState;
 import dev.trisect.view.internal.ViewController;
-import dev.trisect.view.internal.ViewKind;
+import dev.trisect.view.internal.ViewKeys;
+import dev.trisect.view.internal.ViewLifecycle;
 import dev.trisect.view.internal.ViewMouse;
 import dev.trisect.view.internal.ViewState;
 import java.awt.Dimension;
-import java.awt.Graphics2D;
 import java.awt.Graphics;
-import java.awt.Window;
-import java.awt.event.ActionEvent;
-import java.awt.event.ComponentAdapter;
-import java.awt.event.ComponentEvent;
-import java.awt.event.FocusAdapter;
-import java.awt.event.FocusEvent;
-import java.awt.event.HierarchyEvent;
-import java.awt.event.InputEvent;
-import java.awt.event.KeyEvent;
 import java.awt.event.MouseEvent;
-import java.awt.event.WindowAdapter;
-import java.awt.event.WindowEvent;
 import java.awt.image.BufferedImage;
-import java.util.ArrayList;
-import java.util.List;
+import java.util.Arrays;
 import java.util.Objects;
-import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.Consumer;
-import javax.swing.AbstractAction;
 import javax.swing.Action;
-import javax.swing.ActionMap;
-import javax.swing.InputMap;
 import javax.swing.JComponent;
-import javax.swing.KeyStroke;
-import javax.swing.SwingUtilities;
 
 /**
  * A Swing component that shows a {@link Scene} and renders it continuously on a thread of its own.
@@ -84,29 +61,10 @@ public class TrisectView extends JComponent implements AutoCloseable {
     private final transient ViewState state;
     private final transient ViewController controller;
     private final transient ViewMouse mouse;
-    private final transient List<FrameListener> frameListeners = new CopyOnWriteArrayList<>();
-    private final transient List<PickListener> pickListeners = new CopyOnWriteArrayList<>();
-    private final transient List<Action> movement = new ArrayList<>();
-    private transient DevToolsDialog devTools;
-    private transient Window window;
-    private final transient WindowAdapter windowWatcher = new WindowAdapter() {
-        @Override
-        public void windowIconified(WindowEvent e) {
-            state.viewSize(0, 0);
-        }
-
-        @Override
-        public void windowDeiconified(WindowEvent e) {
-            publishSize();
-        }
-
-        @Override
-        public void windowDeactivated(WindowEvent e) {
-            // Key releases that happen elsewhere would never reach us: stop moving.
-            state.input.releaseAll();
-        }
-    };
-    private transient volatile boolean closed;
+    private final transient ViewListeners listeners = new ViewListeners();
+    private final transient ViewKeys keys;
+    private final transient DevToolsWindow devTools;
+    private final transient ViewLifecycle life;
 
     /** The camera a new view starts with: 6 units back and 2 up from the origin, looking at it. */
     public static final Camera DEFAULT_CAMERA = Camera.looking(new Vec3(0, 2, 6), Vec3.ZERO);
@@ -145,25 +103,10 @@ public class TrisectView extends JComponent implements AutoCloseable {
         setPreferredSize(new Dimension(800, 600));
         setOpaque(true);
         setFocusable(true);
-        bindKeys();
-        addComponentListener(new ComponentAdapter() {
-            @Override
-            public void componentResized(ComponentEvent e) {
-                publishSize();
-            }
-        });
-        addHierarchyListener(e -> {
-            if ((e.getChangeFlags() & HierarchyEvent.SHOWING_CHANGED) != 0) {
-                publishSize();
-            }
-        });
-        addFocusListener(new FocusAdapter() {
-            @Override
-            public void focusLost(FocusEvent e) {
-                state.input.releaseAll();
-            }
-        });
-        controller.addFrameListener(this::frameDone);
+        devTools = new DevToolsWindow(this, controller);
+        keys = new ViewKeys(this, controller, Arrays.stream(ViewAction.values()).map(a -> a.id).toList());
+        life = new ViewLifecycle(this, controller, devTools::dispose);
+        controller.addFrameListener(listeners::frameDone);
     }
 
     /** What the controller asks of this component. */
@@ -180,7 +123,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
 
         @Override
         public void showDevTools(boolean on) {
-            showToolsWindow(on);
+            devTools.show(on);
         }
     }
 
@@ -192,7 +135,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * @param scene what to show
      */
     public void setScene(Scene scene) {
-        checkOpen();
+        life.checkOpen();
         state.scene(Objects.requireNonNull(scene, "scene is null: use new Scene() for an empty one"));
     }
 
@@ -212,7 +155,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * @param camera where to look from, world space
      */
     public void setCamera(Camera camera) {
-        checkOpen();
+        life.checkOpen();
         state.camera(Objects.requireNonNull(camera, "camera is null"));
         // A camera put somewhere by the program ends an auto-orbit.
         state.input.orbit(false);
@@ -235,7 +178,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * @param settings how to draw; change the current ones with {@code getRenderSettings().with...}
      */
     public void setRenderSettings(RenderSettings settings) {
-        checkOpen();
+        life.checkOpen();
         Objects.requireNonNull(settings, "settings");
         state.updateSettings(s -> s.withRender(settings));
         controller.settingsChangedLater();
@@ -258,7 +201,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * @param scale greater than 0, at most 1 (the default)
      */
     public void setRenderScale(double scale) {
-        checkOpen();
+        life.checkOpen();
         if (!(scale > 0 && scale <= 1)) {
             throw new IllegalArgumentException("render scale must be greater than 0 and at most 1, got " + scale);
         }
@@ -283,7 +226,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * @param milliseconds the target, greater than 0 and at most 1000; or 0
      */
     public void setFrameTimeTarget(double milliseconds) {
-        checkOpen();
+        life.checkOpen();
         if (milliseconds == 0) {
             state.budget(new ViewState.Budget(false, state.budget().targetMs()));
         } else if (milliseconds > 0 && milliseconds <= 1000) {
@@ -311,13 +254,9 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * @param controls fly (the default), orbit, or {@link CameraControls#NONE} to leave the camera to the program
      */
     public void setCameraControls(CameraControls controls) {
-        checkOpen();
+        life.checkOpen();
         state.controls(ViewState.Controls.valueOf(Objects.requireNonNull(controls, "controls").name()));
-        if (SwingUtilities.isEventDispatchThread()) {
-            enableMovement();
-        } else {
-            SwingUtilities.invokeLater(this::enableMovement);
-        }
+        keys.controlsChanged();
     }
 
     /**
@@ -346,7 +285,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * @param listener told of each frame
      */
     public void addFrameListener(FrameListener listener) {
-        frameListeners.add(Objects.requireNonNull(listener, "listener"));
+        listeners.addFrameListener(listener);
     }
 
     /**
@@ -355,7 +294,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * @param listener one added before
      */
     public void removeFrameListener(FrameListener listener) {
-        frameListeners.remove(listener);
+        listeners.removeFrameListener(listener);
     }
 
     /**
@@ -387,7 +326,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * @param listener told of each click on an object
      */
     public void addPickListener(PickListener listener) {
-        pickListeners.add(Objects.requireNonNull(listener, "listener"));
+        listeners.addPickListener(listener);
     }
 
     /**
@@ -396,40 +335,13 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * @param listener one added before
      */
     public void removePickListener(PickListener listener) {
-        pickListeners.remove(listener);
+        listeners.removePickListener(listener);
     }
 
     /** A click (not a drag): tell the pick listeners what the frame on screen shows there. */
     private void clicked(MouseEvent e) {
-        FrameSlot f = controller.front();
-        if (pickListeners.isEmpty() || f == null || f.drawn == null) {
-            return;
-        }
-        state.picks.request(f, mouse.frameX(f, e.getX()), mouse.frameY(f, e.getY()), pick -> {
-            if (pick != null) {
-                if (SwingUtilities.isEventDispatchThread()) {
-                    tellPickListeners(pick, e);
-                } else {
-                    SwingUtilities.invokeLater(() -> tellPickListeners(pick, e));
-                }
-            }
-        });
-    }
-
-    private void tellPickListeners(Pick pick, MouseEvent click) {
-        for (PickListener l : pickListeners) {
-            l.picked(pick, click);
-        }
-    }
-
-    private void frameDone(FrameReport r) {
-        if (frameListeners.isEmpty()) {
-            return;
-        }
-        FrameInfo info = new FrameInfo(r.frame(), r.width(), r.height(), r.camera(), r.settings(), r.stats(),
-                r.frameMs(), r.fps(), r.warning());
-        for (FrameListener l : frameListeners) {
-            l.frameDrawn(info);
+        if (listeners.hearPicks()) {
+            mouse.pick(e, pick -> listeners.picked(pick, e));
         }
     }
 
@@ -442,17 +354,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
      */
     public BufferedImage frameImage() {
         FrameSlot f = controller.front();
-        if (f == null) {
-            return null;
-        }
-        BufferedImage image = f.frame.toImage();
-        if (f.view == ViewKind.DIFFERENCE && f.heatScale != null) {
-            // A heat map means nothing without its scale.
-            int[] argb = image.getRGB(0, 0, f.width(), f.height(), null, 0, f.width());
-            HeatMap.drawLegend(argb, f.width(), f.height(), f.heatScale);
-            image.setRGB(0, 0, f.width(), f.height(), argb, 0, f.width());
-        }
-        return image;
+        return f == null ? null : FramePainter.image(f);
     }
 
     // ---- Commands and developer tools -----------------------------------------------------
@@ -474,7 +376,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
      */
     public void showDevTools(boolean on) {
         if (on) {
-            checkOpen();
+            life.checkOpen();
         }
         controller.showDevTools(on);
     }
@@ -485,7 +387,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * @return true while it is open
      */
     public boolean isDevToolsShowing() {
-        return devTools != null && devTools.isVisible();
+        return devTools.showing();
     }
 
     /**
@@ -496,20 +398,8 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * @return a new panel of the developer tools
      */
     public JComponent createDevToolsPanel() {
-        checkOpen();
+        life.checkOpen();
         return new DevToolsPanel(controller);
-    }
-
-    private void showToolsWindow(boolean on) {
-        if (on) {
-            if (devTools == null) {
-                devTools = new DevToolsDialog(SwingUtilities.getWindowAncestor(this), controller);
-            }
-            devTools.panel().syncFromSettings();
-            devTools.showBeside(SwingUtilities.getWindowAncestor(this));
-        } else if (devTools != null) {
-            devTools.setVisible(false);
-        }
     }
 
     // ---- Life cycle -------------------------------------------------------------------------
@@ -517,17 +407,7 @@ public class TrisectView extends JComponent implements AutoCloseable {
     /** Stops rendering for good and closes the developer tools window. Any thread; closing twice does nothing. */
     @Override
     public void close() {
-        synchronized (controller) {
-            closed = true;
-            controller.stop();
-        }
-        SwingUtilities.invokeLater(this::disposeTools);
-    }
-
-    private void checkOpen() {
-        if (closed) {
-            throw new IllegalStateException("this TrisectView is closed: make a new one");
-        }
+        life.close();
     }
 
     /**
@@ -536,128 +416,25 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * @return true once {@link #close} was called
      */
     public boolean isClosed() {
-        return closed;
+        return life.closed();
     }
 
     /** Starts the render thread (unless closed): the view is now in a window. */
     @Override
     public void addNotify() {
         super.addNotify();
-        window = SwingUtilities.getWindowAncestor(this);
-        if (window != null) {
-            window.addWindowListener(windowWatcher);
-        }
-        publishSize();
-        synchronized (controller) {
-            // Against a close() from another thread: either it sees this loop and stops it, or this sees it closed.
-            if (!closed) {
-                controller.start();
-            }
-        }
+        life.added();
     }
 
     /** Stops the render thread and closes the developer tools window: the view has left its window. */
     @Override
     public void removeNotify() {
-        controller.stop();
-        if (window != null) {
-            window.removeWindowListener(windowWatcher);
-            window = null;
-        }
-        disposeTools();
-        state.viewSize(0, 0);
+        life.removed();
         super.removeNotify();
-    }
-
-    private void disposeTools() {
-        if (devTools != null) {
-            devTools.dispose();
-            devTools = null;
-            controller.devToolsClosed();
-        }
-    }
-
-    /** Tells the render thread the view's size in device pixels (0 while it does not show). */
-    private void publishSize() {
-        if (!isShowing()) {
-            state.viewSize(0, 0);
-            return;
-        }
-        double scale = getGraphicsConfiguration() == null ? 1
-                : getGraphicsConfiguration().getDefaultTransform().getScaleX();
-        state.viewSize((int) Math.round(getWidth() * scale), (int) Math.round(getHeight() * scale));
     }
 
     @Override
     protected void paintComponent(Graphics g) {
-        FrameSlot front = controller.acquireFront();
-        Graphics2D g2 = (Graphics2D) g.create();
-        try {
-            FramePainter.paint(g2, front, getWidth(), getHeight(), mouse.pinned());
-        } finally {
-            g2.dispose();
-        }
-        if (front != null) {
-            controller.framePainted(front.serial);
-        }
-    }
-
-    // ---- Keys -------------------------------------------------------------------------------
-
-    /** Every command's key, and the movement keys, in the view's WHEN_FOCUSED input map. */
-    private void bindKeys() {
-        InputMap in = getInputMap(WHEN_FOCUSED);
-        ActionMap act = getActionMap();
-        for (ViewAction a : ViewAction.values()) {
-            Action c = action(a);
-            in.put((KeyStroke) c.getValue(Action.ACCELERATOR_KEY), a.id);
-            act.put(a.id, c);
-        }
-        int[][] moves = {
-            {KeyEvent.VK_W, InputState.FORWARD}, {KeyEvent.VK_UP, InputState.FORWARD},
-            {KeyEvent.VK_S, InputState.BACK}, {KeyEvent.VK_DOWN, InputState.BACK},
-            {KeyEvent.VK_A, InputState.LEFT}, {KeyEvent.VK_LEFT, InputState.LEFT},
-            {KeyEvent.VK_D, InputState.RIGHT}, {KeyEvent.VK_RIGHT, InputState.RIGHT},
-            {KeyEvent.VK_E, InputState.UP}, {KeyEvent.VK_PAGE_UP, InputState.UP},
-            {KeyEvent.VK_Q, InputState.DOWN}, {KeyEvent.VK_PAGE_DOWN, InputState.DOWN},
-            {KeyEvent.VK_SHIFT, InputState.FAST}};
-        for (int[] move : moves) {
-            for (int modifiers : new int[] {0, InputEvent.SHIFT_DOWN_MASK}) {
-                String name = "move-" + move[0] + "-" + modifiers;
-                in.put(KeyStroke.getKeyStroke(move[0], modifiers, false), name + "-press");
-                in.put(KeyStroke.getKeyStroke(move[0], modifiers, true), name + "-release");
-                int bit = move[1];
-                act.put(name + "-press", movement(true, bit));
-                act.put(name + "-release", movement(false, bit));
-            }
-        }
-    }
-
-    private Action movement(boolean press, int bit) {
-        Action a = new AbstractAction() {
-            private static final long serialVersionUID = 1L;
-
-            @Override
-            public void actionPerformed(ActionEvent e) {
-                if (press) {
-                    state.input.press(bit);
-                } else {
-                    state.input.release(bit);
-                }
-            }
-        };
-        movement.add(a);
-        return a;
-    }
-
-    /** Movement keys act only with camera controls; without, they are left to the host (a disabled action passes the key on). */
-    private void enableMovement() {
-        boolean on = state.controls() != ViewState.Controls.NONE;
-        if (!on) {
-            state.input.releaseAll();
-        }
-        for (Action a : movement) {
-            a.setEnabled(on);
-        }
+        FramePainter.present(g, controller, getWidth(), getHeight(), mouse.pinned());
     }
 }

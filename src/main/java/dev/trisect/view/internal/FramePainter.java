@@ -9,8 +9,10 @@ import dev.trisect.render.RenderSettings;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
+import java.awt.Graphics;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
+import java.awt.image.BufferedImage;
 import java.util.Locale;
 
 /**
@@ -20,6 +22,24 @@ import java.util.Locale;
  */
 public final class FramePainter {
     private FramePainter() {
+    }
+
+    /**
+     * Paints a view: takes the controller's newest finished frame (handing back the one shown until
+     * now), paints it into the {@code w x h} view (logical pixels) as {@link #paint} does, and tells
+     * the render thread which frame is now on screen ({@code pinned}: the pixel inspector is pinned).
+     */
+    public static void present(Graphics g, ViewController controller, int w, int h, boolean pinned) {
+        FrameSlot front = controller.acquireFront();
+        Graphics2D g2 = (Graphics2D) g.create();
+        try {
+            paint(g2, front, w, h, pinned);
+        } finally {
+            g2.dispose();
+        }
+        if (front != null) {
+            controller.framePainted(front.serial);
+        }
     }
 
     /** Paints {@code front} (or a dark grey view before the first frame) into a {@code w x h} view. */
@@ -43,6 +63,22 @@ public final class FramePainter {
         } else if (front.view == ViewKind.SPLIT) {
             paintDivider(g2, (int) Math.round(front.splitFraction * w), h, splitLabels(front.render.mode()));
         }
+    }
+
+    /**
+     * The frame of {@code front} as a new image, as a host saves it: with its borders, without the
+     * legends painted over it — except in the Difference view, where the heat map gets its scale's
+     * legend drawn in, as {@code trisect compare --heatmap} writes it (a heat map means nothing
+     * without its scale).
+     */
+    public static BufferedImage image(FrameSlot front) {
+        BufferedImage image = front.frame.toImage();
+        if (front.view == ViewKind.DIFFERENCE && front.heatScale != null) {
+            int[] argb = image.getRGB(0, 0, front.width(), front.height(), null, 0, front.width());
+            HeatMap.drawLegend(argb, front.width(), front.height(), front.heatScale);
+            image.setRGB(0, 0, front.width(), front.height(), argb, 0, front.width());
+        }
+        return image;
     }
 
     /**

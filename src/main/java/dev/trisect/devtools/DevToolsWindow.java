@@ -1,0 +1,62 @@
+package dev.trisect.devtools;
+
+import dev.trisect.view.internal.ViewController;
+import javax.swing.JComponent;
+import javax.swing.SwingUtilities;
+
+/**
+ * The developer tools window of one view (F12): a {@link DevToolsDialog} owned by the view's window,
+ * made the first time it is shown and placed beside that window each time, disposed when the view
+ * leaves its window or is closed. Event thread only.
+ */
+public final class DevToolsWindow {
+    private final JComponent view;
+    private final ViewController controller;
+    private DevToolsDialog dialog;
+
+    /**
+     * The tools window of {@code view}, not yet made.
+     *
+     * @param view       the view component, whose window owns the tools window
+     * @param controller the view's controller, which the tools show and change
+     */
+    public DevToolsWindow(JComponent view, ViewController controller) {
+        this.view = view;
+        this.controller = controller;
+    }
+
+    /**
+     * Shows the window beside the view's, with the settings in force, or hides it.
+     *
+     * @param on whether to show it
+     */
+    public void show(boolean on) {
+        if (on) {
+            if (dialog == null) {
+                dialog = new DevToolsDialog(SwingUtilities.getWindowAncestor(view), controller);
+            }
+            dialog.panel().syncFromSettings();
+            dialog.showBeside(SwingUtilities.getWindowAncestor(view));
+        } else if (dialog != null) {
+            dialog.setVisible(false);
+        }
+    }
+
+    /**
+     * Whether the window shows.
+     *
+     * @return true while it is made and visible
+     */
+    public boolean showing() {
+        return dialog != null && dialog.isVisible();
+    }
+
+    /** Disposes the window, if made, and shows the tools' command as off; the next {@link #show} makes a new one. */
+    public void dispose() {
+        if (dialog != null) {
+            dialog.dispose();
+            dialog = null;
+            controller.devToolsClosed();
+        }
+    }
+}
