@@ -1,0 +1,167 @@
+package dev.trisect.mesh;
+
+import dev.trisect.base.InputException;
+import java.io.IOException;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.Map;
+import java.util.Set;
+
+/**
+ * The MTL material libraries an OBJ file names with {@code mtllib}: finding each beside the OBJ file,
+ * reading each once, and what their {@code newmtl} and {@code map_Kd} statements give each material —
+ * its texture file (absolute, normalized, relative names resolved against the MTL's directory), where
+ * that was given ({@code mtl-file:line}) and its texel-coordinate transform ({@code -s}, {@code -o}).
+ * Its messages name the MTL file and line, or the OBJ line of the {@code mtllib} for a library that
+ * cannot be found or read.
+ */
+final class MtlLibraries {
+    private final Path obj;
+    /** The OBJ file's lines, positioned at the {@code mtllib} being read. */
+    private final LineScanner objLines;
+
+    private final Map<String, Path> textures = new HashMap<>();
+    /** Where each material's map_Kd was given, as {@code file:line}. */
+    private final Map<String, String> textureSources = new HashMap<>();
+    /** Each material's map_Kd {@code -s} and {@code -o}: {su, sv, ou, ov}; absent for none. */
+    private final Map<String, float[]> uvTransforms = new HashMap<>();
+    private final Set<Path> librariesRead = new HashSet<>();
+
+    MtlLibraries(Path obj, LineScanner objLines) {
+        this.obj = obj;
+        this.objLines = objLines;
+    }
+
+    /** The texture file of {@code material}, or null when no library read gives it one. */
+    Path texture(String material) {
+        return textures.get(material);
+    }
+
+    /** Where the texture of {@code material} was given, as {@code mtl-file:line}, or null. */
+    String source(String material) {
+        return textureSources.get(material);
+    }
+
+    boolean hasUvTransforms() {
+        return !uvTransforms.isEmpty();
+    }
+
+    /** The texel-coordinate transform {su, sv, ou, ov} of {@code material}, or null for none. */
+    float[] uvTransform(String material) {
+        return uvTransforms.get(material);
+    }
+
+    /** Reads the library {@code name} of the current OBJ line, unless it has been read already. */
+    void read(String name) {
+        Path mtl;
+        try {
+            mtl = obj.resolveSibling(name);
+        } catch (InvalidPathException e) {
+            throw objLines.error("invalid material library name " + LineScanner.quote(name));
+        }
+        if (!librariesRead.add(mtl.toAbsolutePath().normalize())) {
+            return;
+        }
+        LineScanner mtlLines;
+        try {
+            mtlLines = new LineScanner(mtl, mtl.toString());
+        } catch (IOException e) {
+            throw new InputException(objLines.label() + ":" + objLines.lineNumber()
+                    + ": cannot read material library " + LineScanner.quote(name) + ": " + LineScanner.reason(e), e);
+        }
+        try (mtlLines) {
+            readLibrary(mtlLines, mtl);
+        }
+    }
+
+    /**
+     * Reads {@code newmtl} and {@code map_Kd} from an MTL file into {@link #textures}, with where each
+     * was given and its texel-coordinate transform. A material defined again replaces the earlier
+     * definition.
+     */
+    private void readLibrary(LineScanner mtlLines, Path mtl) {
+        String material = null;
+        while (mtlLines.next()) {
+            if (mtlLines.count() == 0) {
+                continue;
+            }
+            if (mtlLines.is(0, "newmtl")) {
+                material = mtlLines.rest(1);
+                if (material.isEmpty()) {
+                    throw mtlLines.error("newmtl without a material name");
+                }
+                textures.remove(material);
+                textureSources.remove(material);
+                uvTransforms.remove(material);
+            } else if (mtlLines.is(0, "map_Kd")) {
+                if (material == null) {
+                    throw mtlLines.error("map_Kd before any newmtl");
+                }
+                mapKd(mtlLines, mtl, material);
+            }
+        }
+    }
+
+    /**
+     * {@code map_Kd [-s u [v [w]]] [-o u [v [w]]] file name}: the options come first (MTL specification,
+     * "Texture map statements"); the file name is the rest of the line, inner blanks kept. Texel
+     * coordinates of the material become {@code (u * su + ou, v * sv + ov)}; w, for 3D textures, is
+     * checked but not used. Any other option is refused rather than silently ignored.
+     */
+    private void mapKd(LineScanner mtlLines, Path mtl, String material) {
+        float[] transform = {1, 1, 0, 0};
+        boolean transformed = false;
+        int i = 1;
+        while (i < mtlLines.count() && mtlLines.byteAt(mtlLines.start(i)) == '-') {
+            String option = mtlLines.text(i);
+            int at;
+            if (option.equals("-s")) {
+                at = 0;
+            } else if (option.equals("-o")) {
+                at = 2;
+            } else {
+                throw mtlLines.error("map_Kd option " + LineScanner.quote(option) + " is not supported (only -s and "
+                        + "-o are)");
+            }
+            i++;
+            int numbers = 0;
+            while (numbers < 3 && i < mtlLines.count()) {
+                float value;
+                try {
+                    value = Float.parseFloat(mtlLines.text(i));
+                } catch (NumberFormatException e) {
+                    break;
+                }
+                if (!Float.isFinite(value)) {
+                    throw mtlLines.error("map_Kd " + option + " needs finite numbers");
+                }
+                if (numbers < 2) {
+                    transform[at + numbers] = value;
+                }
+                numbers++;
+                i++;
+            }
+            if (numbers == 0) {
+                throw mtlLines.error("map_Kd " + option + " needs 1 to 3 numbers");
+            }
+            transformed = true;
+        }
+        String file = mtlLines.rest(i);
+        if (file.isEmpty()) {
+            throw mtlLines.error("map_Kd without a file name");
+        }
+        try {
+            textures.put(material, mtl.resolveSibling(file).toAbsolutePath().normalize());
+        } catch (InvalidPathException e) {
+            throw mtlLines.error("invalid file name " + LineScanner.quote(file));
+        }
+        textureSources.put(material, mtlLines.label() + ":" + mtlLines.lineNumber());
+        if (transformed) {
+            uvTransforms.put(material, transform);
+        } else {
+            uvTransforms.remove(material);
+        }
+    }
+}
