@@ -52,8 +52,6 @@ import javax.swing.WindowConstants;
  * as any program may: only its public API. Built and used on the event thread only.
  */
 final class DemoWindow {
-    /** How a frame's warning (FrameInfo.warning) starts. */
-    private static final String WARNING_MARK = "\u26a0";
     private final JFrame frame;
     private final TrisectView view;
     private final JLabel status = new JLabel(" ");
@@ -247,13 +245,9 @@ final class DemoWindow {
         pace.setText(frozen
                 ? String.format(Locale.ROOT, "%s  FROZEN at frame %d  %s", path, f == null ? 0 : f.number(), size)
                 : String.format(Locale.ROOT, "%s  %.0f fps  %s", path, f == null ? 0 : f.framesPerSecond(), size));
-        String warning = f == null ? null : f.warning();
-        if (warning != null && !warning.equals(statusLine.text())) {
-            status(warning);
-        } else if (warning == null) {
-            // A warning lasts while its frames do: none stays after the frame on screen stopped earning it.
-            statusLine.withdraw(WARNING_MARK);
-        }
+        // A warning lasts while its frames do (none stays after the frame on screen stopped earning
+        // it), and never covers a passing message: StatusLine keeps the two apart.
+        statusLine.warn(f == null ? null : f.warning());
     }
 
     /** The status bar's name of how frames are drawn: the path and the texture filter. */

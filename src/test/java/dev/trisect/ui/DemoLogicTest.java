@@ -36,14 +36,37 @@ class DemoLogicTest {
         JLabel label = new JLabel();
         StatusLine line = new StatusLine(label);
         line.rest("hint");
-        line.pass("Copied", 1000);
-        line.withdraw("\u26a0");
-        assertEquals("Copied", label.getText(), "another passing message stays its time");
-        line.pass("\u26a0 Over budget: median 23.4 ms against 16.7 ms even at your threshold (32.00 px)", 2000);
-        line.withdraw("\u26a0");
+        line.warn("\u26a0 Over budget: median 23.4 ms against 16.7 ms even at your threshold (32.00 px)");
+        assertTrue(label.getText().startsWith("\u26a0 Over budget"), label.getText());
+        line.warn(null);
         assertEquals("hint", label.getText(), "a warning goes as soon as the frame on screen has none (issue 18)");
-        line.withdraw("hint");
-        assertEquals("hint", label.getText(), "the resting hint is never withdrawn");
+        line.pass("Copied", 1000);
+        line.warn(null);
+        assertEquals("Copied", label.getText(), "a passing message is not a warning to withdraw");
+    }
+
+    @Test
+    void aPassingMessageShowsItsTimeWhileAWarningStandsThenTheWarningComesBack() {
+        // The trial's steps: the cap is reached, then Ctrl+S; the frames repeat the warning 4 times a second.
+        JLabel label = new JLabel();
+        StatusLine line = new StatusLine(label);
+        line.rest("hint");
+        String cap = "\u26a0 Cap reached on 3 triangles: 41 pieces filled per pixel";
+        line.warn(cap);
+        assertEquals(cap, label.getText());
+        line.pass("Saved screenshot to /home/u/Pictures/trisect-20261126-164000.png", 1000);
+        for (int k = 0; k < StatusLine.PASSING_NANOS / 250_000_000L; k++) {
+            line.tick(1000 + k * 250_000_000L);
+            line.warn(k % 2 == 0 ? cap : cap + " (again)");
+            assertEquals("Saved screenshot to /home/u/Pictures/trisect-20261126-164000.png", label.getText(),
+                    "the warning, changed or not, waits until the message's time is up");
+        }
+        line.tick(1000 + StatusLine.PASSING_NANOS);
+        assertEquals(cap + " (again)", label.getText(), "then the warning comes back at once, not the hint");
+        line.pass("Copied", 20_000_000_000L);
+        line.warn(null);
+        line.tick(20_000_000_000L + StatusLine.PASSING_NANOS);
+        assertEquals("hint", label.getText(), "a warning that ended meanwhile does not come back");
     }
 
     @Test
