@@ -25,7 +25,9 @@ import javax.swing.SwingUtilities;
 public final class ClickPicking {
     public static void main(String[] args) {
         Scene scene = new Scene();
-        scene.add(new SceneObject(Primitives.plane(12, 12, 6, 6), Material.of(ProceduralTextures.uvGrid(256))));
+        SceneObject floor = new SceneObject(Primitives.plane(12, 12, 6, 6), Material.of(ProceduralTextures.uvGrid(256)));
+        floor.setName("floor");
+        scene.add(floor);
         Material crate = Material.of(ProceduralTextures.crate(128));
         Material grid = Material.of(ProceduralTextures.uvGrid(128));
         Material red = Material.colour(0xCC2222);

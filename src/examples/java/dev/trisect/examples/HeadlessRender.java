@@ -12,7 +12,10 @@ import dev.trisect.texture.ProceduralTextures;
 import java.io.File;
 import javax.imageio.ImageIO;
 
-/** A textured cube on a ground plane, rendered headless to a PNG: {@code HeadlessRender [out.png]}. */
+/**
+ * A textured cube on a ground plane, rendered headless to a PNG: {@code HeadlessRender [out.png]}
+ * (cube.png in the temporary folder by default, not beside the sources); prints where it wrote.
+ */
 public final class HeadlessRender {
     public static void main(String[] args) throws Exception {
         Scene scene = new Scene();
@@ -20,7 +23,8 @@ public final class HeadlessRender {
         scene.add(new SceneObject(Primitives.box(1, 1, 1), Material.of(ProceduralTextures.crate(256)),
                 Transform.translation(0, 0.5, 0)));
         Camera camera = Camera.looking(new Vec3(2.5, 1.8, 3), new Vec3(0, 0.4, 0));
-        ImageIO.write(SceneRenderer.renderImage(scene, camera, 640, 400), "png",
-                new File(args.length > 0 ? args[0] : "cube.png"));
+        File out = args.length > 0 ? new File(args[0]) : new File(System.getProperty("java.io.tmpdir"), "cube.png");
+        ImageIO.write(SceneRenderer.renderImage(scene, camera, 640, 400), "png", out);
+        System.out.println("wrote " + out);
     }
 }

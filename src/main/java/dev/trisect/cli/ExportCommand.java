@@ -36,8 +36,9 @@ final class ExportCommand implements Callable<Integer> {
         }
         Outputs.checkObj("--to", to);
         // The folder is made and checked before the scene is read; the MTL and textures go beside the OBJ.
-        // Should nothing be written after all (a bad scene, a full disk, a signal), the folders made
-        // here are removed again, so that a failed export leaves nothing behind.
+        // Should nothing be written after all (a bad scene, a full disk), the folders made here are
+        // removed again, so that a failed export leaves nothing behind (not after a signal, which runs
+        // only the shutdown hook: see docs/reading-limits.md).
         Path made = Outputs.createParent("--to", to);
         boolean written = false;
         try {

@@ -40,7 +40,8 @@ final class Outputs {
      * @return the outermost folder made (for {@link #removeMadeFolders}), or null when the directory was there
      */
     static Path createParent(String option, Path file) {
-        Path parent = file.toAbsolutePath().getParent();
+        // Normalized, so that the folders made are named as removeMadeFolders walks them (x/./y, x/../y).
+        Path parent = file.toAbsolutePath().normalize().getParent();
         if (parent == null || Files.isDirectory(parent)) {
             return null;
         }
@@ -59,7 +60,9 @@ final class Outputs {
     /**
      * Removes the folders {@link #createParent} made for {@code file}, from its parent up to {@code top},
      * as far as they are empty: a command that wrote nothing leaves no trace. Best effort: a folder
-     * something else has written into since stays, and so does one that cannot be removed.
+     * something else has written into since stays, and so does one that cannot be removed. A folder
+     * left when creating part of the path failed, or after a signal (which runs only the shutdown
+     * hook), stays too.
      *
      * @param top what {@code createParent} returned; null: nothing was made
      */
@@ -67,7 +70,8 @@ final class Outputs {
         if (top == null) {
             return;
         }
-        for (Path folder = file.toAbsolutePath().getParent(); folder != null; folder = folder.getParent()) {
+        for (Path folder = file.toAbsolutePath().normalize().getParent(); folder != null;
+                folder = folder.getParent()) {
             try {
                 Files.delete(folder);
             } catch (java.io.IOException e) {

@@ -119,7 +119,8 @@ public final class Framebuffer {
      * How many times rows of this framebuffer have been cleared ({@link #clearRows}). Drawing a frame
      * clears the framebuffer first, so code that keeps a reference to one can tell from a changed
      * count that something has been drawn into it since (as {@code SceneRenderer.pick} does before
-     * reading a frame's UV output). Writes into the arrays themselves are not counted.
+     * reading a frame's UV output). Writes into the arrays themselves are not counted, and a count
+     * read while another thread draws into the framebuffer may already include that drawing.
      *
      * @return the count, from 0
      */

@@ -80,6 +80,7 @@ public final class SceneRenderer implements AutoCloseable {
         Drawn d = new Drawn(scene.snapshot(), camera, settings, frame.width(), frame.height(), draws);
         FrameStats stats = renderer.render(draws, settings, frame);
         d.uvFrame = frame.uv() != null ? frame : null;
+        d.uvArray = frame.uv();
         d.uvClears = frame.clearCount();
         last = d;
         return stats;
@@ -112,12 +113,15 @@ public final class SceneRenderer implements AutoCloseable {
         // The caller's framebuffer is read only while it still holds that frame: drawn into since
         // (by another renderer, or cleared), it would describe another picture.
         Framebuffer held = d.uvFrame;
-        double[] uv = held != null && held.uv() != null && held.clearCount() == d.uvClears ? held.uv() : null;
+        // The same array too: recording switched off and on again gives the framebuffer a new, empty one.
+        double[] uv = held != null && held.uv() != null && held.uv() == d.uvArray && held.clearCount() == d.uvClears
+                ? held.uv() : null;
         if (uv == null) {
             Framebuffer f = new Framebuffer(d.width, d.height);
             f.recordUv(true);
             renderer.render(d.draws, d.settings.withBorders(false), f);
             d.uvFrame = f;
+            d.uvArray = f.uv();
             d.uvClears = f.clearCount();
             uv = f.uv();
         }
@@ -187,6 +191,8 @@ public final class SceneRenderer implements AutoCloseable {
         Framebuffer uvFrame;
         /** {@link Framebuffer#clearCount()} of {@link #uvFrame} right after this frame was drawn into it. */
         long uvClears;
+        /** The UV output array this frame was drawn into. */
+        double[] uvArray;
 
         Drawn(List<Scene.Placed> placed, Camera camera, RenderSettings settings, int width, int height, Draws draws) {
             this.frame = new DrawnFrame(placed, camera, width, height, draws);

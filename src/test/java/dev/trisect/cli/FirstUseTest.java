@@ -57,6 +57,11 @@ class FirstUseTest {
         assertTrue(r.status() != 0, r.err());
         assertFalse(Files.exists(dir.resolve("kept/new")), "the folders made for the export are gone again");
         assertTrue(Files.isDirectory(dir.resolve("kept")), "a folder that was there stays");
+        // Named with . and .. the same folders are made, and removed.
+        CliRun dotted = CliRun.of("export", "--scene", "no-such-scene", "--to",
+                dir.resolve("kept/a/./b/../c/x.obj").toString());
+        assertTrue(dotted.status() != 0, dotted.err());
+        assertFalse(Files.exists(dir.resolve("kept/a")), "kept/a/c made and removed");
     }
 
     @Test

@@ -164,6 +164,11 @@ class SceneRendererTest {
             }
             assertTrue(f.uv()[3 * (100 * 200 + 120) + 2] == 0, "the framebuffer now shows the background there");
             assertEquals(p, r.pick(120, 100).orElseThrow());
+            // Recording switched off and on: a new, empty UV output, not what was drawn.
+            r.render(scene, CAMERA, PERSPECTIVE, f);
+            f.recordUv(false);
+            f.recordUv(true);
+            assertEquals(p, r.pick(120, 100).orElseThrow());
             assertThrows(IllegalArgumentException.class, () -> r.pick(200, 0));
         }
     }
