@@ -194,4 +194,53 @@ class BorderOverlayTest {
         Framebuffer fb = drawTogether(t, BorderStyle.plain());
         assertEquals(OverlayColours.FALLBACK, fb.color()[31 * W + 40]);
     }
+
+    @Test
+    void aSharedEdgeHiddenForTheLaterPieceTakesTheEarlierPiecesColour() {
+        // Two ordinary pieces folded along their shared top edge (10,10)-(70,10), coloured by split
+        // depth: the earlier (level 0, cyan) faces the viewer at 1/w = 1; the later (level 4, red) lies
+        // under it, its third corner farther off (1/w = 0.2). Both outlines are opaque and unheld, so
+        // the edge, walked once in the later piece's turn, takes BorderOverlay's simple per-pixel step.
+        // Its pixels (row 10, centres at y = 10.5, inside the earlier piece) hold 1/w = 1, where the
+        // later piece's plane reads 0.98: beyond the tolerance, so only the earlier outline shows.
+        ScreenTriangles t = new ScreenTriangles();
+        t.add(10, 10, 1, 0, 0, 70, 10, 1, 0, 0, 40, 50, 1, 0, 0, 0, 0, false, 0);
+        t.add(10, 10, 1, 0, 0, 70, 10, 1, 0, 0, 40, 30, 0.2, 0, 0, 1, 0, false, 4);
+        BorderStyle style = new BorderStyle(BorderStyle.Colouring.DEPTH, false);
+        int earlier = OverlayColours.depth(0, 4);
+        int later = OverlayColours.depth(4, 4);
+        assertTrue(earlier != later);
+        // One band (the edge walked without per-pixel bounds) and bands of one row (with them).
+        for (int bandRows : new int[] {H, 1}) {
+            Framebuffer fb = filled(t);
+            OutlinePlan plan = new OutlinePlan();
+            plan.prepare(t, style, 4, 1, H, bandRows);
+            int shared = sharedEdge(plan);
+            assertEquals(1, plan.owner(shared), "the later piece walks the shared edge");
+            assertEquals(0, plan.earlier(shared), "the earlier piece shares it");
+            BorderOverlay overlay = new BorderOverlay();
+            for (int y = 0, band = 0; y < H; y += bandRows, band++) {
+                overlay.draw(fb, plan, band, 0, y, W, Math.min(H, y + bandRows));
+            }
+            for (int x = 10; x < 70; x++) {
+                assertEquals(earlier, fb.color()[10 * W + x], "shared edge at " + x + ",10, bands of " + bandRows);
+            }
+            for (int c : fb.color()) {
+                assertTrue(c != later, "the hidden piece's outline shows, bands of " + bandRows);
+            }
+        }
+    }
+
+    /** The one edge of {@code plan} that an earlier triangle shares. */
+    private static int sharedEdge(OutlinePlan plan) {
+        int found = -1;
+        for (int k = 0; k < plan.edgeCount(); k++) {
+            if (plan.earlier(k) != OutlinePlan.ALONE) {
+                assertEquals(-1, found, "one shared edge");
+                found = k;
+            }
+        }
+        assertTrue(found >= 0, "the edge is shared");
+        return found;
+    }
 }
