@@ -2,10 +2,7 @@ package dev.trisect.view.internal;
 
 import dev.trisect.metrics.HeatMap;
 import dev.trisect.metrics.HeatScale;
-import dev.trisect.raster.OverlayColours;
-import dev.trisect.render.BorderStyle;
 import dev.trisect.render.RenderMode;
-import dev.trisect.render.RenderSettings;
 import java.awt.BasicStroke;
 import java.awt.Color;
 import java.awt.Font;
@@ -13,7 +10,6 @@ import java.awt.Graphics;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.awt.image.BufferedImage;
-import java.util.Locale;
 
 /**
  * Paints a frame into a view: the image scaled to the view (nearest neighbour, so device pixels map
@@ -53,7 +49,7 @@ public final class FramePainter {
         g2.drawImage(front.image, 0, 0, w, h, null);
         if (front.render != null && front.render.borders() && front.view != ViewKind.DIFFERENCE) {
             // Whenever outlines are drawn, whatever their colour, the legend says what they are.
-            paintBorderLegend(g2, front.render, fallbackPieces(front), h);
+            BorderLegend.of(front.render, fallbackPieces(front)).paint(g2, h);
         }
         if (front.inspection != null) {
             InspectorPainter.paint(g2, front, w, h, pinned);
@@ -133,60 +129,6 @@ public final class FramePainter {
     /** The frame's pieces filled per pixel (outlined in magenta), 0 when unknown. */
     static long fallbackPieces(FrameSlot front) {
         return front.stats == null ? 0 : front.stats.piecesFallback();
-    }
-
-    /** What the magenta outlines are, in the legend: the fallback pieces and why they are filled per pixel. */
-    static String fallbackNote(long pieces) {
-        return pieces > 0 ? String.format(Locale.ROOT, "%d piece%s filled per pixel (slivers, or a cap reached)",
-                pieces, pieces == 1 ? "" : "s") : "filled per pixel (a sliver, or a cap reached)";
-    }
-
-    /**
-     * The outline colours' legend, bottom left: the ramp of split depth or of error bound, or the
-     * yellow of every piece; and the fallback's magenta, with how many pieces of the frame it marks.
-     */
-    private static void paintBorderLegend(Graphics2D g, RenderSettings r, long fallback, int h) {
-        BorderStyle.Colouring colouring = r.borderStyle().colouring();
-        boolean depth = colouring == BorderStyle.Colouring.DEPTH;
-        boolean yellow = colouring == BorderStyle.Colouring.YELLOW;
-        int maxLevel = r.tessellation().maxDepth();
-        int barW = 220;
-        int x = 14;
-        int boxH = yellow ? 42 : 60;
-        int y = h - boxH - 2;
-        g.setFont(g.getFont().deriveFont(11f));
-        String note = fallbackNote(fallback) + (yellow || depth ? ""
-                : r.mode() == RenderMode.SPANS ? "; knot ticks by their segments' bound"
-                : "; yellow = at max error, red = above");
-        String pieces = "piece outline (filled affinely)";
-        int boxW = Math.max(barW, 18 + g.getFontMetrics().stringWidth(note)) + 16;
-        g.setColor(new Color(0, 0, 0, 160));
-        g.fillRoundRect(x - 8, y - 8, boxW, boxH, 10, 10);
-        int fallbackY = y + 32;
-        if (yellow) {
-            g.setColor(new Color(OverlayColours.PIECE, false));
-            g.fillRect(x, y + 2, 12, 10);
-            g.setColor(Color.WHITE);
-            g.drawString(pieces, x + 18, y + 11);
-            fallbackY = y + 16;
-        } else {
-            for (int i = 0; i < barW; i++) {
-                double f = (double) i / (barW - 1);
-                int c = depth ? OverlayColours.depth((int) Math.round(f * maxLevel), maxLevel)
-                        : OverlayColours.bound(f * 1.25);
-                g.setColor(new Color(c, false));
-                g.fillRect(x + i, y, 1, 12);
-            }
-            g.setColor(Color.WHITE);
-            String left = depth ? "level 0" : "bound 0";
-            String right = depth ? "level " + maxLevel + " (cap)" : "\u2265 1.25\u00d7 max error";
-            g.drawString(left, x, y + 25);
-            g.drawString(right, x + barW - g.getFontMetrics().stringWidth(right), y + 25);
-        }
-        g.setColor(new Color(OverlayColours.FALLBACK, false));
-        g.fillRect(x, fallbackY, 12, 10);
-        g.setColor(Color.WHITE);
-        g.drawString(note, x + 18, fallbackY + 9);
     }
 
     private static void label(Graphics2D g, String text, int x, int y) {

@@ -1,8 +1,11 @@
 package dev.trisect.view.internal;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import dev.trisect.raster.OverlayColours;
 import dev.trisect.render.BorderStyle;
 import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
@@ -11,9 +14,14 @@ import java.awt.image.BufferedImage;
 import java.util.Arrays;
 import org.junit.jupiter.api.Test;
 
-/** What the view paints over a frame: the outline legend and the split view's names (issue 18, defect 6). */
+/** What the view paints over a frame: the outline legend (in each path) and the split view's names (issue 18, defect 6). */
 class FramePainterTest {
     private static int changed(RenderSettings render) {
+        return count(render, rgb -> rgb != 0x808080);
+    }
+
+    /** Pixels of the bottom-left 200 x 100 (where the outline legend goes) that {@code test} accepts. */
+    private static int count(RenderSettings render, java.util.function.IntPredicate test) {
         FrameSlot f = new FrameSlot(400, 300);
         Arrays.fill(f.frame.color(), 0xFF808080);
         f.render = render;
@@ -24,7 +32,7 @@ class FramePainterTest {
         int n = 0;
         for (int y = 200; y < 300; y++) {
             for (int x = 0; x < 200; x++) {
-                n += (v.getRGB(x, y) & 0xFFFFFF) != 0x808080 ? 1 : 0;
+                n += test.test(v.getRGB(x, y) & 0xFFFFFF) ? 1 : 0;
             }
         }
         return n;
@@ -36,6 +44,28 @@ class FramePainterTest {
                 .withBorderStyle(new BorderStyle(BorderStyle.Colouring.YELLOW, true));
         assertTrue(changed(yellow) > 500, "a legend in the bottom left, with no fallback piece in the frame");
         assertTrue(changed(yellow.withBorders(false)) == 0, "and none without outlines");
+    }
+
+    @Test
+    void theSpanPathsLegendNamesItsTrianglesAndKnotsNotPieces() {
+        for (BorderStyle.Colouring c : BorderStyle.Colouring.values()) {
+            RenderSettings spans = RenderSettings.defaults().withBorders(true).withMode(RenderMode.SPANS)
+                    .withBorderStyle(new BorderStyle(c, true));
+            BorderLegend legend = BorderLegend.of(spans, 0);
+            String words = legend.swatches().stream().map(BorderLegend.Swatch::text)
+                    .collect(java.util.stream.Collectors.joining(" | ")) + " | " + legend.left() + " | " + legend.right();
+            assertTrue(words.contains("knot") && words.contains("triangle outline"), c + ": " + words);
+            assertFalse(words.contains("piece") || words.contains("affinely") || words.contains("per pixel"),
+                    c + ": the span path fills no pieces: " + words);
+            assertTrue(legend.swatches().stream().noneMatch(s -> s.colour() == OverlayColours.FALLBACK), c.toString());
+            assertEquals(0, count(spans, rgb -> rgb == (OverlayColours.FALLBACK & 0xFFFFFF)), c + ": no magenta drawn");
+            assertTrue(changed(spans) > 300, c + ": but a legend all the same");
+            // The same settings in the tessellated path keep the pieces' legend, magenta entry included.
+            RenderSettings pieces = spans.withMode(RenderMode.TESSELLATED);
+            assertTrue(count(pieces, rgb -> rgb == (OverlayColours.FALLBACK & 0xFFFFFF)) > 50, c.toString());
+        }
+        assertTrue(BorderLegend.of(RenderSettings.defaults().withBorders(true), 3).swatches().stream()
+                .anyMatch(s -> s.text().startsWith("3 pieces filled per pixel")));
     }
 
     @Test

@@ -1,0 +1,105 @@
+package dev.trisect.view.internal;
+
+import dev.trisect.raster.OverlayColours;
+import dev.trisect.render.BorderStyle;
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.RenderSettings;
+import java.awt.Color;
+import java.awt.Graphics2D;
+import java.util.List;
+import java.util.Locale;
+import java.util.function.DoubleToIntFunction;
+
+/**
+ * The border overlay's legend, bottom left of the view: what the outline colours mean. Its content
+ * ({@link #of}) is kept apart from its painting so that a test can read what it says. The tessellated
+ * path's overlay outlines pieces, filled affinely or (magenta) per pixel; the span path fills no pieces
+ * and its overlay outlines triangles and ticks their knots (docs/conventions.md, "Border overlay
+ * colours"), so its legend names those instead and has no magenta entry.
+ *
+ * @param ramp     the bar's colour (ARGB) at a fraction 0..1 of its width, or null for no bar
+ * @param left     the label under the bar's left end
+ * @param right    the label under the bar's right end
+ * @param swatches the lines under the bar, each a colour square and its words
+ */
+record BorderLegend(DoubleToIntFunction ramp, String left, String right, List<Swatch> swatches) {
+    /** A line of the legend: a square of {@code colour} (ARGB) and what outlines of that colour are. */
+    record Swatch(int colour, String text) {
+    }
+
+    /** Width of the bar, logical pixels. */
+    private static final int BAR_WIDTH = 220;
+
+    /**
+     * The legend for outlines drawn with {@code r}.
+     *
+     * @param fallback the frame's pieces filled per pixel (outlined in magenta), 0 when unknown
+     */
+    static BorderLegend of(RenderSettings r, long fallback) {
+        BorderStyle.Colouring colouring = r.borderStyle().colouring();
+        int maxLevel = r.tessellation().maxDepth();
+        if (r.mode() == RenderMode.SPANS) {
+            return switch (colouring) {
+                case YELLOW -> new BorderLegend(null, null, null, List.of(new Swatch(OverlayColours.PIECE,
+                        "triangle outline; ticks: its knots, on one row in 16")));
+                // Nothing is split in this path: every outline and tick has level 0's colour.
+                case DEPTH -> new BorderLegend(null, null, null, List.of(new Swatch(OverlayColours.depth(0, maxLevel),
+                        "triangle outline and knot ticks: level 0 (nothing is split)")));
+                // A segment's bound never exceeds Max error (the knots are spaced so), so the bar ends there.
+                case BOUND -> new BorderLegend(OverlayColours::bound, "knot tick: bound 0", "at max error",
+                        List.of(new Swatch(OverlayColours.PIECE, "triangle outline")));
+            };
+        }
+        Swatch perPixel = new Swatch(OverlayColours.FALLBACK, fallbackNote(fallback) + switch (colouring) {
+            case BOUND -> "; yellow = at max error, red = above";
+            default -> "";
+        });
+        return switch (colouring) {
+            case YELLOW -> new BorderLegend(null, null, null,
+                    List.of(new Swatch(OverlayColours.PIECE, "piece outline (filled affinely)"), perPixel));
+            case DEPTH -> new BorderLegend(f -> OverlayColours.depth((int) Math.round(f * maxLevel), maxLevel),
+                    "level 0", "level " + maxLevel + " (cap)", List.of(perPixel));
+            case BOUND -> new BorderLegend(f -> OverlayColours.bound(f * 1.25), "bound 0",
+                    "\u2265 1.25\u00d7 max error", List.of(perPixel));
+        };
+    }
+
+    /** What the magenta outlines are: the fallback pieces and why they are filled per pixel. */
+    static String fallbackNote(long pieces) {
+        return pieces > 0 ? String.format(Locale.ROOT, "%d piece%s filled per pixel (slivers, or a cap reached)",
+                pieces, pieces == 1 ? "" : "s") : "filled per pixel (a sliver, or a cap reached)";
+    }
+
+    /** Paints the legend into the bottom-left corner of a view {@code h} logical pixels high. */
+    void paint(Graphics2D g, int h) {
+        g.setFont(g.getFont().deriveFont(11f));
+        java.awt.FontMetrics fm = g.getFontMetrics();
+        int x = 14;
+        // The bar and its labels take 32 px; each swatch line 16.
+        int top = ramp != null ? 32 : 2;
+        int boxH = top + 16 * swatches.size() + (ramp != null ? 12 : 8);
+        int y = h - boxH - 2;
+        int widest = BAR_WIDTH;
+        for (Swatch s : swatches) {
+            widest = Math.max(widest, 18 + fm.stringWidth(s.text()));
+        }
+        g.setColor(new Color(0, 0, 0, 160));
+        g.fillRoundRect(x - 8, y - 8, widest + 16, boxH, 10, 10);
+        if (ramp != null) {
+            for (int i = 0; i < BAR_WIDTH; i++) {
+                g.setColor(new Color(ramp.applyAsInt((double) i / (BAR_WIDTH - 1)), false));
+                g.fillRect(x + i, y, 1, 12);
+            }
+            g.setColor(Color.WHITE);
+            g.drawString(left, x, y + 25);
+            g.drawString(right, x + BAR_WIDTH - fm.stringWidth(right), y + 25);
+        }
+        for (int i = 0; i < swatches.size(); i++) {
+            int sy = y + top + 16 * i;
+            g.setColor(new Color(swatches.get(i).colour(), false));
+            g.fillRect(x, sy, 12, 10);
+            g.setColor(Color.WHITE);
+            g.drawString(swatches.get(i).text(), x + 18, sy + 9);
+        }
+    }
+}
