@@ -122,17 +122,13 @@ public final class HeatMap {
             int c = RAMP[(int) Math.round((double) i / (barW - 1) * (RAMP_SIZE - 1))];
             fill(argb, width, height, x + i, y, x + i + 1, y + 10, c);
         }
-        // A label per decade (log) or the ends and middle (linear), the top marked as a floor ("≥").
-        for (HeatScale.Placed p : HeatScale.layout(scale.labels(), barW, t -> BitmapFont.textWidth(plain(t), 1), 12)) {
-            BitmapFont.drawText(argb, width, height, x + p.x(), y + 13, plain(p.text()), 1, 0xFFFFFFFF);
+        // A label per decade (log) or the ends and middle (linear), the top marked as a floor ("≥"), in
+        // the view's words: the font has the "≥" for that (only its capitals show "px" as "PX").
+        for (HeatScale.Placed p : HeatScale.layout(scale.labels(), barW, t -> BitmapFont.textWidth(t, 1), 12)) {
+            BitmapFont.drawText(argb, width, height, x + p.x(), y + 13, p.text(), 1, 0xFFFFFFFF);
         }
         BitmapFont.drawText(argb, width, height, x, y + 13 + font, (scale.logarithmic() ? "LOG" : "LINEAR")
                 + " DISPLACEMENT", 1, 0xFFFFFFFF);
-    }
-
-    /** The bitmap font has no "≥" (nor "<", ">"): "≥ 2 px" is written "2+ px". */
-    private static String plain(String label) {
-        return label.startsWith("\u2265 ") ? label.substring(2).replace(" px", "+ px") : label;
     }
 
     private static void fill(int[] argb, int width, int height, int x0, int y0, int x1, int y1, int colour) {

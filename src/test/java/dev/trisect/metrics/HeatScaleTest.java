@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import dev.trisect.texture.internal.BitmapFont;
 import org.junit.jupiter.api.Test;
 
 /** Linear and logarithmic heat map scales, and the legend drawn into heat map images. */
@@ -62,6 +63,36 @@ class HeatScaleTest {
         int[] tiny = new int[10 * 10];
         HeatMap.drawLegend(tiny, 10, 10, HeatScale.linear(2));
         assertEquals(0, tiny[0], "no legend where there is no room for one");
+    }
+
+    @Test
+    void theImagesLegendSaysWhatTheViewSays() {
+        // The view and docs/demo.md label the top "≥ 2 px"; the image's legend once read "2+ PX".
+        int w = 240;
+        int h = 80;
+        int[] argb = new int[w * h];
+        HeatMap.drawLegend(argb, w, h, HeatScale.linear(2));
+        String top = "\u2265 2 px";
+        int x = 8 + 200 - BitmapFont.textWidth(top, 1);
+        int[] expected = new int[w * h];
+        BitmapFont.drawText(expected, w, h, x, 21, top, 1, 0xFFFFFFFF);
+        int inked = 0;
+        for (int y = 21; y < 21 + BitmapFont.GLYPH_HEIGHT; y++) {
+            for (int i = x - BitmapFont.CELL_WIDTH; i < 8 + 200; i++) {
+                boolean white = argb[y * w + i] == 0xFFFFFFFF;
+                assertEquals(expected[y * w + i] == 0xFFFFFFFF, white, "pixel " + i + "," + y + " of \"" + top + "\"");
+                inked += white ? 1 : 0;
+            }
+        }
+        assertTrue(inked > 30, "the label is drawn: " + inked);
+        for (double t : new double[] {0.1, 2, 17.5, 1000, 1e308, 4.9e-324}) {
+            for (HeatScale scale : new HeatScale[] {HeatScale.log(t), HeatScale.linear(t)}) {
+                for (HeatScale.Label l : scale.labels()) {
+                    assertTrue(l.text().chars().allMatch(c -> BitmapFont.hasGlyph((char) c)),
+                            "drawn as written, no \"?\": " + l.text());
+                }
+            }
+        }
     }
 
     @Test

@@ -4,8 +4,9 @@ package dev.trisect.texture.internal;
  * A tiny built-in bitmap font for labels: 5x7-pixel glyphs in a 6x8-pixel cell, drawn by integer
  * arithmetic only, so the result is identical on every machine (no AWT fonts, no antialiasing).
  *
- * <p>Glyphs exist for {@code 0-9}, {@code A-Z}, space and {@code . , - + : / ( ) % = ?}. Lower-case
- * letters are drawn as upper-case; any other character is drawn as {@code ?}.
+ * <p>Glyphs exist for {@code 0-9}, {@code A-Z}, space, {@code . , - + : / ( ) % = ?} and "≥" (U+2265,
+ * which the heat map legend's top label needs, so that an image says "≥ 2 px" as the view does).
+ * Lower-case letters are drawn as upper-case; any other character is drawn as {@code ?}.
  *
  * <p>Positions are in pixels of an ARGB buffer whose row 0 is the top row, y growing downwards. At
  * scale {@code s} every font pixel becomes an {@code s x s} block.
@@ -20,8 +21,13 @@ public final class BitmapFont {
     /** Height of the inked part of a glyph at scale 1, in pixels. */
     public static final int GLYPH_HEIGHT = 7;
 
-    /** Bit {@code 4 - column} of {@code GLYPHS[c][row]} is set where the glyph is inked; null: no glyph. */
-    private static final byte[][] GLYPHS = new byte[128][];
+    /** The characters beyond ASCII that have a glyph, in the order of their slots after the 128 ASCII ones. */
+    private static final String BEYOND_ASCII = "\u2265";
+    /**
+     * Bit {@code 4 - column} of {@code GLYPHS[slot(c)][row]} is set where the glyph is inked; null: no
+     * glyph. Indexed by slot rather than by character, so one sign beyond ASCII costs one slot, not 8,000.
+     */
+    private static final byte[][] GLYPHS = new byte[128 + BEYOND_ASCII.length()][];
 
     static {
         // Each glyph is seven rows of five columns, top row first: '#' inked, '.' blank.
@@ -73,6 +79,7 @@ public final class BitmapFont {
         glyph('%', "##... ##..# ...#. ..#.. .#... #..## ...##");
         glyph('=', "..... ..... ##### ..... ##### ..... .....");
         glyph('?', ".###. #...# ....# ...#. ..#.. ..... ..#..");
+        glyph('\u2265', "#.... .##.. ...## .##.. #.... ..... #####");
     }
 
     private BitmapFont() {
@@ -94,17 +101,22 @@ public final class BitmapFont {
                 }
             }
         }
-        GLYPHS[c] = bits;
+        GLYPHS[slot(c)] = bits;
+    }
+
+    /** The index of {@code c}'s glyph in GLYPHS, or -1 when it has none. */
+    private static int slot(char c) {
+        return c < 128 ? c : BEYOND_ASCII.indexOf(c) < 0 ? -1 : 128 + BEYOND_ASCII.indexOf(c);
     }
 
     /** Whether {@code c} has a glyph of its own (after lower-case letters are taken as upper-case). */
     public static boolean hasGlyph(char c) {
-        char upper = Character.toUpperCase(c);
-        return upper < GLYPHS.length && GLYPHS[upper] != null;
+        int slot = slot(Character.toUpperCase(c));
+        return slot >= 0 && GLYPHS[slot] != null;
     }
 
     private static byte[] glyphOf(char c) {
-        return hasGlyph(c) ? GLYPHS[Character.toUpperCase(c)] : GLYPHS['?'];
+        return hasGlyph(c) ? GLYPHS[slot(Character.toUpperCase(c))] : GLYPHS['?'];
     }
 
     /**

@@ -16,7 +16,7 @@ import org.junit.jupiter.params.provider.CsvSource;
 
 class BitmapFontTest {
     private static final int INK = 0xFFFFFFFF;
-    private static final String ALL = "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ.,-+:/()%=?";
+    private static final String ALL = "0123456789ABCDEFGHIJKLMNOPQRSTUVWXYZ.,-+:/()%=?\u2265";
 
     /** Renders text at (x, y) into a fresh buffer and returns it as rows of '#' and '.'. */
     private static String picture(int width, int height, int x, int y, String text, int scale) {
