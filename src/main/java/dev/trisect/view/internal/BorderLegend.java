@@ -15,7 +15,8 @@ import java.util.function.DoubleToIntFunction;
  * ({@link #of}) is kept apart from its painting so that a test can read what it says. The tessellated
  * path's overlay outlines pieces, filled affinely or (magenta) per pixel; the span path fills no pieces
  * and its overlay outlines triangles and ticks their knots (docs/conventions.md, "Border overlay
- * colours"), so its legend names those instead and has no magenta entry.
+ * colours"), so its legend names those instead and has no magenta entry; the per-pixel and affine
+ * paths outline whole triangles, and say how they are filled.
  *
  * @param ramp     the bar's colour (ARGB) at a fraction 0..1 of its width, or null for no bar
  * @param left     the label under the bar's left end
@@ -48,6 +49,19 @@ record BorderLegend(DoubleToIntFunction ramp, String left, String right, List<Sw
                 // A segment's bound never exceeds Max error (the knots are spaced so), so the bar ends there.
                 case BOUND -> new BorderLegend(OverlayColours::bound, "knot tick: bound 0", "at max error",
                         List.of(new Swatch(OverlayColours.PIECE, "triangle outline")));
+            };
+        }
+        if (r.mode() != RenderMode.TESSELLATED) {
+            // The per-pixel and affine paths split nothing and have no fallback: whole triangles, level 0.
+            String filled = r.mode() == RenderMode.AFFINE ? "filled affinely" : "filled per pixel, perspective-correct";
+            return switch (colouring) {
+                case YELLOW -> new BorderLegend(null, null, null,
+                        List.of(new Swatch(OverlayColours.PIECE, "triangle outline (" + filled + ")")));
+                case DEPTH -> new BorderLegend(null, null, null, List.of(new Swatch(OverlayColours.depth(0, maxLevel),
+                        "triangle outline: level 0 (nothing is split)")));
+                // The bound is what filling the triangle affinely would be off by, whatever this path does.
+                case BOUND -> new BorderLegend(f -> OverlayColours.bound(f * 1.25), "affine bound 0",
+                        "\u2265 1.25\u00d7 max error", List.of());
             };
         }
         Swatch perPixel = new Swatch(OverlayColours.FALLBACK, fallbackNote(fallback) + switch (colouring) {

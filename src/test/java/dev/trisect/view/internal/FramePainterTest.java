@@ -69,6 +69,27 @@ class FramePainterTest {
     }
 
     @Test
+    void thePerPixelAndAffinePathsLegendsNameTrianglesAndNoFallback() {
+        for (RenderMode mode : new RenderMode[] {RenderMode.PERSPECTIVE, RenderMode.AFFINE}) {
+            for (BorderStyle.Colouring c : BorderStyle.Colouring.values()) {
+                RenderSettings r = RenderSettings.defaults().withBorders(true).withMode(mode)
+                        .withBorderStyle(new BorderStyle(c, true));
+                BorderLegend legend = BorderLegend.of(r, 0);
+                String words = legend.swatches().stream().map(BorderLegend.Swatch::text)
+                        .collect(java.util.stream.Collectors.joining(" | ")) + " | " + legend.left();
+                assertFalse(words.contains("piece"), mode + " " + c + ": nothing is split: " + words);
+                assertTrue(legend.swatches().stream().noneMatch(s -> s.colour() == OverlayColours.FALLBACK),
+                        mode + " " + c);
+                assertTrue(changed(r) > 300, mode + " " + c + ": a legend all the same");
+            }
+            String yellow = BorderLegend.of(RenderSettings.defaults().withBorders(true).withMode(mode)
+                    .withBorderStyle(new BorderStyle(BorderStyle.Colouring.YELLOW, true)), 0).swatches().get(0).text();
+            assertEquals(mode == RenderMode.AFFINE ? "triangle outline (filled affinely)"
+                    : "triangle outline (filled per pixel, perspective-correct)", yellow);
+        }
+    }
+
+    @Test
     void theSplitViewGivesThePerPixelPathOneName() {
         assertArrayEquals(new String[] {"per-pixel (this path)", "per-pixel (reference)"},
                 FramePainter.splitLabels(RenderMode.PERSPECTIVE));
