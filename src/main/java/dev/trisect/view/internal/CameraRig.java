@@ -49,7 +49,8 @@ public final class CameraRig {
 
     /** Whether {@code input} holds anything that would move the camera (held keys, a drag, the wheel, orbiting). */
     static boolean moving(InputState input) {
-        return input.pendingDrag() || input.pendingWheel() || (input.held() & ~InputState.FAST) != 0 || input.orbit();
+        return input.pendingDrag() || input.pendingWheel() || (input.pendingHeld() & ~InputState.FAST) != 0
+                || input.orbit();
     }
 
     /**
@@ -59,7 +60,7 @@ public final class CameraRig {
     public Camera update(InputState input, double dt) {
         int[] drag = input.takeDrag();
         int wheel = input.takeWheel();
-        int held = input.held();
+        int held = input.takeHeld();
         boolean manual = drag[0] != 0 || drag[1] != 0 || wheel != 0
                 || (held & ~InputState.FAST) != 0;
         if (manual && input.orbit()) {

@@ -18,6 +18,12 @@ public final class InputState {
     public static final int FAST = 64;
 
     private final AtomicInteger held = new AtomicInteger();
+    /**
+     * Keys pressed since the render thread last took the held keys: a key pressed and released
+     * between two frames (a quick tap) would otherwise never be seen held, and the camera would not
+     * move at all.
+     */
+    private final AtomicInteger pressed = new AtomicInteger();
     /** Drag in logical pixels, x in the high half and y in the low half, as two packed ints. */
     private final AtomicLong drag = new AtomicLong();
     private final AtomicInteger wheel = new AtomicInteger();
@@ -26,6 +32,7 @@ public final class InputState {
 
     public void press(int key) {
         held.getAndUpdate(v -> v | key);
+        pressed.getAndUpdate(v -> v | key);
     }
 
     public void release(int key) {
@@ -35,10 +42,22 @@ public final class InputState {
     /** Forgets held keys, for when the window loses the keyboard and would miss their release. */
     public void releaseAll() {
         held.set(0);
+        pressed.set(0);
     }
 
+    /** The keys held now. */
     public int held() {
         return held.get();
+    }
+
+    /** The keys held now or pressed since the last call (a tap between two frames moves for one). */
+    public int takeHeld() {
+        return held.get() | pressed.getAndSet(0);
+    }
+
+    /** {@link #takeHeld()} without taking: the keys held now or pressed since it was last called. */
+    public int pendingHeld() {
+        return held.get() | pressed.get();
     }
 
     public void drag(int dx, int dy) {

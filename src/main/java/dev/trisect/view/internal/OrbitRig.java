@@ -50,7 +50,7 @@ public final class OrbitRig {
     public Camera update(InputState input, double dt) {
         int[] drag = input.takeDrag();
         int wheel = input.takeWheel();
-        int held = input.held();
+        int held = input.takeHeld();
         boolean manual = drag[0] != 0 || drag[1] != 0 || wheel != 0 || (held & ~InputState.FAST) != 0;
         if (manual && input.orbit()) {
             input.orbit(false);

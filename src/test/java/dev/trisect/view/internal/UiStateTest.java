@@ -86,6 +86,23 @@ class UiStateTest {
     }
 
     @Test
+    void aKeyTappedBetweenTwoFramesMovesTheCameraForOne() {
+        CameraRig rig = new CameraRig(start());
+        InputState in = new InputState();
+        in.press(InputState.FORWARD);
+        in.release(InputState.FORWARD);
+        assertEquals(0, in.held(), "no longer held");
+        assertTrue(CameraRig.moving(in), "but the frame still moves the camera");
+        Camera c = rig.update(in, 0.1);
+        assertEquals(5 - CameraRig.SPEED * 0.1, c.eye().z(), 1e-9, "one frame's worth");
+        assertFalse(CameraRig.moving(in), "and only one");
+        assertEquals(c.eye(), rig.update(in, 0.1).eye());
+        in.press(InputState.BACK);
+        in.releaseAll();
+        assertFalse(CameraRig.moving(in), "losing the keyboard forgets a tap too");
+    }
+
+    @Test
     void dragTurnsAndResetRestores() {
         CameraRig rig = new CameraRig(start());
         InputState in = new InputState();
