@@ -132,8 +132,19 @@ final class DemoWindow {
         frame.setVisible(true);
         view.requestFocusInWindow();
         refresh.start();
-        statusLine.rest("Fly with W A S D or the arrows, drag to look, wheel for height, Shift for speed. "
-                + "F12: developer tools.");
+        statusLine.rest(HINT);
+    }
+
+    /** The status bar's resting hint. */
+    private static final String HINT = "Fly with W A S D or the arrows, drag to look, wheel for height, Shift for "
+            + "speed. F12: developer tools.";
+
+    /**
+     * Sets what the status bar shows when nothing else does for the scene on screen: a note that stays
+     * as long as the scene (a texture replaced by a placeholder), or the hint with null.
+     */
+    void sceneNote(String note) {
+        statusLine.rest(note == null ? HINT : note);
     }
 
     JFrame frame() {
@@ -302,6 +313,8 @@ final class DemoWindow {
         view.setScene(AssetScenes.scene(s));
         view.setCamera(s.camera());
         frame.setTitle(title(s));
+        // A new scene: the last one's note (a placeholder texture) no longer applies.
+        sceneNote(null);
     }
 
     /** The one-line message the command line would print for this failure. */

@@ -113,6 +113,8 @@ final class FileMenu {
                 try {
                     SceneAsset s = get();
                     window.show(s);
+                    // The placeholder stays on screen, so its warning stays in the bar when the message goes.
+                    window.sceneNote(standingNote(notes));
                     recent.opened(file);
                     rebuildRecent();
                     window.status(loaded(file, s.mesh().triangleCount(), notes));
@@ -131,12 +133,15 @@ final class FileMenu {
         }.execute();
     }
 
+    /** What the status bar keeps showing for a model loaded with these notes, or null for none. */
+    static String standingNote(List<String> notes) {
+        return notes.isEmpty() ? null
+                : "\u26a0 " + notes.get(0) + (notes.size() > 1 ? " (and " + (notes.size() - 1) + " more)" : "");
+    }
+
     /** The status line after a load: what was loaded, and the first note (a placeholder texture...) with how many follow. */
     static String loaded(Path file, int triangles, List<String> notes) {
         String s = "Loaded " + file.getFileName() + " (" + triangles + " triangles)";
-        if (notes.isEmpty()) {
-            return s;
-        }
-        return s + ". \u26a0 " + notes.get(0) + (notes.size() > 1 ? " (and " + (notes.size() - 1) + " more)" : "");
+        return notes.isEmpty() ? s : s + ". " + standingNote(notes);
     }
 }

@@ -133,6 +133,16 @@ class DemoLogicTest {
     @Test
     void aLoadWithNotesSaysSoInTheStatusBar() {
         assertEquals("Loaded m.obj (2 triangles)", FileMenu.loaded(Path.of("m.obj"), 2, java.util.List.of()));
+        // A placeholder texture's warning stays in the bar after the load message has gone.
+        assertEquals(null, FileMenu.standingNote(java.util.List.of()));
+        String note = FileMenu.standingNote(java.util.List.of("m.mtl:2: map_Kd: gone", "x"));
+        assertEquals("\u26a0 m.mtl:2: map_Kd: gone (and 1 more)", note);
+        JLabel bar = new JLabel();
+        StatusLine line = new StatusLine(bar);
+        line.rest(note);
+        line.pass("Loaded m.obj (2 triangles)", 1000);
+        line.tick(1000 + StatusLine.PASSING_NANOS);
+        assertEquals(note, bar.getText());
         assertEquals("Loaded m.obj (2 triangles). \u26a0 m.mtl:2: map_Kd: gone (and 1 more)",
                 FileMenu.loaded(Path.of("m.obj"), 2, java.util.List.of("m.mtl:2: map_Kd: gone", "x")));
     }
