@@ -39,6 +39,11 @@ record BorderLegend(DoubleToIntFunction ramp, String left, String right, List<Sw
     static BorderLegend of(RenderSettings r, long fallback) {
         BorderStyle.Colouring colouring = r.borderStyle().colouring();
         int maxLevel = r.tessellation().maxDepth();
+        if (r.borderStyle().onlyFallback()) {
+            // Only the fallback pieces are outlined, and only the tessellated path has any.
+            return new BorderLegend(null, null, null, r.mode() == RenderMode.TESSELLATED
+                    ? List.of(new Swatch(OverlayColours.FALLBACK, fallbackNote(fallback))) : List.of());
+        }
         if (r.mode() == RenderMode.SPANS) {
             return switch (colouring) {
                 case YELLOW -> new BorderLegend(null, null, null, List.of(new Swatch(OverlayColours.PIECE,
@@ -86,6 +91,9 @@ record BorderLegend(DoubleToIntFunction ramp, String left, String right, List<Sw
 
     /** Paints the legend into the bottom-left corner of a view {@code h} logical pixels high. */
     void paint(Graphics2D g, int h) {
+        if (ramp == null && swatches.isEmpty()) {
+            return;
+        }
         g.setFont(g.getFont().deriveFont(11f));
         java.awt.FontMetrics fm = g.getFontMetrics();
         int x = 14;

@@ -90,6 +90,22 @@ class FramePainterTest {
     }
 
     @Test
+    void withOnlyTheFallbackPiecesOutlinedTheLegendNamesThemAlone() {
+        for (RenderMode mode : RenderMode.values()) {
+            RenderSettings r = RenderSettings.defaults().withBorders(true).withMode(mode)
+                    .withBorderStyle(BorderStyle.fallbackOnly());
+            BorderLegend legend = BorderLegend.of(r, 3);
+            if (mode == RenderMode.TESSELLATED) {
+                assertEquals(1, legend.swatches().size(), legend.toString());
+                assertEquals(OverlayColours.FALLBACK, legend.swatches().get(0).colour());
+                assertTrue(legend.swatches().get(0).text().startsWith("3 pieces filled per pixel"));
+            } else {
+                assertTrue(legend.swatches().isEmpty() && legend.ramp() == null, mode + ": nothing is outlined");
+            }
+        }
+    }
+
+    @Test
     void theSplitViewGivesThePerPixelPathOneName() {
         assertArrayEquals(new String[] {"per-pixel (this path)", "per-pixel (reference)"},
                 FramePainter.splitLabels(RenderMode.PERSPECTIVE));
