@@ -66,6 +66,8 @@ final class DiffCommand implements Callable<Integer> {
         try (OutputBatch batch = new OutputBatch()) {
             if (heatmap != null) {
                 Outputs.checkPng("--heatmap", heatmap);
+                Outputs.checkNotInput(heatmap, "--image", image);
+                Outputs.checkNotInput(heatmap, "--reference", referenceImage);
                 batch.reserve(heatmap);
             }
             return diff(batch);

@@ -94,6 +94,31 @@ final class Outputs {
         }
     }
 
+    /**
+     * An output must not be one of the command's input files ({@code --texture t.png --out t.png}, a
+     * heat map over the image it measures): writing it would replace the model, texture or render the
+     * command was given, which is lost work, not a result. Refused before anything is read or written.
+     * Files are compared by name (absolute, normalized) and, when both exist, as files, so that a link
+     * to the input counts as the input (outputs are written through links).
+     *
+     * @param input the input file named by {@code inputOption}, or null when that option was not given
+     */
+    static void checkNotInput(Path output, String inputOption, Path input) {
+        if (output == null || input == null) {
+            return;
+        }
+        boolean same = output.toAbsolutePath().normalize().equals(input.toAbsolutePath().normalize());
+        try {
+            same = same || (Files.exists(output) && Files.exists(input) && Files.isSameFile(output, input));
+        } catch (java.io.IOException e) {
+            // Neither can be examined: nothing shows them to be one file, and reading or writing will say why.
+        }
+        if (same) {
+            throw InputException.usage(output + " is also the " + inputOption + " input; an output may not "
+                    + "replace an input (write it under another name)");
+        }
+    }
+
     /** An OBJ export target: .obj, since the MTL and textures beside it take its name with other extensions. */
     static void checkObj(String option, Path file) {
         if (!lower(file).endsWith(".obj")) {

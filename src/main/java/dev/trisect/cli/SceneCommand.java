@@ -41,6 +41,10 @@ abstract class SceneCommand implements Callable<Integer> {
             return 0;
         }
         checkOutputs();
+        for (Path out : outputs()) {
+            Outputs.checkNotInput(out, "--obj", frame.obj);
+            Outputs.checkNotInput(out, "--texture", frame.texture);
+        }
         // Every output's folder and writability are checked here, before the scene is even read.
         try (OutputBatch batch = new OutputBatch()) {
             for (Path out : outputs()) {

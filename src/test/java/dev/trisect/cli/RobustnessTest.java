@@ -1,5 +1,6 @@
 package dev.trisect.cli;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -142,5 +143,36 @@ class RobustnessTest {
         Files.writeString(obj, "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n");
         status(1, CliRun.of("render", "--size", "8x8", "--obj", obj.toString(), "--out",
                 dir.resolve("o.png").toString()), "m.mtl:3: map_Kd");
+    }
+
+    @Test
+    void anOutputThatIsAnInputIsRefusedAndTheInputKept() throws IOException {
+        // Found by the command-line trial: each of these replaced its input with the output, exit 0.
+        Path tex = dir.resolve("t.ppm");
+        byte[] texture = "P6\n2 1\n255\n\377\0\0\0\0\377".getBytes(StandardCharsets.ISO_8859_1);
+        Files.write(tex, texture);
+        Path obj = dir.resolve("m.obj");
+        String model = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n";
+        Files.writeString(obj, model);
+        status(2, CliRun.of("render", "--size", "8x8", "--obj", obj.toString(), "--texture", tex.toString(),
+                "--out", tex.toString()), "is also the --texture input");
+        // Outputs are written through links, so a link to the texture is the texture.
+        Path link = Files.createSymbolicLink(dir.resolve("link.ppm"), tex);
+        status(2, CliRun.of("compare", "--size", "8x8", "--obj", obj.toString(), "--texture", tex.toString(),
+                "--out", link.toString()), "is also the --texture input");
+        status(2, CliRun.of("export", "--obj", obj.toString(), "--texture", tex.toString(), "--to",
+                dir.resolve("sub/../m.obj").toString()), "is also the --obj input");
+        assertArrayEquals(texture, Files.readAllBytes(tex));
+        assertEquals(model, Files.readString(obj));
+
+        Path png = dir.resolve("r.png");
+        Path uv = dir.resolve("r.pfm");
+        CliRun r = CliRun.of("render", "--size", "8x8", "--out", png.toString(), "--uv-out", uv.toString());
+        assertEquals(0, r.status(), r.err());
+        byte[] image = Files.readAllBytes(png);
+        status(2, CliRun.of("diff", "--image", png.toString(), "--uv", uv.toString(), "--reference", png.toString(),
+                "--reference-uv", uv.toString(), "--heatmap", png.toString()), "is also the --image input");
+        assertArrayEquals(image, Files.readAllBytes(png));
+        assertEquals(List.of("link.ppm", "m.obj", "r.pfm", "r.png", "t.ppm"), listing(dir), "nothing else is written");
     }
 }
