@@ -102,6 +102,12 @@ final class BenchCommand extends SceneCommand {
         if (warmup < 0 || warmup > MAX_FRAMES) {
             throw InputException.usage("--warmup must be between 0 and " + MAX_FRAMES + ", got " + warmup);
         }
+        if (common.spec.commandLine().getParseResult().hasMatchedOption("--mode")) {
+            // bench measures the paths of --modes (the sweep and the budget run their own): a --mode
+            // here would be silently ignored, and the user would read times of paths they did not ask for.
+            throw InputException.usage("--mode does not apply to bench: choose the paths to measure with --modes "
+                    + "(e.g. --modes " + path.mode.id() + ")");
+        }
         if (sweep && targetMs != null) {
             throw InputException.usage("--sweep and --target-ms do not go together");
         }

@@ -148,4 +148,14 @@ class BenchCommandTest {
         assertTrue(r.errLine().contains("--sweep"), r.err());
         assertFalse(Files.exists(dir.resolve("p.png")));
     }
+
+    @Test
+    void modeIsRefusedRatherThanIgnored() {
+        // Found by the command-line trial: bench --mode affine measured all four paths, exit 0.
+        CliRun r = CliRun.of("bench", "--scene", "floor", "--size", "16x16", "--frames", "1", "--warmup", "0",
+                "--mode", "affine");
+        assertEquals(2, r.status(), r.out());
+        assertTrue(r.errLine().contains("--modes affine"), r.err());
+        assertEquals("", r.out());
+    }
 }
