@@ -44,6 +44,10 @@ public final class Cli {
         for (Object command : moreCommands) {
             cl.addSubcommand(command);
         }
+        // Every command's help offers -V, --version; without the root's provider a subcommand printed nothing.
+        for (CommandLine sub : cl.getSubcommands().values()) {
+            sub.getCommandSpec().versionProvider(new Version());
+        }
         cl.setOut(out);
         cl.setErr(err);
         cl.setParameterExceptionHandler((ex, arguments) -> {

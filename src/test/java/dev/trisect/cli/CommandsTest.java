@@ -218,6 +218,19 @@ class CommandsTest {
         }
     }
 
+    @Test
+    void everyCommandPrintsTheVersionItsHelpOffers() {
+        // Found by the command-line trial: trisect render --version printed nothing, exit 0.
+        CliRun root = CliRun.of("--version");
+        assertEquals(0, root.status(), root.err());
+        assertTrue(root.out().startsWith("trisect "), root.out());
+        for (String command : new String[] {"render", "compare", "diff", "export", "bench"}) {
+            CliRun r = CliRun.of(command, "-V");
+            assertEquals(0, r.status(), r.err());
+            assertEquals(root.out(), r.out(), command + " -V");
+        }
+    }
+
     private static String[] cat(String[] a, String[] b) {
         String[] r = java.util.Arrays.copyOf(a, a.length + b.length);
         System.arraycopy(b, 0, r, a.length, b.length);
