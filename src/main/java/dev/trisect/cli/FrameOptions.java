@@ -9,16 +9,21 @@ import dev.trisect.render.CullMode;
 import dev.trisect.scene.Camera;
 import java.nio.file.Path;
 import java.util.function.Consumer;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 /** What to draw and from where: scene, camera, frame size, culling, background. Shared by the commands. */
 final class FrameOptions {
+    @Spec(Spec.Target.MIXEE)
+    CommandSpec spec;
+
     @Option(names = "--obj", paramLabel = "FILE",
             description = "Wavefront OBJ file to render (its mtllib/map_Kd supply textures unless --texture is given).")
     Path obj;
 
     @Option(names = "--scene", paramLabel = "NAME",
-            description = "Built-in scene to render, used when --obj is not given (default: ${DEFAULT-VALUE}; "
+            description = "Built-in scene to render, not with --obj (default: ${DEFAULT-VALUE}; "
                     + "see --list-scenes).", defaultValue = "floor")
     String scene;
 
@@ -88,6 +93,10 @@ final class FrameOptions {
     /** Loads the scene the options name; notes for the user go to {@code notes}. */
     SceneAsset loadScene(Consumer<String> notes) {
         if (obj != null) {
+            // Both name what to draw: taking one and silently dropping the other would draw what was not asked.
+            if (spec.commandLine().getParseResult().hasMatchedOption("--scene")) {
+                throw InputException.usage("--obj and --scene both name what to draw; give one of them");
+            }
             return SceneLoader.load(obj, texture, notes);
         }
         if (texture != null) {

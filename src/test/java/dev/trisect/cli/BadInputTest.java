@@ -170,6 +170,17 @@ class BadInputTest {
     }
 
     @Test
+    void objAndSceneTogetherAreRefused() throws IOException {
+        // Found by the command-line trial: --scene was silently dropped and the OBJ drawn, exit 0.
+        Path p = obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        usage(render("--obj", p.toString(), "--scene", "demo"), "--obj and --scene");
+        assertFalse(Files.exists(dir.resolve("o.png")));
+        usage(CliRun.of("export", "--scene", "floor", "--obj", p.toString(), "--to", dir.resolve("e.obj").toString()),
+                "--obj and --scene");
+        assertEquals(0, render("--obj", p.toString()).status(), "--obj alone still draws the OBJ");
+    }
+
+    @Test
     void missingMapKdNamesTheTexture() throws IOException {
         Files.writeString(dir.resolve("m.mtl"), "newmtl a\nmap_Kd gone.png\n");
         Path p = obj("mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n");
