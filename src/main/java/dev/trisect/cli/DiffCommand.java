@@ -66,8 +66,8 @@ final class DiffCommand implements Callable<Integer> {
         try (OutputBatch batch = new OutputBatch()) {
             if (heatmap != null) {
                 Outputs.checkPng("--heatmap", heatmap);
-                Outputs.checkNotInput(heatmap, "--image", image);
-                Outputs.checkNotInput(heatmap, "--reference", referenceImage);
+                Outputs.checkNotInput(heatmap, "the --image input", image);
+                Outputs.checkNotInput(heatmap, "the --reference input", referenceImage);
                 batch.reserve(heatmap);
             }
             return diff(batch);

@@ -35,7 +35,7 @@ final class ExportCommand implements Callable<Integer> {
             throw dev.trisect.base.InputException.usage("--to FILE.obj is required");
         }
         Outputs.checkObj("--to", to);
-        Outputs.checkNotInput(to, "--obj", frame.obj);
+        Outputs.checkNotInput(to, "the --obj input", frame.obj);
         // The folder is made and checked before the scene is read; the MTL and textures go beside the OBJ.
         // Should nothing be written after all (a bad scene, a full disk), the folders made here are
         // removed again, so that a failed export leaves nothing behind (not after a signal, which runs

@@ -101,9 +101,10 @@ final class Outputs {
      * Files are compared by name (absolute, normalized) and, when both exist, as files, so that a link
      * to the input counts as the input (outputs are written through links).
      *
-     * @param input the input file named by {@code inputOption}, or null when that option was not given
+     * @param input the input file, or null when there is none (its option was not given)
+     * @param what  the input in words, for the message: "the --texture input"
      */
-    static void checkNotInput(Path output, String inputOption, Path input) {
+    static void checkNotInput(Path output, String what, Path input) {
         if (output == null || input == null) {
             return;
         }
@@ -114,7 +115,7 @@ final class Outputs {
             // Neither can be examined: nothing shows them to be one file, and reading or writing will say why.
         }
         if (same) {
-            throw InputException.usage(output + " is also the " + inputOption + " input; an output may not "
+            throw InputException.usage(output + " is also " + what + "; an output may not "
                     + "replace an input (write it under another name)");
         }
     }

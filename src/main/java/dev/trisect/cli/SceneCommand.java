@@ -42,8 +42,8 @@ abstract class SceneCommand implements Callable<Integer> {
         }
         checkOutputs();
         for (Path out : outputs()) {
-            Outputs.checkNotInput(out, "--obj", frame.obj);
-            Outputs.checkNotInput(out, "--texture", frame.texture);
+            Outputs.checkNotInput(out, "the --obj input", frame.obj);
+            Outputs.checkNotInput(out, "the --texture input", frame.texture);
         }
         // Every output's folder and writability are checked here, before the scene is even read.
         try (OutputBatch batch = new OutputBatch()) {
@@ -53,6 +53,12 @@ abstract class SceneCommand implements Callable<Integer> {
                 }
             }
             SceneAsset scene = frame.loadScene(common::note);
+            // The textures an OBJ's materials name are known only now, before any rendering.
+            for (Path out : outputs()) {
+                for (Path in : scene.inputs()) {
+                    Outputs.checkNotInput(out, "an input of " + scene.name() + " (a texture it names)", in);
+                }
+            }
             return run(scene, frame.camera(scene), batch);
         }
     }

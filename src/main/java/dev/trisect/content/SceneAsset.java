@@ -15,17 +15,26 @@ import java.util.List;
  * @param textures    one texture per material, in the mesh's material order
  * @param camera      the scene's own camera, used when the user gives none
  * @param source      the OBJ file it was read from, or null for a built-in scene
+ * @param inputs      every file it was read from (the OBJ and its textures; the MTL files are not
+ *                    listed), absolute: what an output must not replace. Empty for a built-in scene.
  */
 public record SceneAsset(String name, String description, Mesh mesh, List<Texture> textures, Camera camera,
-                    java.nio.file.Path source) {
+                    java.nio.file.Path source, List<java.nio.file.Path> inputs) {
 
     /** A built-in scene (no source file). */
     public SceneAsset(String name, String description, Mesh mesh, List<Texture> textures, Camera camera) {
         this(name, description, mesh, textures, camera, null);
     }
 
+    /** A scene read from {@code source} alone (or built in, when it is null). */
+    public SceneAsset(String name, String description, Mesh mesh, List<Texture> textures, Camera camera,
+                      java.nio.file.Path source) {
+        this(name, description, mesh, textures, camera, source, source == null ? List.of() : List.of(source));
+    }
+
     public SceneAsset {
         textures = List.copyOf(textures);
+        inputs = List.copyOf(inputs);
         if (textures.size() != mesh.materialCount()) {
             throw new IllegalArgumentException(name + ": " + mesh.materialCount() + " materials but "
                     + textures.size() + " textures");

@@ -2,6 +2,7 @@ package dev.trisect.content;
 
 import dev.trisect.math.Vec3;
 import dev.trisect.mesh.Mesh;
+import dev.trisect.mesh.ObjModel;
 import dev.trisect.mesh.ObjReader;
 import dev.trisect.scene.Camera;
 import dev.trisect.scene.Material;
@@ -11,6 +12,7 @@ import dev.trisect.texture.TextureReader;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Objects;
 import java.util.function.Consumer;
 
 /** Makes a {@link SceneAsset} from a user's Wavefront OBJ file. */
@@ -39,21 +41,25 @@ public final class SceneLoader {
     public static SceneAsset load(Path obj, Path texture, Consumer<String> notes, boolean placeholders) {
         Mesh mesh;
         List<Texture> textures = new ArrayList<>();
+        List<Path> inputs = new ArrayList<>(List.of(obj.toAbsolutePath()));
         if (texture != null) {
             mesh = ObjReader.read(obj, false).mesh();
             Texture t = TextureReader.read(texture);
             for (int i = 0; i < mesh.materialCount(); i++) {
                 textures.add(t);
             }
+            inputs.add(texture.toAbsolutePath());
         } else {
-            SceneObject object = SceneObject.load(obj, notes, placeholders);
+            ObjModel model = ObjReader.read(obj, true);
+            SceneObject object = SceneObject.load(model, String.valueOf(obj.getFileName()), notes, placeholders);
             mesh = object.mesh();
             for (Material m : object.materials()) {
                 textures.add(m.texture());
             }
+            model.materialTextures().stream().filter(Objects::nonNull).distinct().forEach(inputs::add);
         }
         return new SceneAsset(String.valueOf(obj.getFileName()), "OBJ file " + obj, mesh, textures, frame(mesh),
-                obj.toAbsolutePath());
+                obj.toAbsolutePath(), inputs);
     }
 
     /**

@@ -181,7 +181,23 @@ public final class SceneObject extends Node {
      * @throws InputException for anything else unreadable, with a one-line message naming the file and line
      */
     public static SceneObject load(Path obj, Consumer<String> notes, boolean placeholders) {
-        ObjModel model = ObjReader.read(obj, true);
+        return load(ObjReader.read(obj, true), String.valueOf(obj.getFileName()), notes, placeholders);
+    }
+
+    /**
+     * As {@link #load(Path, Consumer, boolean)}, from a model already read (with its materials, {@link
+     * ObjReader#read ObjReader.read(obj, true)}), for a caller that also needs what the file named, such
+     * as its texture files.
+     *
+     * @param model        the OBJ file as read, with each material's {@code map_Kd} file
+     * @param name         the object's name, and the file named in notes (the OBJ file's name)
+     * @param notes        receives one-line remarks for the user
+     * @param placeholders whether an unreadable texture gets a placeholder (true) or rejects the model
+     * @return the object
+     * @throws InputException for a texture that cannot be read (without {@code placeholders}), with a
+     *                        one-line message naming the MTL file and line
+     */
+    public static SceneObject load(ObjModel model, String name, Consumer<String> notes, boolean placeholders) {
         Mesh mesh = model.mesh();
         List<Material> materials = new ArrayList<>();
         Map<Path, Material> loaded = new HashMap<>();
@@ -211,11 +227,11 @@ public final class SceneObject extends Node {
             }
         }
         if (!untextured.isEmpty()) {
-            notes.accept(obj.getFileName() + ": no texture for material" + (untextured.size() > 1 ? "s " : " ")
+            notes.accept(name + ": no texture for material" + (untextured.size() > 1 ? "s " : " ")
                     + String.join(", ", untextured) + " (no --texture and no map_Kd); using the built-in UV grid");
         }
         SceneObject o = new SceneObject(mesh, materials);
-        o.setName(String.valueOf(obj.getFileName()));
+        o.setName(name);
         return o;
     }
 

@@ -175,4 +175,26 @@ class RobustnessTest {
         assertArrayEquals(image, Files.readAllBytes(png));
         assertEquals(List.of("link.ppm", "m.obj", "r.pfm", "r.png", "t.ppm"), listing(dir), "nothing else is written");
     }
+
+    @Test
+    void anOutputOverATextureTheObjNamesIsRefused() throws IOException {
+        // Found by the command-line trial: render --obj m.obj --out t.ppm replaced the map_Kd texture t.ppm.
+        Path tex = dir.resolve("t.ppm");
+        byte[] texture = "P6\n2 1\n255\n\377\0\0\0\0\377".getBytes(StandardCharsets.ISO_8859_1);
+        Files.write(tex, texture);
+        Files.writeString(dir.resolve("m.mtl"), "newmtl a\nmap_Kd t.ppm\n");
+        Path obj = dir.resolve("m.obj");
+        Files.writeString(obj, "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl a\n"
+                + "f 1/1 2/2 3/3\n");
+        status(2, CliRun.of("render", "--size", "8x8", "--obj", obj.toString(), "--out", tex.toString()),
+                "is also an input of m.obj");
+        status(2, CliRun.of("compare", "--size", "8x8", "--obj", obj.toString(), "--heatmap",
+                dir.resolve("x/../t.ppm").toString().replace(".ppm", ".png"), "--out", tex.toString()),
+                "is also an input of m.obj");
+        assertArrayEquals(texture, Files.readAllBytes(tex));
+        assertEquals(List.of("m.mtl", "m.obj", "t.ppm"), listing(dir), "nothing else is written");
+        CliRun ok = CliRun.of("render", "--size", "8x8", "--obj", obj.toString(), "--out",
+                dir.resolve("r.ppm").toString());
+        assertEquals(0, ok.status(), ok.err());
+    }
 }
