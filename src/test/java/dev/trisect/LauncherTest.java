@@ -65,6 +65,17 @@ class LauncherTest {
     }
 
     @Test
+    void theDemoPrintsTheVersionAsEveryCommandDoes() throws Exception {
+        // Found by the command-line trial: trisect demo --version printed nothing, exit 0.
+        Run root = launch("--version");
+        assertEquals(0, root.status(), root.err());
+        assertTrue(root.out().startsWith("trisect "), root.out());
+        Run demo = launch("demo", "--version");
+        assertEquals(0, demo.status(), demo.err());
+        assertEquals(root.out(), demo.out());
+    }
+
+    @Test
     void argumentsRunTheCommandLine() throws Exception {
         Run r = launch("render", "--list-scenes");
         assertEquals(0, r.status(), r.err());

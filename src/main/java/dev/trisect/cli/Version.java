@@ -1,12 +1,12 @@
 package dev.trisect.cli;
 
+import dev.trisect.base.internal.BuildVersion;
 import picocli.CommandLine.IVersionProvider;
 
-/** The version from the jar's manifest, or "development" when run from classes. */
+/** The version from the jar's manifest, or "development" when run from classes ({@link BuildVersion}). */
 final class Version implements IVersionProvider {
     @Override
     public String[] getVersion() {
-        String v = Version.class.getPackage().getImplementationVersion();
-        return new String[] {"trisect " + (v == null ? "development build" : v)};
+        return new String[] {BuildVersion.line()};
     }
 }

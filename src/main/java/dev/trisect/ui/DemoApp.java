@@ -2,6 +2,7 @@ package dev.trisect.ui;
 
 import com.formdev.flatlaf.FlatDarkLaf;
 import dev.trisect.base.InputException;
+import dev.trisect.base.internal.BuildVersion;
 import dev.trisect.content.DemoScenes;
 import dev.trisect.content.SceneAsset;
 import dev.trisect.content.SceneLoader;
@@ -23,7 +24,7 @@ import picocli.CommandLine;
  * Launches the desktop demo. Without a display it prints one line pointing to the headless
  * {@code render} command and returns status 1.
  */
-@Command(name = "demo", mixinStandardHelpOptions = true, sortOptions = false,
+@Command(name = "demo", mixinStandardHelpOptions = true, versionProvider = DemoApp.Version.class, sortOptions = false,
         description = "Open the desktop demo: fly through a textured scene; F12 opens the developer tools.")
 public final class DemoApp implements Callable<Integer> {
     @Option(names = "--scene", paramLabel = "NAME", defaultValue = "demo",
@@ -61,6 +62,14 @@ public final class DemoApp implements Callable<Integer> {
 
     @Option(names = "--report", paramLabel = "FILE", description = "With --soak: also write the report here (JSON).")
     Path report;
+
+    /** What -V, --version prints, as every command does (without it, nothing). */
+    static final class Version implements CommandLine.IVersionProvider {
+        @Override
+        public String[] getVersion() {
+            return new String[] {BuildVersion.line()};
+        }
+    }
 
     /** Opens the --report file; set by {@link #launch}. */
     private ReportFile.Opener reports;
