@@ -11,8 +11,8 @@ final class CommonOptions {
     @Spec(Spec.Target.MIXEE)
     CommandSpec spec;
 
-    /** Most threads a renderer may be given. */
-    static final int MAX_THREADS = 256;
+    /** Most threads a renderer may be given: the renderer's own limit. */
+    static final int MAX_THREADS = FrameRenderer.MAX_THREADS;
 
     /** Render threads, or null for one per processor. */
     Integer threads;
@@ -46,7 +46,7 @@ final class CommonOptions {
     }
 
     FrameRenderer renderer() {
-        int n = threads == null ? Math.min(MAX_THREADS, Runtime.getRuntime().availableProcessors()) : threads;
+        int n = threads == null ? FrameRenderer.defaultThreads() : threads;
         return new FrameRenderer(n);
     }
 }

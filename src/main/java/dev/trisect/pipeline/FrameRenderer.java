@@ -65,20 +65,36 @@ public final class FrameRenderer implements AutoCloseable {
     /** Set by {@link #close}: every later call throws instead of reading what the closed renderer kept. */
     private volatile boolean closed;
 
-    /** A renderer using every available processor. */
+    /**
+     * Most threads a renderer draws with. Each is a platform thread of its own, started at once: an
+     * unchecked count (a typo, a size mistaken for a count) would exhaust the process's threads before
+     * any frame, so counts beyond it are refused, as the command line's {@code --threads} is.
+     */
+    public static final int MAX_THREADS = 256;
+
+    /** A renderer using every available processor, up to {@link #MAX_THREADS}. */
     public FrameRenderer() {
-        this(Runtime.getRuntime().availableProcessors());
+        this(defaultThreads());
     }
 
-    /** @param threads threads to render with, &gt;= 1 (the calling thread is one of them) */
+    /** @param threads threads to render with, 1..{@link #MAX_THREADS} (the calling thread is one of them) */
     public FrameRenderer(int threads) {
-        if (threads < 1) {
-            throw new IllegalArgumentException("threads must be at least 1, got " + threads);
+        if (threads < 1 || threads > MAX_THREADS) {
+            throw new IllegalArgumentException("threads must be between 1 and " + MAX_THREADS + ", got " + threads);
         }
         this.pool = new WorkerPool(threads, "trisect-render");
         this.geometry = new FrameGeometry(threads);
         this.bands = new BandPass(threads);
         this.outlines = new Outlines(threads);
+    }
+
+    /**
+     * One thread per available processor, at most {@link #MAX_THREADS}.
+     *
+     * @return the default thread count
+     */
+    public static int defaultThreads() {
+        return Math.min(MAX_THREADS, Runtime.getRuntime().availableProcessors());
     }
 
     /** Threads this renderer fills frames with. */

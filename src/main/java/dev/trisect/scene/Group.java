@@ -39,8 +39,9 @@ public sealed class Group extends Node permits Scene {
      *
      * @param nodes the nodes to add, in order
      * @return this group, for chaining
-     * @throws NullPointerException     for a null node
-     * @throws IllegalArgumentException for a {@link Scene}, or a group that holds this one (a cycle)
+     * @throws NullPointerException     for a null node (and nothing is added)
+     * @throws IllegalArgumentException for a {@link Scene}, or a group that holds this one (a cycle); nothing
+     *                                  is added
      */
     public Group add(Node... nodes) {
         for (Node n : nodes) {
@@ -48,6 +49,7 @@ public sealed class Group extends Node permits Scene {
         }
         LOCK.lock();
         try {
+            // Every node is checked before any is added, so that a refused call changes nothing.
             for (Node n : nodes) {
                 if (n instanceof Scene) {
                     throw new IllegalArgumentException("a scene cannot be added to a group");
@@ -57,6 +59,8 @@ public sealed class Group extends Node permits Scene {
                         throw new IllegalArgumentException(n + " holds " + this + ": adding it would make a cycle");
                     }
                 }
+            }
+            for (Node n : nodes) {
                 if (n.parent != null) {
                     n.parent.detach(n);
                 }

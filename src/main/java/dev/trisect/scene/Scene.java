@@ -3,6 +3,7 @@ package dev.trisect.scene;
 import dev.trisect.math.Mat4;
 import dev.trisect.mesh.Mesh;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 
 /**
@@ -76,7 +77,7 @@ public final class Scene extends Group {
         } finally {
             LOCK.unlock();
         }
-        return out;
+        return Collections.unmodifiableList(out);
     }
 
     private static void collect(Group group, Mat4 world, List<Placed> out) {
@@ -106,7 +107,7 @@ public final class Scene extends Group {
         } finally {
             LOCK.unlock();
         }
-        return out;
+        return Collections.unmodifiableList(out);
     }
 
     private static void gather(Group group, List<SceneObject> out) {

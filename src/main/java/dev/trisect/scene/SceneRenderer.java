@@ -37,14 +37,15 @@ public final class SceneRenderer implements AutoCloseable {
     /** What the last frame drew, for {@link #pick}; null before the first frame. */
     private Drawn last;
 
-    /** A renderer using every available processor. */
+    /** A renderer using every available processor, up to 256. */
     public SceneRenderer() {
-        this(Runtime.getRuntime().availableProcessors());
+        this(FrameRenderer.defaultThreads());
     }
 
     /**
-     * @param threads threads to render with, &gt;= 1 (the calling thread is one of them)
-     * @throws IllegalArgumentException when {@code threads} is below 1
+     * @param threads threads to render with, 1 to 256 (the calling thread is one of them; the others are
+     *                started here)
+     * @throws IllegalArgumentException when {@code threads} is below 1 or above 256
      */
     public SceneRenderer(int threads) {
         this.renderer = new FrameRenderer(threads);

@@ -2,6 +2,7 @@ package dev.trisect.view;
 
 import dev.trisect.devtools.DevToolsPanel;
 import dev.trisect.devtools.DevToolsWindow;
+import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.math.Vec3;
 import dev.trisect.scene.Camera;
@@ -69,18 +70,18 @@ public class TrisectView extends JComponent implements AutoCloseable {
     /** The camera a new view starts with: 6 units back and 2 up from the origin, looking at it. */
     public static final Camera DEFAULT_CAMERA = Camera.looking(new Vec3(0, 2, 6), Vec3.ZERO);
 
-    /** A view of an empty scene (add objects to {@link #getScene()}), rendering with one thread per processor. */
+    /** A view of an empty scene (add objects to {@link #getScene()}), rendering with one thread per processor (at most 256). */
     public TrisectView() {
         this(new Scene());
     }
 
     /**
-     * A view of {@code scene} from {@link #DEFAULT_CAMERA}, rendering with one thread per processor.
+     * A view of {@code scene} from {@link #DEFAULT_CAMERA}, rendering with one thread per processor (at most 256).
      *
      * @param scene what to show; it may change while the view draws it
      */
     public TrisectView(Scene scene) {
-        this(scene, Runtime.getRuntime().availableProcessors());
+        this(scene, FrameRenderer.defaultThreads());
     }
 
     /**
@@ -91,8 +92,9 @@ public class TrisectView extends JComponent implements AutoCloseable {
      */
     public TrisectView(Scene scene, int renderThreads) {
         Objects.requireNonNull(scene, "scene is null: use new Scene() for an empty one");
-        if (renderThreads < 1 || renderThreads > 256) {
-            throw new IllegalArgumentException("render threads must be between 1 and 256, got " + renderThreads);
+        if (renderThreads < 1 || renderThreads > FrameRenderer.MAX_THREADS) {
+            throw new IllegalArgumentException("render threads must be between 1 and " + FrameRenderer.MAX_THREADS
+                    + ", got " + renderThreads);
         }
         state = new ViewState(scene, DEFAULT_CAMERA);
         controller = new ViewController(state, new Surface(), renderThreads);

@@ -1,0 +1,66 @@
+package dev.trisect.scene;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trisect.mesh.Primitives;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/**
+ * What the scene API's Javadoc promises a library user, held to the letter: found by trying the API
+ * from a program of its own (the API trial).
+ */
+class SceneApiContractTest {
+    private static SceneObject box() {
+        return new SceneObject(Primitives.box(1, 1, 1), Material.colour(0x808080));
+    }
+
+    /** The Javadoc says unmodifiable: a caller's edit would otherwise look as if it changed the scene. */
+    @Test
+    void snapshotAndObjectsAreUnmodifiable() {
+        Scene scene = new Scene();
+        scene.add(box());
+        List<Scene.Placed> placed = scene.snapshot();
+        List<SceneObject> objects = scene.objects();
+        assertThrows(UnsupportedOperationException.class, () -> placed.clear());
+        assertThrows(UnsupportedOperationException.class, () -> objects.add(box()));
+        assertEquals(1, placed.size());
+        assertEquals(1, objects.size());
+    }
+
+    /** A refused add changes nothing: the nodes before the bad one were added before the check. */
+    @Test
+    void aRefusedAddAddsNothing() {
+        Group group = new Group("g");
+        Group elsewhere = new Group("elsewhere");
+        SceneObject a = box();
+        elsewhere.add(a);
+        assertThrows(IllegalArgumentException.class, () -> group.add(a, new Scene()));
+        assertEquals(List.of(), group.children());
+        assertEquals(elsewhere, a.parent());
+        Group outer = new Group("outer");
+        outer.add(group);
+        assertThrows(IllegalArgumentException.class, () -> group.add(a, outer));
+        assertEquals(List.of(), group.children());
+        assertEquals(List.of(a), elsewhere.children());
+        assertThrows(NullPointerException.class, () -> group.add(a, null));
+        assertEquals(List.of(), group.children());
+    }
+
+    /**
+     * Every thread of a renderer starts with it: an unbounded count (257 went through, 100,000 started
+     * tens of thousands of threads and ended in an OutOfMemoryError that left them running) is refused
+     * as the view and the command line refuse it.
+     */
+    @Test
+    void threadCountsBeyondTheLimitAreRefused() {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> new SceneRenderer(257));
+        assertEquals("threads must be between 1 and 256, got 257", e.getMessage());
+        assertThrows(IllegalArgumentException.class, () -> new SceneRenderer(0));
+        try (SceneRenderer r = new SceneRenderer()) {
+            assertTrue(r.threads() >= 1 && r.threads() <= 256, "threads " + r.threads());
+        }
+    }
+}
