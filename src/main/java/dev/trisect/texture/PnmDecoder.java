@@ -19,7 +19,10 @@ import java.nio.file.Path;
 final class PnmDecoder {
     /** A header longer than this is taken as a corrupt file rather than read on and on. */
     private static final int MAX_HEADER_BYTES = 1 << 16;
-    /** Numbers are saturated here: far above any valid size or maxval, far below overflow. */
+    /**
+     * A header number above this is refused as it is read: far above any valid size or maxval, far
+     * below overflow. (Saturating it instead put a number the file does not hold in the message.)
+     */
     private static final long NUMBER_CAP = 1_000_000_000_000L;
 
     private final InputStream in;
@@ -206,7 +209,7 @@ final class PnmDecoder {
         }
         long value = 0;
         while (b >= '0' && b <= '9') {
-            value = Math.min(NUMBER_CAP, value * 10 + (b - '0'));
+            value = capped(value * 10 + (b - '0'), what);
             b = next();
         }
         if (!ImageFormat.isWhitespace(b)) {
@@ -222,9 +225,16 @@ final class PnmDecoder {
         }
         long result = 0;
         for (int i = 0; i < value.length(); i++) {
-            result = Math.min(NUMBER_CAP, result * 10 + (value.charAt(i) - '0'));
+            result = capped(result * 10 + (value.charAt(i) - '0'), keyword);
         }
         return result;
+    }
+
+    private long capped(long value, String what) {
+        if (value > NUMBER_CAP) {
+            throw error("corrupt header: the " + what + " is more than " + NUMBER_CAP);
+        }
+        return value;
     }
 
     /** A header line up to {@code \n} (a trailing {@code \r} kept for strip()), or null at end of file. */

@@ -165,6 +165,11 @@ class TextureReaderErrorsTest {
         Arrays.fill(endlessComment, (byte) 'x');
         assertFailsSaying("rambling.ppm", concat("P6\n#".getBytes(StandardCharsets.US_ASCII), endlessComment),
                 "header: longer than");
+        // Found by the command-line trial: the message read "the image is 1000000000000x2 texels".
+        assertFailsSaying("wide.ppm", ppm("P6\n99999999999999999999 2\n255\n", 255, 0, 0, 0),
+                "the width is more than 1000000000000");
+        assertFailsSaying("wide.pam", ("P7\nWIDTH 99999999999999999999\nHEIGHT 1\nDEPTH 3\nMAXVAL 255\nENDHDR\n")
+                .getBytes(StandardCharsets.US_ASCII), "the WIDTH is more than 1000000000000");
     }
 
     @Test
