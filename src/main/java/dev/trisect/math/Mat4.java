@@ -1,6 +1,7 @@
 package dev.trisect.math;
 
 import java.util.Arrays;
+import java.util.Objects;
 
 /**
  * An immutable 4x4 matrix of doubles in OpenGL's column-major order: element (row r, column c) is
@@ -95,9 +96,11 @@ public final class Mat4 {
      * @param r the row, 0..3
      * @param c the column, 0..3
      * @return the element
+     * @throws IndexOutOfBoundsException when {@code r} or {@code c} is outside 0..3
      */
     public double get(int r, int c) {
-        return m[c * 4 + r];
+        // Both checked: get(4, 0) would otherwise read the element at (0, 1) of the column-major array.
+        return m[Objects.checkIndex(c, 4) * 4 + Objects.checkIndex(r, 4)];
     }
 
     /**

@@ -4,6 +4,7 @@ import dev.trisect.math.Vec3;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
+import java.util.Objects;
 
 /**
  * Builds a {@link Mesh} by appending positions, texture coordinates and triangles.
@@ -55,8 +56,11 @@ public final class MeshBuilder {
      *
      * @param name the material's name (a new name adds a material)
      * @return the material's index
+     * @throws NullPointerException when {@code name} is null
      */
     public int material(String name) {
+        // Checked here: a null name would otherwise surface only in build(), far from the call.
+        Objects.requireNonNull(name, "material name is null");
         int index = materialNames.indexOf(name);
         if (index < 0) {
             index = materialNames.size();

@@ -5,6 +5,7 @@ import dev.trisect.mesh.Mesh;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
+import java.util.Objects;
 
 /**
  * Everything to draw: the top group of a tree of {@link Group}s and {@link SceneObject}s.
@@ -51,8 +52,10 @@ public final class Scene extends Group {
      * of the graph's methods, on any scene.
       *
      * @param changes the changes, run on the calling thread under the scene's lock
+     * @throws NullPointerException when {@code changes} is null
      */
     public void update(Runnable changes) {
+        Objects.requireNonNull(changes, "changes is null");
         LOCK.lock();
         try {
             changes.run();

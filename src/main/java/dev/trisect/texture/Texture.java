@@ -31,13 +31,19 @@ public final class Texture {
      * @param name   where the texture came from (a file name or a procedural name), for messages
      * @param width  width in texels, 1..{@link #MAX_SIDE}
      * @param height height in texels, 1..{@link #MAX_SIDE}
-     * @param argb   {@code width * height} texels, row 0 at the top; kept, not copied
+     * @param argb   {@code width * height} texels, row 0 at the top; kept, not copied, so it must not change
+     *               afterwards: the mipmap levels are made from it here and the filtered samplers' copy on
+     *               first use, so a later change would show with some filters and frames and not others
+     * @throws NullPointerException     when {@code argb} is null
+     * @throws IllegalArgumentException for a size outside 1..{@link #MAX_SIDE} or a texel count not
+     *                                  {@code width * height}
      */
     public Texture(String name, int width, int height, int[] argb) {
         if (width < 1 || height < 1 || width > MAX_SIDE || height > MAX_SIDE) {
             throw new IllegalArgumentException(name + ": texture size " + width + "x" + height
                     + " is outside 1.." + MAX_SIDE);
         }
+        Objects.requireNonNull(argb, () -> name + ": texels are null");
         if (argb.length != width * height) {
             throw new IllegalArgumentException(name + ": expected " + width * height + " texels, got " + argb.length);
         }

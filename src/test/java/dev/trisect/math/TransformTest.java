@@ -41,4 +41,14 @@ class TransformTest {
         assertEquals("transform rotation is null",
                 assertThrows(NullPointerException.class, () -> Transform.IDENTITY.withRotation(null)).getMessage());
     }
+
+    /** get(4, 0) read the element at (0, 1) of the column-major array instead of refusing the row. */
+    @Test
+    void matrixElementsOutsideTheFourByFourAreRefused() {
+        Mat4 m = Transform.translation(1, 2, 3).matrix();
+        assertEquals(3, m.get(2, 3));
+        assertThrows(IndexOutOfBoundsException.class, () -> m.get(4, 0));
+        assertThrows(IndexOutOfBoundsException.class, () -> m.get(-1, 1));
+        assertThrows(IndexOutOfBoundsException.class, () -> m.get(0, 4));
+    }
 }

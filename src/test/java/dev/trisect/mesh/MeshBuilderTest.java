@@ -110,4 +110,13 @@ class MeshBuilderTest {
         assertThrows(IndexOutOfBoundsException.class, () -> b.triangle(0, 1, 2, -1, -2, -1));
         assertEquals(0, b.triangleCount());
     }
+
+    /** A null material name was taken and failed in build() with List.copyOf's bare NullPointerException. */
+    @Test
+    void aNullMaterialNameIsRefusedWhereItIsGiven() {
+        MeshBuilder b = withTriangleCorners();
+        assertEquals("material name is null", assertThrows(NullPointerException.class, () -> b.material(null)).getMessage());
+        b.triangle(0, 1, 2, 0, 0, 0);
+        assertEquals(List.of("default"), b.build().materialNames());
+    }
 }

@@ -63,4 +63,11 @@ class SceneApiContractTest {
             assertTrue(r.threads() >= 1 && r.threads() <= 256, "threads " + r.threads());
         }
     }
+
+    /** update(null) failed inside the lock with the JDK's message about a local variable. */
+    @Test
+    void updateNamesAMissingRunnable() {
+        assertEquals("changes is null",
+                assertThrows(NullPointerException.class, () -> new Scene().update(null)).getMessage());
+    }
 }
