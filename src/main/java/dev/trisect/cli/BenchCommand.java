@@ -272,9 +272,10 @@ final class BenchCommand extends SceneCommand {
                         .put("filter", path.filter.id())
                         .toString();
             }
-            return String.format(Locale.ROOT, "%-12s %10s %10.3f %10s %8.1f %10s  (Mesa llvmpipe, LP_NUM_THREADS=%d, "
-                    + "GLREF_FILTER=%s, mean of %d frames incl. glFinish)", "glref", "-", ms, "-", 1000 / ms, "-", threads,
-                    path.filter.id(), frames + warmup);
+            // glref reports a mean alone: it goes under "mean ms", the other times are dashes (as in row()'s columns).
+            return String.format(Locale.ROOT, "%-12s %10s %10s %10.3f %10s %8.1f %10s  (Mesa llvmpipe, LP_NUM_THREADS=%d, "
+                    + "GLREF_FILTER=%s, mean of %d frames incl. glFinish)", "glref", "-", "-", ms, "-", 1000 / ms, "-",
+                    threads, path.filter.id(), frames + warmup);
         } finally {
             try (var files = Files.list(dir)) {
                 for (Path f : files.toList()) {

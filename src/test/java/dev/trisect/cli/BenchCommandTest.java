@@ -158,4 +158,22 @@ class BenchCommandTest {
         assertTrue(r.errLine().contains("--modes affine"), r.err());
         assertEquals("", r.out());
     }
+
+    @Test
+    void glrefTimeStandsUnderTheMeanColumn() throws IOException {
+        // Found by the command-line trial: glref's mean stood under "min ms" and its fps under "p95 ms".
+        Path glref = dir.resolve("fake-glref.sh");
+        Files.writeString(glref, "#!/bin/sh\necho 'triangles 2 frames 1 ms_per_frame 4.000'\n");
+        glref.toFile().setExecutable(true);
+        CliRun r = CliRun.of("bench", "--scene", "floor", "--size", "16x16", "--frames", "1", "--warmup", "0",
+                "--modes", "affine", "--glref", glref.toString());
+        assertEquals(0, r.status(), r.err());
+        List<String> lines = r.out().lines().toList();
+        String header = lines.get(1);
+        String row = lines.stream().filter(l -> l.startsWith("glref")).findFirst().orElseThrow();
+        assertEquals(header.indexOf("mean ms") + "mean ms".length(), row.indexOf("4.000") + "4.000".length(),
+                header + "\n" + row);
+        assertEquals(header.indexOf("fps") + "fps".length(), row.indexOf("250.0") + "250.0".length(),
+                header + "\n" + row);
+    }
 }
