@@ -37,6 +37,8 @@ public final class SceneObject extends Node {
 
     private volatile Look look;
 
+    private static final String NOTES_NULL = "notes is null: pass note -> { } to ignore them";
+
     /**
      * An object drawing every material of {@code mesh} with {@code material}.
      *
@@ -161,6 +163,7 @@ public final class SceneObject extends Node {
      * @param obj   the OBJ file
      * @param notes receives one-line remarks for the user (never errors; those are thrown)
      * @return the object, named after the file
+     * @throws NullPointerException when {@code obj} or {@code notes} is null
      * @throws InputException for anything unreadable, with a one-line message naming the file and line
      */
     public static SceneObject load(Path obj, Consumer<String> notes) {
@@ -181,6 +184,8 @@ public final class SceneObject extends Node {
      * @throws InputException for anything else unreadable, with a one-line message naming the file and line
      */
     public static SceneObject load(Path obj, Consumer<String> notes, boolean placeholders) {
+        Objects.requireNonNull(obj, "OBJ path is null");
+        Objects.requireNonNull(notes, NOTES_NULL);
         return load(ObjReader.read(obj, true), String.valueOf(obj.getFileName()), notes, placeholders);
     }
 
@@ -198,6 +203,8 @@ public final class SceneObject extends Node {
      *                        one-line message naming the MTL file and line
      */
     public static SceneObject load(ObjModel model, String name, Consumer<String> notes, boolean placeholders) {
+        // Checked before any work: notes is called only for some files, so a null one would pass most.
+        Objects.requireNonNull(notes, NOTES_NULL);
         Mesh mesh = model.mesh();
         List<Material> materials = new ArrayList<>();
         Map<Path, Material> loaded = new HashMap<>();
@@ -228,7 +235,7 @@ public final class SceneObject extends Node {
         }
         if (!untextured.isEmpty()) {
             notes.accept(name + ": no texture for material" + (untextured.size() > 1 ? "s " : " ")
-                    + String.join(", ", untextured) + " (no --texture and no map_Kd); using the built-in UV grid");
+                    + String.join(", ", untextured) + " (no map_Kd); using the built-in UV grid");
         }
         SceneObject o = new SceneObject(mesh, materials);
         o.setName(name);

@@ -1,12 +1,18 @@
 package dev.trisect.scene;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.mesh.Primitives;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 /**
  * What the scene API's Javadoc promises a library user, held to the letter: found by trying the API
@@ -69,5 +75,22 @@ class SceneApiContractTest {
     void updateNamesAMissingRunnable() {
         assertEquals("changes is null",
                 assertThrows(NullPointerException.class, () -> new Scene().update(null)).getMessage());
+    }
+
+    /**
+     * A program loading an OBJ was told of a command-line option it has not got ("no --texture"), and a
+     * null notes consumer passed whenever the file gave no note, failing only for files that did.
+     */
+    @Test
+    void loadSpeaksToTheLibraryAndRefusesNullNotes(@TempDir Path dir) throws IOException {
+        Path obj = Files.writeString(dir.resolve("tri.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        List<String> notes = new ArrayList<>();
+        SceneObject.load(obj, notes::add);
+        assertEquals(1, notes.size(), notes.toString());
+        assertFalse(notes.get(0).contains("--"), notes.get(0));
+        assertEquals("tri.obj: no texture for material default (no map_Kd); using the built-in UV grid", notes.get(0));
+        assertEquals("notes is null: pass note -> { } to ignore them",
+                assertThrows(NullPointerException.class, () -> SceneObject.load(obj, null)).getMessage());
+        assertEquals("OBJ path is null", assertThrows(NullPointerException.class, () -> SceneObject.load(null)).getMessage());
     }
 }
