@@ -108,6 +108,10 @@ final class BenchCommand extends SceneCommand {
             throw InputException.usage("--mode does not apply to bench: choose the paths to measure with --modes "
                     + "(e.g. --modes " + path.mode.id() + ")");
         }
+        if ((sweep || targetMs != null) && common.spec.commandLine().getParseResult().hasMatchedOption("--modes")) {
+            // The sweep measures its fixed set of paths, the budget run the tessellated one: --modes would be ignored.
+            throw InputException.usage("--modes does not go with " + (sweep ? "--sweep" : "--target-ms"));
+        }
         if (sweep && targetMs != null) {
             throw InputException.usage("--sweep and --target-ms do not go together");
         }

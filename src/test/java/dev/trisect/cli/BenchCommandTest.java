@@ -157,6 +157,13 @@ class BenchCommandTest {
         assertEquals(2, r.status(), r.out());
         assertTrue(r.errLine().contains("--modes affine"), r.err());
         assertEquals("", r.out());
+        // Likewise --modes where the sweep and the budget run choose their own paths.
+        for (String run : new String[] {"--sweep", "--target-ms=5"}) {
+            CliRun m = CliRun.of("bench", "--scene", "floor", "--size", "16x16", "--frames", "1", "--warmup", "0",
+                    run, "--modes", "affine");
+            assertEquals(2, m.status(), m.out());
+            assertTrue(m.errLine().contains("--modes does not go with " + run.replace("=5", "")), m.err());
+        }
     }
 
     @Test
