@@ -9,9 +9,9 @@ import dev.trisect.base.internal.JsonObject;
  * on, filling and outlining also run interleaved (each band is outlined right after it is filled),
  * so {@code rasterNanos} and {@code overlayNanos} are then an estimate of the same kind, flagged by
  * {@code bandTimesEstimated} and named {@code ..._estimate} in {@link #toJson()}; with the borders off
- * the raster time is the measured wall time of the fill and the overlay's is 0. (Callers that measure
- * the overlay exactly render without borders and time {@code FrameRenderer.drawBorders}, as the demo
- * does.)
+ * the raster time is the measured wall time of the fill and the overlay's is 0. (The developer tools
+ * time the overlay exactly by drawing it as a pass of its own after a frame drawn without borders; the
+ * API offers no such pass.)
  *
  * @param trianglesIn      input triangles
  * @param culledBackFace   dropped as seen from behind

@@ -13,7 +13,7 @@ import dev.trisect.scene.Camera;
  * @param camera          the camera it was drawn with (the user may have moved it), world space
  * @param settings        the settings it was drawn with; under a frame-time target, with the split
  *                        threshold the budget chose
- * @param stats           the engine's statistics of the frame: counts, and milliseconds per stage
+ * @param stats           the engine's statistics of the frame: counts, and nanoseconds of wall time per stage
  * @param frameMillis     milliseconds the render thread spent on the frame: the engine's time plus the
  *                        overlay and anything the developer tools measured
  * @param framesPerSecond frames handed to the screen per second, over the last second
