@@ -89,7 +89,7 @@ public final class Cli {
             return status;
         } catch (OutOfMemoryError e) {
             // Only the commands that render a frame have --max-frame-pieces, and only there does --size
-            // decide the memory (export's --size sets the camera's aspect alone).
+            // decide the memory (export refuses --size).
             err.println(rendersFrame(cl) ? renderingOom : otherOom);
             err.flush();
             return 1;

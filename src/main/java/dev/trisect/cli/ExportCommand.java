@@ -31,6 +31,14 @@ final class ExportCommand implements Callable<Integer> {
             FrameOptions.listScenes(common.out());
             return 0;
         }
+        // The frame options export shares with the drawing commands change nothing in what it writes or
+        // prints (the mesh, its textures and the camera): given to export, they would be silently lost.
+        for (String unused : List.of("--size", "--cull", "--background")) {
+            if (common.spec.commandLine().getParseResult().hasMatchedOption(unused)) {
+                throw dev.trisect.base.InputException.usage(unused + " does not apply to export: it writes the mesh, "
+                        + "its textures and the camera, not a frame (give " + unused + " to the renderer)");
+            }
+        }
         if (to == null) {
             throw dev.trisect.base.InputException.usage("--to FILE.obj is required");
         }

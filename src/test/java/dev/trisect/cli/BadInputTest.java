@@ -181,6 +181,19 @@ class BadInputTest {
     }
 
     @Test
+    void exportRefusesTheFrameOptionsItWouldIgnore() {
+        // Found by the command-line trial: export --size 100x900 --cull none --background 123456 wrote and
+        // printed exactly what export without them did, exit 0.
+        for (String[] option : new String[][] {{"--size", "100x900"}, {"--cull", "none"}, {"--background", "123456"}}) {
+            usage(CliRun.of("export", "--scene", "floor", option[0], option[1], "--to", dir.resolve("e.obj").toString()),
+                    option[0] + " does not apply to export");
+        }
+        assertFalse(Files.exists(dir.resolve("e.obj")));
+        assertEquals(0, CliRun.of("export", "--scene", "floor", "--fov", "50", "--to", dir.resolve("e.obj").toString())
+                .status(), "the camera's options still apply");
+    }
+
+    @Test
     void missingMapKdNamesTheTexture() throws IOException {
         Files.writeString(dir.resolve("m.mtl"), "newmtl a\nmap_Kd gone.png\n");
         Path p = obj("mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n");
