@@ -73,6 +73,16 @@ public final class Cli {
             err.flush();
             return status;
         });
+        // picocli lets a help option win over an unknown command or argument: trisect rendr --help printed
+        // the root help with exit 0, saying nothing of 'rendr'. An unmatched argument is an error regardless.
+        cl.setExecutionStrategy(parseResult -> {
+            for (ParseResult r = parseResult; r != null; r = r.subcommand()) {
+                if (!r.unmatched().isEmpty()) {
+                    throw new CommandLine.UnmatchedArgumentException(r.commandSpec().commandLine(), r.unmatched());
+                }
+            }
+            return new CommandLine.RunLast().execute(parseResult);
+        });
         // Made before the work: when the heap is exhausted, building a message could fail too.
         String renderingOom = "trisect: out of memory (lower --max-frame-pieces or --size, or give Java more with -Xmx)";
         String otherOom = "trisect: out of memory (give Java more with -Xmx, e.g. java -Xmx4g -jar trisect.jar)";

@@ -231,6 +231,19 @@ class CommandsTest {
         }
     }
 
+    @Test
+    void anUnknownCommandOrArgumentIsAnErrorEvenWithHelp() {
+        // Found by the command-line trial: trisect rendr --help printed the root help, exit 0.
+        CliRun typo = CliRun.of("rendr", "--help");
+        assertEquals(2, typo.status(), typo.out());
+        assertTrue(typo.errLine().contains("'rendr'"), typo.err());
+        assertEquals("", typo.out());
+        CliRun extra = CliRun.of("render", "--help", "extra");
+        assertEquals(2, extra.status(), extra.out());
+        assertTrue(extra.errLine().contains("'extra'"), extra.err());
+        assertEquals(0, CliRun.of("render", "--help").status());
+    }
+
     private static String[] cat(String[] a, String[] b) {
         String[] r = java.util.Arrays.copyOf(a, a.length + b.length);
         System.arraycopy(b, 0, r, a.length, b.length);
