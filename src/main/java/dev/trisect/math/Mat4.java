@@ -56,13 +56,25 @@ public final class Mat4 {
      * @param target point looked at, world space; must differ from {@code eye}
      * @param up     approximate up direction, world space; must not be parallel to the view direction
      * @return the view matrix
+     * @throws IllegalArgumentException when {@code eye} is {@code target}, a value is not finite, or
+     *                                  {@code up} is zero or parallel to the view direction (no direction
+     *                                  for one of the camera's axes; {@code Camera} checks the same with
+     *                                  messages of its own)
      */
     public static Mat4 lookAt(Vec3 eye, Vec3 target, Vec3 up) {
         Vec3 f = target.sub(eye).normalize();
+        if (!isUnit(f)) {
+            throw new IllegalArgumentException("lookAt needs finite eye and target apart, got eye " + eye
+                    + " and target " + target);
+        }
         // An up of extreme magnitude (above 1e150 or below 1e-150) is made unit first, so that the
         // cross product neither overflows nor underflows; any other up is used as given (as gluLookAt).
         double upLength = up.length();
         Vec3 s = f.cross(upLength > 1e-150 && upLength < 1e150 ? up : up.normalize()).normalize();
+        if (!isUnit(s)) {
+            throw new IllegalArgumentException("lookAt needs a finite up (" + up + ") not parallel to the view "
+                    + "direction " + f);
+        }
         Vec3 u = s.cross(f);
         return ofRows(
                 s.x(), s.y(), s.z(), -s.dot(eye),
@@ -80,14 +92,26 @@ public final class Mat4 {
      * @param near        distance to the near plane, view-space units, &gt; 0
      * @param far         distance to the far plane, view-space units, &gt; near
      * @return the projection matrix
+     * @throws IllegalArgumentException when a value is outside its range or not finite
      */
     public static Mat4 perspective(double fovYDegrees, double aspect, double near, double far) {
+        // Each as Camera checks it; here too, since a matrix of infinities or NaN would draw nothing, silently.
+        if (!(fovYDegrees > 0 && fovYDegrees < 180) || !(aspect > 0 && aspect < Double.POSITIVE_INFINITY)
+                || !(near > 0) || !(far > near && far < Double.POSITIVE_INFINITY)) {
+            throw new IllegalArgumentException("perspective needs fovY in (0, 180), a finite aspect > 0 and "
+                    + "0 < near < far finite, got " + fovYDegrees + ", " + aspect + ", " + near + ", " + far);
+        }
         double f = 1.0 / Math.tan(Math.toRadians(fovYDegrees) / 2);
         return ofRows(
                 f / aspect, 0, 0, 0,
                 0, f, 0, 0,
                 0, 0, (far + near) / (near - far), 2 * far * near / (near - far),
                 0, 0, -1, 0);
+    }
+
+    /** Whether {@code v} is a direction normalize() could make: finite and not zero. */
+    private static boolean isUnit(Vec3 v) {
+        return v.isFinite() && (v.x() != 0 || v.y() != 0 || v.z() != 0);
     }
 
     /**

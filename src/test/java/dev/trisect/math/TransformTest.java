@@ -51,4 +51,21 @@ class TransformTest {
         assertThrows(IndexOutOfBoundsException.class, () -> m.get(-1, 1));
         assertThrows(IndexOutOfBoundsException.class, () -> m.get(0, 4));
     }
+
+    /** lookAt(eye, eye, up) gave a matrix of zeros and perspective(0, ...) one of infinities, silently. */
+    @Test
+    void degenerateCameraMatricesAreRefused() {
+        assertThrows(IllegalArgumentException.class, () -> Mat4.lookAt(Vec3.ZERO, Vec3.ZERO, Vec3.UP));
+        assertThrows(IllegalArgumentException.class, () -> Mat4.lookAt(Vec3.ZERO, new Vec3(0, 5, 0), Vec3.UP));
+        assertThrows(IllegalArgumentException.class, () -> Mat4.lookAt(Vec3.ZERO, new Vec3(1, 0, 0), Vec3.ZERO));
+        assertThrows(IllegalArgumentException.class,
+                () -> Mat4.lookAt(new Vec3(Double.NaN, 0, 0), new Vec3(1, 0, 0), Vec3.UP));
+        assertThrows(IllegalArgumentException.class, () -> Mat4.perspective(0, 1, 0.1, 10));
+        assertThrows(IllegalArgumentException.class, () -> Mat4.perspective(60, 0, 0.1, 10));
+        assertThrows(IllegalArgumentException.class, () -> Mat4.perspective(60, 1, 0, 10));
+        assertThrows(IllegalArgumentException.class, () -> Mat4.perspective(60, 1, 1, 1));
+        assertThrows(IllegalArgumentException.class, () -> Mat4.perspective(60, 1, 1, Double.POSITIVE_INFINITY));
+        assertEquals(1, Mat4.lookAt(Vec3.ZERO, new Vec3(0, 0, -1), Vec3.UP).get(2, 2)); // looking down -z: the identity
+        assertEquals(1, Mat4.perspective(90, 1, 1, 2).get(1, 1), 1e-15);
+    }
 }
