@@ -76,6 +76,18 @@ class LauncherTest {
     }
 
     @Test
+    void theDemoNamesABadSceneAndRefusesObjWithSceneBeforeLookingForADisplay() throws Exception {
+        // Found by the command-line trial: demo --scene nope said only "no display"; --obj with --scene
+        // opened the OBJ and dropped the scene.
+        Run bad = launch("demo", "--scene", "nope");
+        assertEquals(2, bad.status(), bad.err());
+        assertTrue(bad.err().strip().startsWith("trisect: unknown scene 'nope'"), bad.err());
+        Run both = launch("demo", "--obj", "m.obj", "--scene", "demo");
+        assertEquals(2, both.status(), both.err());
+        assertEquals("trisect: --obj and --scene both name what to open; give one of them", both.err().strip());
+    }
+
+    @Test
     void argumentsRunTheCommandLine() throws Exception {
         Run r = launch("render", "--list-scenes");
         assertEquals(0, r.status(), r.err());

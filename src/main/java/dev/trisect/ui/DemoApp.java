@@ -17,7 +17,9 @@ import java.util.concurrent.atomic.AtomicReference;
 import javax.swing.SwingUtilities;
 import javax.swing.ToolTipManager;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 import picocli.CommandLine;
 
 /**
@@ -70,6 +72,9 @@ public final class DemoApp implements Callable<Integer> {
             return new String[] {BuildVersion.line()};
         }
     }
+
+    @Spec
+    CommandSpec spec;
 
     /** Opens the --report file; set by {@link #launch}. */
     private ReportFile.Opener reports;
@@ -149,6 +154,15 @@ public final class DemoApp implements Callable<Integer> {
         if (report != null && soak == null) {
             throw InputException.usage("--report goes with --soak");
         }
+        // What to open is checked before the display, so that a typo is named even where no window can open;
+        // --obj with --scene would silently drop one of them.
+        if (obj != null && spec.commandLine().getParseResult().hasMatchedOption("--scene")) {
+            throw InputException.usage("--obj and --scene both name what to open; give one of them");
+        }
+        if (obj == null && DemoScenes.byName(scene).isEmpty()) {
+            throw InputException.usage("unknown scene '" + scene + "' (built-in scenes: "
+                    + String.join(", ", DemoScenes.names()) + ")");
+        }
         // The report's folder and writability are checked now, not after the soak.
         try (ReportFile file = report == null ? null : reports.open(report)) {
             return open(start, n, file);
@@ -167,8 +181,7 @@ public final class DemoApp implements Callable<Integer> {
         }
 
         SceneAsset s = obj != null ? SceneLoader.load(obj, null, note -> System.err.println("trisect: note: " + note))
-                : DemoScenes.byName(scene).orElseThrow(() -> InputException.usage("unknown scene '" + scene
-                        + "' (built-in scenes: " + String.join(", ", DemoScenes.names()) + ")"));
+                : DemoScenes.byName(scene).orElseThrow();
         RenderMode initial = start;
         AtomicReference<DemoWindow> window = new AtomicReference<>();
         AtomicReference<Throwable> failure = new AtomicReference<>();
