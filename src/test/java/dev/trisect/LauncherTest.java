@@ -24,8 +24,12 @@ class LauncherTest {
     }
 
     private static Run launch(String... args) throws IOException, InterruptedException {
+        return launchWith(System.getProperty("java.class.path"), args);
+    }
+
+    private static Run launchWith(String classPath, String... args) throws IOException, InterruptedException {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"), Trisect.class.getName()));
+                "-Djava.awt.headless=true", "-cp", classPath, Trisect.class.getName()));
         cmd.addAll(List.of(args));
         ProcessBuilder pb = new ProcessBuilder(cmd);
         pb.environment().remove("DISPLAY");
@@ -34,6 +38,26 @@ class LauncherTest {
         assertTrue(p.waitFor(60, TimeUnit.SECONDS), "the launcher ended");
         return new Run(p.exitValue(), new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8),
                 new String(p.getErrorStream().readAllBytes(), StandardCharsets.UTF_8));
+    }
+
+    @Test
+    void theLibraryAloneSaysOneLineNamingTheMissingLibraries() throws Exception {
+        // The class path of the installed artifact's consumer: the library and its required dependencies,
+        // without the optional application libraries (picocli, FlatLaf, XChart).
+        List<String> kept = new ArrayList<>();
+        for (String entry : System.getProperty("java.class.path").split(java.io.File.pathSeparator)) {
+            String name = Path.of(entry).getFileName().toString();
+            if (!name.startsWith("picocli") && !name.startsWith("flatlaf") && !name.startsWith("xchart")) {
+                kept.add(entry);
+            }
+        }
+        for (String[] args : new String[][] {{"--version"}, {}, {"render", "--scene", "demo", "--out", "x.png"}}) {
+            Run r = launchWith(String.join(java.io.File.pathSeparator, kept), args);
+            assertEquals(1, r.status(), r.err());
+            String err = r.err().strip();
+            assertFalse(err.contains("\n") || err.contains("Exception") || err.contains("Error"), "one clean line: " + err);
+            assertTrue(err.startsWith("trisect: picocli, FlatLaf, XChart not found: this is the library jar"), err);
+        }
     }
 
     @Test
