@@ -73,6 +73,14 @@ final class WorkerPool implements AutoCloseable {
      * @param name    prefix of the helpers' names (a number is added)
      */
     WorkerPool(int threads, String name) {
+        this(threads, name, Thread::new);
+    }
+
+    /**
+     * As {@link #WorkerPool(int, String)}, the helper threads made by {@code factory} (for tests that
+     * make a thread's start fail).
+     */
+    WorkerPool(int threads, String name, java.util.function.BiFunction<Runnable, String, Thread> factory) {
         if (threads < 1) {
             throw new IllegalArgumentException("threads must be at least 1, got " + threads);
         }
@@ -82,12 +90,19 @@ final class WorkerPool implements AutoCloseable {
         for (int h = 0; h < helpers.length; h++) {
             int thread = h + 1;
             Helper helper = new Helper();
-            helper.thread = new Thread(() -> serve(thread, helper), name + "-" + pool + "-" + thread);
+            helper.thread = factory.apply(() -> serve(thread, helper), name + "-" + pool + "-" + thread);
             helper.thread.setDaemon(true);
             helpers[h] = helper;
         }
-        for (Helper h : helpers) {
-            h.thread.start();
+        try {
+            for (Helper h : helpers) {
+                h.thread.start();
+            }
+        } catch (RuntimeException | Error e) {
+            // No caller holds the pool to close it, so the helpers already started would wait for work
+            // for good (a start fails when the system is out of threads).
+            close();
+            throw e;
         }
     }
 

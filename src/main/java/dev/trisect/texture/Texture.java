@@ -34,11 +34,12 @@ public final class Texture {
      * @param argb   {@code width * height} texels, row 0 at the top; kept, not copied, so it must not change
      *               afterwards: the mipmap levels are made from it here and the filtered samplers' copy on
      *               first use, so a later change would show with some filters and frames and not others
-     * @throws NullPointerException     when {@code argb} is null
+     * @throws NullPointerException     when {@code name} or {@code argb} is null
      * @throws IllegalArgumentException for a size outside 1..{@link #MAX_SIDE} or a texel count not
      *                                  {@code width * height}
      */
     public Texture(String name, int width, int height, int[] argb) {
+        Objects.requireNonNull(name, "texture name is null");
         if (width < 1 || height < 1 || width > MAX_SIDE || height > MAX_SIDE) {
             throw new IllegalArgumentException(name + ": texture size " + width + "x" + height
                     + " is outside 1.." + MAX_SIDE);
@@ -79,6 +80,7 @@ public final class Texture {
      * @param name a name for messages and statistics
      * @param argb the colour, 0xAARRGGBB
      * @return a 1x1 texture of that colour
+     * @throws NullPointerException when {@code name} is null
      */
     public static Texture solid(String name, int argb) {
         return new Texture(name, 1, 1, new int[] {argb});

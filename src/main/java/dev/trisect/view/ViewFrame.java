@@ -28,10 +28,12 @@ public final class ViewFrame extends JFrame {
      *
      * @param title the window's title
      * @param view  the view to show in it
+     * @throws NullPointerException when {@code view} is null
      */
     public ViewFrame(String title, TrisectView view) {
         super(title);
-        this.view = view;
+        // Checked here: Swing would fail later, inside its layout, without saying what was null.
+        this.view = java.util.Objects.requireNonNull(view, "view is null");
         setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
         getContentPane().add(view, BorderLayout.CENTER);
         pack();

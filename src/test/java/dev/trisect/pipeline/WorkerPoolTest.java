@@ -55,6 +55,31 @@ class WorkerPoolTest {
     }
 
     @Test
+    void aHelperThatCannotStartStopsTheOnesStartedBeforeIt() throws InterruptedException {
+        // The third of five helpers fails to start, as a start does when the system is out of threads:
+        // the constructor rethrows, and the two started before it end instead of waiting for work for good.
+        List<Thread> made = new ArrayList<>();
+        OutOfMemoryError refused = new OutOfMemoryError("unable to create native thread (simulated)");
+        OutOfMemoryError e = assertThrows(OutOfMemoryError.class, () -> new WorkerPool(6, "pool-test-start",
+                (r, n) -> {
+                    Thread t = made.size() == 2 ? new Thread(r, n) {
+                        @Override
+                        public synchronized void start() {
+                            throw refused;
+                        }
+                    } : new Thread(r, n);
+                    made.add(t);
+                    return t;
+                }));
+        assertSame(refused, e);
+        assertEquals(5, made.size());
+        for (Thread t : made) {
+            t.join(10_000);
+            assertTrue(!t.isAlive(), t.getName() + " ended");
+        }
+    }
+
+    @Test
     void everyIndexRunsOnceOnAnyThreadCount() {
         for (int threads = 1; threads <= 4; threads++) {
             try (WorkerPool pool = new WorkerPool(threads, "pool-test-count")) {

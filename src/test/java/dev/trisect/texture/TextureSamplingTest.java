@@ -1,6 +1,7 @@
 package dev.trisect.texture;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import org.junit.jupiter.api.Test;
@@ -28,6 +29,16 @@ class TextureSamplingTest {
 
     private static int imageRow(Texture texture, double u, double v) {
         return texture.sampleUv(u, v) / texture.width();
+    }
+
+    @Test
+    void aTextureWithoutANameIsRefused() {
+        // A null name would surface only as "null" in some later message.
+        NullPointerException e = assertThrows(NullPointerException.class,
+                () -> Texture.solid(null, 0xFF112233));
+        assertEquals("texture name is null", e.getMessage());
+        assertThrows(NullPointerException.class,
+                () -> new Texture(null, 1, 1, new int[] {0}));
     }
 
     @Test

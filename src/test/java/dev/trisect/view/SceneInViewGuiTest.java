@@ -5,6 +5,7 @@ import static dev.trisect.GuiTests.onEdt;
 import static dev.trisect.GuiTests.waitFor;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.GuiTests;
@@ -73,6 +74,14 @@ class SceneInViewGuiTest {
             host.setVisible(true);
         });
         waitFor("frames", () -> frames.size() >= 2);
+    }
+
+    @Test
+    void aViewFrameWithoutAViewSaysWhatIsMissing() throws Exception {
+        // Before, Swing failed inside its layout with a NullPointerException that named nothing.
+        NullPointerException e = onEdt(() -> assertThrows(NullPointerException.class,
+                () -> new ViewFrame("no view", null)));
+        assertEquals("view is null", e.getMessage());
     }
 
     @AfterEach
