@@ -10,10 +10,12 @@ import dev.trisect.cli.Cli;
 import dev.trisect.content.DemoScenes;
 import dev.trisect.devtools.CliArgs;
 import dev.trisect.metrics.Comparison;
+import dev.trisect.render.Framebuffer;
 import dev.trisect.render.RenderMode;
 import dev.trisect.render.SplitPolicy;
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -184,5 +186,34 @@ class RenderLoopTest {
             loop.stop();
             t.join(5000);
         }
+    }
+
+    @Test
+    void everyPathIsTimedInAFrameRecordingTheUvOutputAsTheShownOneIs() {
+        // The shown path records the UV output while measuring (10-20 % of a frame); the developer tools'
+        // rows compare only if the others are timed doing the same. They were timed in a frame without it.
+        Framebuffer reference = new Framebuffer(8, 8);
+        reference.recordUv(true);
+        for (RenderMode shown : RenderMode.values()) {
+            List<RenderMode> drawn = new ArrayList<>();
+            double[] ms = RenderLoop.drawReference(shown, true, reference, (mode, into) -> {
+                assertNotNull(into.uv(), mode + " timed without the UV output while " + shown + " records it");
+                drawn.add(mode);
+                return 1_000_000L * (mode.ordinal() + 1);
+            });
+            assertEquals(RenderMode.PERSPECTIVE, drawn.get(drawn.size() - 1),
+                    "the per-pixel frame last, so the comparison reads it");
+            for (RenderMode m : RenderMode.values()) {
+                boolean timedHere = m != shown || m == RenderMode.PERSPECTIVE;
+                assertEquals(timedHere ? 1 : 0, drawn.stream().filter(m::equals).count(), m + " with " + shown + " shown");
+                assertEquals(timedHere ? m.ordinal() + 1 : 0, ms[m.ordinal()], 0.0, m + " row");
+            }
+        }
+        List<RenderMode> drawn = new ArrayList<>();
+        assertEquals(null, RenderLoop.drawReference(RenderMode.SPANS, false, reference, (mode, into) -> {
+            drawn.add(mode);
+            return 1;
+        }), "no rows when not measuring");
+        assertEquals(List.of(RenderMode.PERSPECTIVE), drawn, "only the reference then");
     }
 }
