@@ -121,9 +121,7 @@ public final class RenderLoop implements Runnable {
     @Override
     public void run() {
         long last = System.nanoTime();
-        long secondStart = last;
-        long secondFrames = 0;
-        double fps = 0;
+        FrameRate rate = new FrameRate();
         try {
             while (running) {
                 servePicks();
@@ -135,6 +133,7 @@ public final class RenderLoop implements Runnable {
                 last = now;
                 if (w <= 0 || h <= 0) {
                     // Minimized or not shown yet: nothing to draw.
+                    rate.pause();
                     sleep(50);
                     continue;
                 }
@@ -150,6 +149,7 @@ public final class RenderLoop implements Runnable {
                     // Frozen: mouse looks and wheel turns made now must not jump the camera on the next step.
                     state.input.takeDrag();
                     state.input.takeWheel();
+                    rate.pause();
                     sleep(15);
                     continue;
                 }
@@ -170,16 +170,11 @@ public final class RenderLoop implements Runnable {
                 long serial = back.serial;
                 FrameStats st = back.stats;
                 long overlay = back.overlayNanos;
-                FrameReport report = report(back, settings, (System.nanoTime() - frameStart) / 1e6, fps);
                 long presentStart = System.nanoTime();
+                double fps = rate.frameShown(presentStart);
+                FrameReport report = report(back, settings, (presentStart - frameStart) / 1e6, fps);
                 back = buffers.publish(back);
                 repaint.run();
-                secondFrames++;
-                if (now - secondStart >= 1_000_000_000L) {
-                    fps = secondFrames * 1e9 / (now - secondStart);
-                    secondStart = now;
-                    secondFrames = 0;
-                }
                 state.progress(new ViewState.Progress(frames, fps, compareMs));
                 LoopListener l = listener;
                 if (l != null) {
