@@ -1,6 +1,7 @@
 package dev.trisect.cli;
 
 import dev.trisect.base.InputException;
+import dev.trisect.base.internal.Counts;
 import dev.trisect.base.internal.JsonObject;
 import dev.trisect.content.SceneAsset;
 import dev.trisect.io.ObjWriter;
@@ -161,7 +162,7 @@ final class BenchCommand extends SceneCommand {
                 lines.addAll(json ? output.json(result) : output.table(result));
                 Results.deliver(common.out(), batch, b -> {
                     if (plot != null) {
-                        SweepChart.write(b, result, scene.name() + " " + frame.size + ", " + threads + " threads",
+                        SweepChart.write(b, result, scene.name() + " " + frame.size + ", " + Counts.of(threads, "thread"),
                                 plot);
                     }
                 }, lines);
@@ -175,16 +176,16 @@ final class BenchCommand extends SceneCommand {
                 lines.addAll(new BudgetOutput(scene.name(), frame.size.toString(), threads).lines(trace, json));
                 Results.deliver(common.out(), batch, b -> {
                     if (plot != null) {
-                        BudgetChart.write(b, trace, String.format(Locale.ROOT, "%s %s, %d threads: budget %.1f ms%s",
-                                scene.name(), frame.size, threads, targetMs, orbit ? ", orbiting" : ""), plot);
+                        BudgetChart.write(b, trace, String.format(Locale.ROOT, "%s %s, %s: budget %.1f ms%s",
+                                scene.name(), frame.size, Counts.of(threads, "thread"), targetMs, orbit ? ", orbiting" : ""), plot);
                     }
                 }, lines);
                 return 0;
             }
             if (!json) {
-                lines.add(String.format(Locale.ROOT, "scene %s, %s, %d triangles, %d threads, %s filter, %d frames "
-                        + "after %d warm-up", scene.name(), frame.size, scene.mesh().triangleCount(), threads,
-                        path.filter.id(), frames, warmup));
+                lines.add(String.format(Locale.ROOT, "scene %s, %s, %s, %s, %s filter, %s after %s", scene.name(),
+                        frame.size, Counts.of(scene.mesh().triangleCount(), "triangle"), Counts.of(threads, "thread"),
+                        path.filter.id(), Counts.of(frames, "frame"), Counts.of(warmup, "warm-up frame")));
                 lines.add(String.format(Locale.ROOT, "%-12s %10s %10s %10s %10s %8s %10s", "path", "median ms",
                         "min ms", "mean ms", "p95 ms", "fps", "pieces"));
             }
@@ -278,8 +279,8 @@ final class BenchCommand extends SceneCommand {
             }
             // glref reports a mean alone: it goes under "mean ms", the other times are dashes (as in row()'s columns).
             return String.format(Locale.ROOT, "%-12s %10s %10s %10.3f %10s %8.1f %10s  (Mesa llvmpipe, LP_NUM_THREADS=%d, "
-                    + "GLREF_FILTER=%s, mean of %d frames incl. glFinish)", "glref", "-", "-", ms, "-", 1000 / ms, "-",
-                    threads, path.filter.id(), frames + warmup);
+                    + "GLREF_FILTER=%s, mean of %s incl. glFinish)", "glref", "-", "-", ms, "-", 1000 / ms, "-",
+                    threads, path.filter.id(), Counts.of(frames + warmup, "frame"));
         } finally {
             try (var files = Files.list(dir)) {
                 for (Path f : files.toList()) {

@@ -1,5 +1,6 @@
 package dev.trisect.cli;
 
+import dev.trisect.base.internal.Counts;
 import dev.trisect.base.internal.JsonObject;
 import dev.trisect.perf.BudgetController;
 import dev.trisect.perf.BudgetRun;
@@ -35,8 +36,8 @@ final class BudgetOutput {
         String policy = t.policy().name().toLowerCase(Locale.ROOT);
         int n = t.ms().length;
         if (!json) {
-            lines.add(String.format(Locale.ROOT, "scene %s, %s, %d threads, target %.3f ms, %s policy, ceiling %s px",
-                    scene, size, threads, t.targetMs(), policy, t.ceiling()));
+            lines.add(String.format(Locale.ROOT, "scene %s, %s, %s, target %.3f ms, %s policy, ceiling %s px",
+                    scene, size, Counts.of(threads, "thread"), t.targetMs(), policy, t.ceiling()));
             lines.add(String.format(Locale.ROOT, "%6s %12s %10s %10s %6s %8s", "frame", "threshold", "ms", "pieces",
                     "over", "held_by"));
         }

@@ -1,5 +1,6 @@
 package dev.trisect.cli;
 
+import dev.trisect.base.internal.Counts;
 import dev.trisect.io.ObjWriter;
 import dev.trisect.io.OutputBatch;
 import dev.trisect.content.SceneAsset;
@@ -72,8 +73,9 @@ final class ExportCommand implements Callable<Integer> {
         List<Path> maps = new ArrayList<>();
         // The camera is printed even when the files fail: it is what was computed.
         Results.deliver(common.out(), batch, b -> maps.addAll(ObjWriter.write(b, to, scene.mesh(), scene.textures())),
-                written -> written ? List.of(String.format("wrote %s (%d triangles, %d materials: %s)", to,
-                        scene.mesh().triangleCount(), maps.size(), maps), cameraLine) : List.of(cameraLine));
+                written -> written ? List.of(String.format("wrote %s (%s, %s: %s)", to,
+                        Counts.of(scene.mesh().triangleCount(), "triangle"), Counts.of(maps.size(), "material"), maps),
+                        cameraLine) : List.of(cameraLine));
         return 0;
     }
 }

@@ -1,6 +1,7 @@
 package dev.trisect.cli;
 
 import dev.trisect.base.InputException;
+import dev.trisect.base.internal.Counts;
 import dev.trisect.render.FrameStats;
 import dev.trisect.render.Framebuffer;
 
@@ -24,7 +25,7 @@ final class Frames {
      */
     static void noteSkipped(CommonOptions common, FrameStats stats) {
         if (stats.skippedInvalid() > 0) {
-            common.note(stats.skippedInvalid() + " of " + stats.trianglesIn() + " triangles skipped: coordinates "
+            common.note(stats.skippedInvalid() + " of " + Counts.of(stats.trianglesIn(), "triangle") + " skipped: coordinates "
                     + "not finite, or too far from the view to place in double precision (see "
                     + "docs/reading-limits.md)");
         }

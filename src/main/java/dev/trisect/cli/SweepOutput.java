@@ -1,5 +1,6 @@
 package dev.trisect.cli;
 
+import dev.trisect.base.internal.Counts;
 import dev.trisect.base.internal.JsonObject;
 import dev.trisect.perf.Sweep;
 import dev.trisect.render.SplitPolicy;
@@ -21,8 +22,8 @@ final class SweepOutput {
 
     List<String> table(Sweep.Result r) {
         List<String> lines = new ArrayList<>();
-        lines.add(String.format(Locale.ROOT, "scene %s, %s, %d threads, %d frames per setting", scene, size, threads,
-                r.perspective().times().frames()));
+        lines.add(String.format(Locale.ROOT, "scene %s, %s, %s, %s per setting", scene, size,
+                Counts.of(threads, "thread"), Counts.of(r.perspective().times().frames(), "frame")));
         lines.add(String.format(Locale.ROOT, "%-12s %10s %10s %10s %12s %12s", "setting", "median ms", "vs pp",
                 "pieces", "max disp px", "p99 disp px"));
         double reference = r.perspective().times().medianMs();

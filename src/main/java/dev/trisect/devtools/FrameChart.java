@@ -1,5 +1,6 @@
 package dev.trisect.devtools;
 
+import dev.trisect.base.internal.Counts;
 import dev.trisect.view.internal.FrameTimes;
 import java.awt.BasicStroke;
 import java.awt.Color;
@@ -138,7 +139,7 @@ final class FrameChart extends JComponent {
             return "<html>Milliseconds per frame over the last 5 s, stacked by stage (they add up to the whole<br>"
                     + "frame). Hover a bar for its stages; click one to pause the chart and pick it.</html>";
         }
-        return "<html><b>" + (frames.length - 1 - i) + " frames before the newest</b><br>"
+        return "<html><b>" + Counts.of(frames.length - 1 - i, "frame") + " before the newest</b><br>"
                 + breakdown(frames[i], "<br>") + "</html>";
     }
 

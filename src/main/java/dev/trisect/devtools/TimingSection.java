@@ -1,5 +1,6 @@
 package dev.trisect.devtools;
 
+import dev.trisect.base.internal.Counts;
 import dev.trisect.render.RenderMode;
 import dev.trisect.view.internal.FrameSlot;
 import dev.trisect.view.internal.ViewController;
@@ -57,7 +58,7 @@ final class TimingSection implements ToolSection {
             pause.setSelected(true);
         }
         double[][] rows = chart.frames();
-        showPicked(index < 0 ? "" : (rows.length - 1 - index) + " frames before the newest: "
+        showPicked(index < 0 ? "" : Counts.of(rows.length - 1 - index, "frame") + " before the newest: "
                 + FrameChart.breakdown(rows[index], ", ").replaceFirst(" ms, ", " ms = "));
         chart.show(rows, index);
     }

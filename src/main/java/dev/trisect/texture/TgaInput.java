@@ -1,6 +1,7 @@
 package dev.trisect.texture;
 
 import dev.trisect.base.InputException;
+import dev.trisect.base.internal.Counts;
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -93,7 +94,7 @@ final class TgaInput {
         long pixels = (long) width * height;
         long minimum = imageType < 9 ? pixels * bytesPerPixel : (pixels + 127) / 128 * (1 + bytesPerPixel);
         if (size - pixelDataOffset < minimum) {
-            throw error("truncated: the pixel data needs at least " + minimum + " bytes, the file has "
+            throw error("truncated: the pixel data needs at least " + Counts.of(minimum, "byte") + ", the file has "
                     + Math.max(0, size - pixelDataOffset) + " after the header");
         }
         if (size >= pixelDataOffset + FOOTER_BYTES) {

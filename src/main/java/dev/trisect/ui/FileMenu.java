@@ -1,5 +1,6 @@
 package dev.trisect.ui;
 
+import dev.trisect.base.internal.Counts;
 import dev.trisect.content.DemoScenes;
 import dev.trisect.content.SceneAsset;
 import dev.trisect.content.SceneLoader;
@@ -141,7 +142,7 @@ final class FileMenu {
 
     /** The status line after a load: what was loaded, and the first note (a placeholder texture...) with how many follow. */
     static String loaded(Path file, int triangles, List<String> notes) {
-        String s = "Loaded " + file.getFileName() + " (" + triangles + " triangles)";
+        String s = "Loaded " + file.getFileName() + " (" + Counts.of(triangles, "triangle") + ")";
         return notes.isEmpty() ? s : s + ". " + standingNote(notes);
     }
 }

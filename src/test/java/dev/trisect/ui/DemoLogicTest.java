@@ -133,6 +133,7 @@ class DemoLogicTest {
     @Test
     void aLoadWithNotesSaysSoInTheStatusBar() {
         assertEquals("Loaded m.obj (2 triangles)", FileMenu.loaded(Path.of("m.obj"), 2, java.util.List.of()));
+        assertEquals("Loaded m.obj (1 triangle)", FileMenu.loaded(Path.of("m.obj"), 1, java.util.List.of()));
         // A placeholder texture's warning stays in the bar after the load message has gone.
         assertEquals(null, FileMenu.standingNote(java.util.List.of()));
         String note = FileMenu.standingNote(java.util.List.of("m.mtl:2: map_Kd: gone", "x"));
