@@ -126,6 +126,10 @@ class LauncherTest {
         Run alone = launch("demo", "--report", "r.json");
         assertEquals(2, alone.status(), alone.err());
         assertEquals("trisect: --report goes with --soak", alone.err().strip());
+        Run folder = launch("demo", "--soak", "1", "--report", "r.json/");
+        assertEquals(2, folder.status(), folder.err());
+        assertEquals("trisect: --report 'r.json/' ends with a separator, so it names a directory: give the name of "
+                + "the file to write", folder.err().strip());
         // Checked before anything else, the display included (this JVM has none).
         Path missing = Path.of("/nonexistent-trisect/r.json");
         Run bad = launch("demo", "--soak", "1", "--report", missing.toString());

@@ -80,7 +80,7 @@ final class BenchCommand extends SceneCommand {
                     + "(default: 0.125,0.25,0.5,1,2,4,8).")
     List<Double> errors;
 
-    @Option(names = "--plot", paramLabel = "FILE.png",
+    @Option(names = "--plot", paramLabel = "FILE.png", converter = Converters.OutputFileConverter.class,
             description = "With --sweep: also draw the cost/quality curve (one panel per policy) to this PNG; "
                     + "with --target-ms: the threshold and frame time of every frame.")
     Path plot;

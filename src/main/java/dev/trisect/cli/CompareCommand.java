@@ -39,7 +39,7 @@ final class CompareCommand extends SceneCommand {
             defaultValue = "perspective", description = "Reference path (default: ${DEFAULT-VALUE}).")
     RenderMode against;
 
-    @Option(names = "--heatmap", paramLabel = "FILE.png",
+    @Option(names = "--heatmap", paramLabel = "FILE.png", converter = Converters.OutputFileConverter.class,
             description = "Also write the exact displacement heat map: black nothing drawn, grey not comparable, "
                     + "then dark to bright up to --heatmap-max pixels.")
     Path heatmap;
@@ -54,7 +54,8 @@ final class CompareCommand extends SceneCommand {
                     + " decades below --heatmap-max, so that small and huge errors both show (default: ${DEFAULT-VALUE}).")
     String heatmapScale;
 
-    @Option(names = "--out", paramLabel = "FILE.png|FILE.ppm", description = "Also write the --mode image.")
+    @Option(names = "--out", paramLabel = "FILE.png|FILE.ppm", converter = Converters.OutputFileConverter.class,
+            description = "Also write the --mode image.")
     Path out;
 
     @Override

@@ -9,6 +9,8 @@ import dev.trisect.render.SplitPoint;
 import dev.trisect.render.SplitPolicy;
 import dev.trisect.render.TessellationSettings;
 import dev.trisect.texture.TextureFilter;
+import java.io.File;
+import java.nio.file.Path;
 import java.util.Locale;
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.TypeConversionException;
@@ -74,6 +76,23 @@ final class Converters {
                 }
             }
             throw new TypeConversionException(quote(value) + " is not a point: use three finite numbers x,y,z, e.g. 0,1.7,6");
+        }
+    }
+
+    /**
+     * The name of a file to write. A name the user ended with a separator ({@code out.png/}) names a
+     * directory, and is refused: {@link java.nio.file.Path} drops the separator, so {@code out.png/}
+     * would otherwise write the file {@code out.png} where the user meant a folder, or typed one
+     * character too many.
+     */
+    static final class OutputFileConverter implements ITypeConverter<Path> {
+        @Override
+        public Path convert(String value) {
+            if (value.endsWith("/") || value.endsWith(File.separator)) {
+                throw new TypeConversionException(quote(value) + " ends with a separator, so it names a directory: "
+                        + "give the name of the file to write");
+            }
+            return Path.of(value);
         }
     }
 

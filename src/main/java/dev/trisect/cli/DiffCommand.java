@@ -49,7 +49,8 @@ final class DiffCommand implements Callable<Integer> {
     @Option(names = "--reference-uv", required = true, paramLabel = "FILE.pfm", description = "Reference UV output.")
     Path referenceUv;
 
-    @Option(names = "--heatmap", paramLabel = "FILE.png", description = "Also write the heat map of the displacement estimate.")
+    @Option(names = "--heatmap", paramLabel = "FILE.png", converter = Converters.OutputFileConverter.class,
+            description = "Also write the heat map of the displacement estimate.")
     Path heatmap;
 
     @Option(names = "--heatmap-max", paramLabel = "PX", converter = Converters.PositiveConverter.class,

@@ -23,7 +23,8 @@ final class ExportCommand implements Callable<Integer> {
     @Mixin
     CommonOptions common;
 
-    @Option(names = "--to", paramLabel = "FILE.obj", description = "OBJ file to write (required unless --list-scenes).")
+    @Option(names = "--to", paramLabel = "FILE.obj", converter = Converters.OutputFileConverter.class,
+            description = "OBJ file to write (required unless --list-scenes).")
     Path to;
 
     @Override

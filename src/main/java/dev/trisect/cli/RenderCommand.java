@@ -19,11 +19,11 @@ import picocli.CommandLine.Option;
 @Command(name = "render", sortOptions = false, mixinStandardHelpOptions = true,
         description = "Render one frame of a scene or OBJ file to an image.")
 final class RenderCommand extends SceneCommand {
-    @Option(names = "--out", paramLabel = "FILE.png|FILE.ppm",
+    @Option(names = "--out", paramLabel = "FILE.png|FILE.ppm", converter = Converters.OutputFileConverter.class,
             description = "Image to write (required unless --list-scenes).")
     Path out;
 
-    @Option(names = "--uv-out", paramLabel = "FILE.pfm",
+    @Option(names = "--uv-out", paramLabel = "FILE.pfm", converter = Converters.OutputFileConverter.class,
             description = "Also write the UV output: per pixel the texel coordinates u*W, v*H and triangle index + 1 "
                     + "(PFM, see docs/conventions.md).")
     Path uvOut;

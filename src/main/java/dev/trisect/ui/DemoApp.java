@@ -154,6 +154,13 @@ public final class DemoApp implements Callable<Integer> {
         if (report != null && soak == null) {
             throw InputException.usage("--report goes with --soak");
         }
+        // As the command line's outputs: Path drops a trailing separator, so r.json/ (a folder, or a slip)
+        // would write the file r.json.
+        String given = report == null ? "" : spec.findOption("--report").originalStringValues().get(0);
+        if (given.endsWith("/") || given.endsWith(java.io.File.separator)) {
+            throw InputException.usage("--report '" + given + "' ends with a separator, so it names a directory: "
+                    + "give the name of the file to write");
+        }
         // What to open is checked before the display, so that a typo is named even where no window can open;
         // --obj with --scene would silently drop one of them.
         if (obj != null && spec.commandLine().getParseResult().hasMatchedOption("--scene")) {

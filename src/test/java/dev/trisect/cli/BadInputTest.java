@@ -109,6 +109,43 @@ class BadInputTest {
                 "cannot write");
     }
 
+    /**
+     * An output the user ended with a separator names a directory: refused, where Path's dropping the
+     * separator wrote the file {@code o.png} with exit 0.
+     */
+    @ParameterizedTest(name = "{0} {1}")
+    @CsvSource(delimiter = '|', value = {
+        "render|--out|o.png",
+        "render|--uv-out|uv.pfm",
+        "compare|--heatmap|h.png",
+        "compare|--out|o.png",
+        "diff|--heatmap|h.png",
+        "export|--to|e.obj",
+        "bench|--plot|p.png"
+    })
+    void anOutputEndingWithASeparatorIsRefused(String command, String option, String name) throws IOException {
+        List<String> args = new ArrayList<>(List.of(command, option, dir.resolve(name) + "/"));
+        if (command.equals("render") && !option.equals("--out")) {
+            args.addAll(List.of("--out", dir.resolve("o.png").toString()));
+        }
+        if (command.equals("diff")) {
+            Path t = texture();
+            Path uv = dir.resolve("uv.pfm");
+            byte[] header = "PF\n2 2\n-1\n".getBytes(StandardCharsets.US_ASCII);
+            Files.write(uv, java.util.Arrays.copyOf(header, header.length + 2 * 2 * 3 * 4));
+            args.addAll(List.of("--image", t.toString(), "--uv", uv.toString(), "--reference", t.toString(),
+                    "--reference-uv", uv.toString()));
+        }
+        if (command.equals("bench")) {
+            args.addAll(List.of("--sweep", "--frames", "1", "--warmup", "0"));
+        }
+        args.addAll(command.equals("diff") || command.equals("export") ? List.of() : List.of("--size", "8x8"));
+        CliRun r = CliRun.of(args.toArray(String[]::new));
+        usage(r, "Invalid value for option '" + option + "': '" + dir.resolve(name) + "/' ends with a separator, so "
+                + "it names a directory: give the name of the file to write");
+        assertFalse(Files.exists(dir.resolve(name)), name + " must not be written");
+    }
+
     @Test
     void missingObjFile() {
         unreadable(render("--obj", dir.resolve("missing.obj").toString()), "missing.obj");
