@@ -51,6 +51,31 @@ class FrameStatsTest {
         assertTrue(none.pixelsWritten() > back.pixelsWritten(), "back faces are drawn, then hidden or not");
     }
 
+    /** docs/conventions.md: front faces run counter-clockwise as the camera sees them. */
+    @Test
+    void aTriangleCounterClockwiseOnScreenIsAFrontFace() {
+        Camera cam = Camera.looking(new Vec3(0, 0, 3), Vec3.ZERO); // looking down -z, x right, y up
+        Vec3 left = new Vec3(-1, -1, 0);
+        Vec3 right = new Vec3(1, -1, 0);
+        Vec3 top = new Vec3(0, 1, 0);
+        RenderSettings back = RenderSettings.defaults().withMode(RenderMode.PERSPECTIVE);
+        FrameStats ccw = render(triangle(left, right, top), cam, back);
+        assertEquals(0, ccw.culledBackFace());
+        assertTrue(ccw.pixelsWritten() > 1000, ccw.toJson());
+        FrameStats cw = render(triangle(left, top, right), cam, back);
+        assertEquals(1, cw.culledBackFace());
+        assertEquals(0, cw.pixelsWritten());
+        FrameStats none = render(triangle(left, top, right), cam, back.withCull(CullMode.NONE));
+        assertEquals(ccw.pixelsWritten(), none.pixelsWritten(), "with culling off, the back face is drawn");
+    }
+
+    private static Mesh triangle(Vec3 a, Vec3 b, Vec3 c) {
+        MeshBuilder m = new MeshBuilder();
+        int t = m.uv(0, 0);
+        m.triangle(m.position(a), m.position(b), m.position(c), t, t, t);
+        return m.build();
+    }
+
     @Test
     void everyPieceIsAccountedFor() {
         MeshBuilder b = new MeshBuilder();
