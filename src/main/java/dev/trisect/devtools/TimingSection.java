@@ -112,7 +112,7 @@ final class TimingSection implements ToolSection {
                 g.setColor(Color.GRAY);
                 g.drawString("each path's engine time, last measured frame", 0, 11);
                 if (ms == null) {
-                    g.drawString("(measuring off)", 0, 27);
+                    g.drawString("(nothing measured in this scene yet)", 0, 27);
                     return;
                 }
                 double top = 1;

@@ -13,6 +13,7 @@ import dev.trisect.render.Framebuffer;
 import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.scene.Camera;
+import dev.trisect.scene.Scene;
 import dev.trisect.scene.internal.DrawnFrame;
 
 /**
@@ -205,7 +206,8 @@ public final class RenderLoop implements Runnable {
         }
         // One consistent snapshot of the scene for every render of this frame; the draws are the slot's
         // own, so that a click on the frame on screen is picked against what that frame drew.
-        DrawnFrame drawn = new DrawnFrame(state.scene().snapshot(), camera, fw, fh, back.draws);
+        Scene scene = state.scene();
+        DrawnFrame drawn = new DrawnFrame(scene.snapshot(), camera, fw, fh, back.draws);
         Draws draws = back.draws;
         if (!state.toolsOpen() && settings.view() != ViewKind.IMAGE) {
             // The comparison views belong to the developer tools: never shown (nor paid for) without them.
@@ -245,7 +247,7 @@ public final class RenderLoop implements Runnable {
         back.stats = renderer.render(draws, render.withBorders(false), fb);
         if (paths != null) {
             paths[settings.render().mode().ordinal()] = back.stats.totalNanos() / 1e6;
-            state.pathMs(paths);
+            state.pathMs(paths, scene);
         }
         long afterThisPath = System.nanoTime();
         state.budgetChoice(budget.frameDone(back.stats));
@@ -270,7 +272,7 @@ public final class RenderLoop implements Runnable {
             // The settings the frame was drawn with (the budget may have chosen the threshold), so that the
             // copied compare command reproduces these numbers.
             state.measurement(new ViewState.Measurement(c, back.serial, camera, settings.withRender(render), fw, fh,
-                    System.nanoTime()));
+                    System.nanoTime()), scene);
         } else if (settings.view() == ViewKind.DIFFERENCE) {
             // Between measurements the heat map needs only the displacements, at a fraction of the cost.
             ImageComparison.displacements(fw, fh, fb.uv(), reference.uv(),

@@ -135,9 +135,16 @@ public final class ViewState {
         return scene;
     }
 
-    /** Shows another scene from the next frame on; the camera stays where it is. */
-    public void scene(Scene s) {
+    /**
+     * Shows another scene from the next frame on; the camera stays where it is. The last measurement
+     * and each path's time described the scene shown before: they go, so that the developer tools
+     * neither show them for this one nor copy a compare command that names this scene with the other's
+     * camera and numbers (as they did with measuring off, or until the next measurement).
+     */
+    public synchronized void scene(Scene s) {
         scene = s;
+        measurement = null;
+        pathMs = null;
     }
 
     /** Puts the camera here from the next frame on, and makes it the one R returns to. */
@@ -188,8 +195,11 @@ public final class ViewState {
         return measurement;
     }
 
-    public void measurement(Measurement m) {
-        measurement = m;
+    /** Render thread: the comparison of a frame of {@code drawn}, kept unless another scene is shown since. */
+    public synchronized void measurement(Measurement m, Scene drawn) {
+        if (drawn == scene) {
+            measurement = m;
+        }
     }
 
     /** Points the inspector at frame pixel (x, y), or turns it off with a negative x. */
@@ -206,8 +216,11 @@ public final class ViewState {
         return pathMs;
     }
 
-    public void pathMs(double[] ms) {
-        pathMs = ms;
+    /** Render thread: each path's time on a frame of {@code drawn}, kept unless another scene is shown since. */
+    public synchronized void pathMs(double[] ms, Scene drawn) {
+        if (drawn == scene) {
+            pathMs = ms;
+        }
     }
 
     public boolean toolsOpen() {

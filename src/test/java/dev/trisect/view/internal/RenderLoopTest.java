@@ -216,4 +216,37 @@ class RenderLoopTest {
         }), "no rows when not measuring");
         assertEquals(List.of(RenderMode.PERSPECTIVE), drawn, "only the reference then");
     }
+
+    @Test
+    void aMeasurementGoesWithTheSceneItMeasured() throws Exception {
+        // The trial's steps: measure the demo, untick measuring, open the floor, copy the compare command.
+        // It named the floor with the demo's camera and the demo's numbers (3.129 px shown, 3.433 px run).
+        ViewState state = new ViewState(DemoScenes.demo());
+        state.viewSize(160, 90);
+        ViewSettings settings = ViewSettings.defaults();
+        ViewState.Measurement m = measure(state, settings);
+        assertNotNull(state.pathMs());
+        state.settings(settings.withCompare(false));
+        state.scene(AssetScenes.scene(DemoScenes.floor()));
+        TripleBuffer buffers = new TripleBuffer();
+        RenderLoop loop = new RenderLoop(state, buffers, () -> { }, 1);
+        Thread t = new Thread(loop, "test-render");
+        t.start();
+        try {
+            long from = state.progress().frames();
+            for (int poll = 0; poll < 1500 && state.progress().frames() < from + 3; poll++) {
+                Thread.sleep(20);
+            }
+        } finally {
+            loop.stop();
+            t.join(5000);
+        }
+        assertEquals(null, state.measurement(), "the demo's numbers are not the floor's: nothing to show or copy");
+        assertEquals(null, state.pathMs(), "nor each path's time");
+        // A frame of the old scene that finishes after the change does not bring its numbers back.
+        state.measurement(m, AssetScenes.scene(DemoScenes.demo()));
+        assertEquals(null, state.measurement());
+        state.measurement(m, state.scene());
+        assertEquals(m, state.measurement(), "a frame of the scene shown is kept");
+    }
 }
