@@ -37,7 +37,7 @@ class FilterCommandTest {
 
     @Test
     void eachFilterRendersInEachPathWithTheSameUvOutput() throws IOException {
-        for (String mode : new String[] {"perspective", "affine", "tessellated"}) {
+        for (String mode : new String[] {"perspective", "affine", "tessellated", "spans"}) {
             Frame nearest = render(mode, "nearest");
             Frame bilinear = render(mode, "bilinear");
             Frame trilinear = render(mode, "trilinear");
