@@ -123,6 +123,10 @@ final class FrameOptions {
         if (!(n < f)) {
             throw InputException.usage("--near (" + n + ") must be less than --far (" + f + ")");
         }
+        if (!(f <= Camera.maxFar(n))) {
+            throw InputException.usage("--far " + f + " is too large for --near " + n + ": the projection needs "
+                    + "2 x near x far to be a finite double, so --far may be at most " + Camera.maxFar(n));
+        }
         Vec3 e = eye != null ? eye : own.eye();
         Vec3 t = target != null ? target : own.target();
         if (e.equals(t)) {

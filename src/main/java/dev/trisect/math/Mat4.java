@@ -90,9 +90,12 @@ public final class Mat4 {
      * @param fovYDegrees vertical field of view, degrees, in (0, 180)
      * @param aspect      width / height of the viewport
      * @param near        distance to the near plane, view-space units, &gt; 0
-     * @param far         distance to the far plane, view-space units, &gt; near
+     * @param far         distance to the far plane, view-space units, &gt; near; the matrix holds
+     *                    {@code 2 * near * far} and {@code far + near}, which must be finite doubles
+     *                    (see {@code Camera.maxFar}): with a near up to 0.5, any finite far
      * @return the projection matrix
-     * @throws IllegalArgumentException when a value is outside its range or not finite
+     * @throws IllegalArgumentException when a value is outside its range or not finite, or the matrix
+     *                                  would not be
      */
     public static Mat4 perspective(double fovYDegrees, double aspect, double near, double far) {
         // Each as Camera checks it; here too, since a matrix of infinities or NaN would draw nothing, silently.
@@ -102,10 +105,18 @@ public final class Mat4 {
                     + "0 < near < far finite, got " + fovYDegrees + ", " + aspect + ", " + near + ", " + far);
         }
         double f = 1.0 / Math.tan(Math.toRadians(fovYDegrees) / 2);
+        double depthScale = (far + near) / (near - far);
+        // 2 * near first: 2 * far overflowed for every far above Double.MAX_VALUE / 2, and the frame drew
+        // nothing (every triangle skipped). Doubling is exact, so the product's bits are unchanged otherwise.
+        double depthOffset = 2 * near * far / (near - far);
+        if (!Double.isFinite(depthScale) || !Double.isFinite(depthOffset)) {
+            throw new IllegalArgumentException("perspective: near " + near + " and far " + far + " overflow the "
+                    + "projection (2 x near x far and far + near must be finite doubles)");
+        }
         return ofRows(
                 f / aspect, 0, 0, 0,
                 0, f, 0, 0,
-                0, 0, (far + near) / (near - far), 2 * far * near / (near - far),
+                0, 0, depthScale, depthOffset,
                 0, 0, -1, 0);
     }
 

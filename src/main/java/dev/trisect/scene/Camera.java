@@ -14,7 +14,8 @@ import dev.trisect.math.Viewport;
  *               any finite magnitude (only its direction is used)
  * @param fovY   vertical field of view, degrees, in (0, 180)
  * @param near   distance to the near plane, world units, &gt; 0
- * @param far    distance to the far plane, world units, &gt; near
+ * @param far    distance to the far plane, world units, &gt; near and at most {@link #maxFar maxFar(near)}
+ *               (any finite far when near is at most 0.5)
  */
 public record Camera(Vec3 eye, Vec3 target, Vec3 up, double fovY, double near, double far) {
 
@@ -57,6 +58,10 @@ public record Camera(Vec3 eye, Vec3 target, Vec3 up, double fovY, double near, d
         if (!(far > near) || Double.isInfinite(far)) {
             throw new IllegalArgumentException("near (" + near + ") must be less than far (" + far + ")");
         }
+        if (!(far <= maxFar(near))) {
+            throw new IllegalArgumentException("far (" + far + ") is too large for near (" + near + "): the "
+                    + "projection needs 2 x near x far to be a finite double, so far may be at most " + maxFar(near));
+        }
         // The view direction is target - eye normalized; its length must neither overflow nor vanish
         // (squared, as the length is computed) in double precision.
         double distance = target.sub(eye).length();
@@ -76,6 +81,27 @@ public record Camera(Vec3 eye, Vec3 target, Vec3 up, double fovY, double near, d
         if (forward.cross(up.normalize()).length() < 1e-9) {
             throw new IllegalArgumentException("up (" + up + ") is parallel to the view direction");
         }
+    }
+
+    /**
+     * The largest far distance a camera with this near distance can have: the projection holds
+     * {@code 2 * near * far} and {@code far + near}, and both must be finite doubles. Double.MAX_VALUE
+     * for every near up to 0.5; about {@code Double.MAX_VALUE / (2 * near)} above.
+     *
+     * @param near distance to the near plane, world units, &gt; 0 and finite
+     * @return the largest far, world units
+     * @throws IllegalArgumentException when near is not a positive finite number
+     */
+    public static double maxFar(double near) {
+        if (!(near > 0) || Double.isInfinite(near)) {
+            throw new IllegalArgumentException("near must be a positive number, got " + near);
+        }
+        double far = Math.min(Double.MAX_VALUE, Double.MAX_VALUE / (2 * near));
+        // The quotient can round up by an ulp, past the last far whose product is finite.
+        while (!Double.isFinite(2 * near * far) || !Double.isFinite(far + near)) {
+            far = Math.nextDown(far);
+        }
+        return far;
     }
 
     /**

@@ -84,6 +84,24 @@ class BadInputTest {
         usage(render("--near", "2000"), "must be less than --far (1000.0)");
     }
 
+    /**
+     * --far 1.7e308 skipped every triangle (2 * far overflowed in the projection); now it draws what
+     * --far 1e307 draws, and a far whose projection overflows with the given near is refused, naming the limit.
+     */
+    @Test
+    void anyFiniteFarDrawsWithTheDefaultNearAndAnOverflowingOneIsRefused() throws IOException {
+        CliRun huge = CliRun.of("render", "--size", "32x24", "--far", "1.7e308", "--stats", "--out",
+                dir.resolve("huge.png").toString());
+        assertEquals(0, huge.status(), huge.err());
+        assertTrue(huge.out().contains("\"skipped_invalid\":0,"), huge.out());
+        assertEquals(0, render("--far", "1e307").status());
+        assertEquals(java.util.Arrays.toString(dev.trisect.texture.TextureReader.read(dir.resolve("o.png")).argb()),
+                java.util.Arrays.toString(dev.trisect.texture.TextureReader.read(dir.resolve("huge.png")).argb()));
+        usage(render("--near", "1", "--far", "1e308"), "--far 1.0E308 is too large for --near 1.0: the projection "
+                + "needs 2 x near x far to be a finite double, so --far may be at most 8.988465674311579E307");
+        assertEquals(0, render("--near", "1", "--far", "8.988465674311579E307").status());
+    }
+
     @Test
     void threadCountIsChecked() {
         usage(CliRun.of("render", "--size", "8x8", "--threads", "0", "--out", dir.resolve("o.png").toString()),

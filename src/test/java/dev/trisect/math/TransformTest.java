@@ -68,4 +68,19 @@ class TransformTest {
         assertEquals(1, Mat4.lookAt(Vec3.ZERO, new Vec3(0, 0, -1), Vec3.UP).get(2, 2)); // looking down -z: the identity
         assertEquals(1, Mat4.perspective(90, 1, 1, 2).get(1, 1), 1e-15);
     }
+
+    /**
+     * A far plane beyond Double.MAX_VALUE / 2 overflowed 2 * far * near (computed with 2 * far first),
+     * and every triangle was skipped; near first, every finite far works with a near below 0.5. Where
+     * the product itself overflows, the matrix is refused instead of holding an infinity.
+     */
+    @Test
+    void everyFiniteFarWorksWithASmallNearAndAnOverflowIsRefused() {
+        Mat4 p = Mat4.perspective(60, 1, 0.1, Double.MAX_VALUE);
+        assertEquals(-1, p.get(2, 2));
+        assertEquals(-0.2, p.get(2, 3), 1e-15);
+        assertThrows(IllegalArgumentException.class, () -> Mat4.perspective(60, 1, 1, 1e308));
+        // Below the overflow, the same bits as the old order: doubling is exact.
+        assertEquals(2 * 1000.0 * 0.1 / (0.1 - 1000), Mat4.perspective(60, 1, 0.1, 1000).get(2, 3));
+    }
 }
