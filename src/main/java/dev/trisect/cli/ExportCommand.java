@@ -68,6 +68,12 @@ final class ExportCommand implements Callable<Integer> {
 
     private int export(OutputBatch batch) {
         SceneAsset scene = frame.loadScene(common::note);
+        // Its MTL and textures go beside the OBJ under names of their own (to.mtl, to-material.ppm): any of
+        // them can be a file the scene was read from (mtllib to.mtl), and is checked before anything is written.
+        for (Path out : ObjWriter.files(to, scene.mesh())) {
+            Outputs.checkNotInput(out, "the --texture input", frame.texture);
+            Outputs.checkNotSceneInput(out, scene);
+        }
         var camera = frame.camera(scene);
         String cameraLine = String.format("camera: --eye %s --target %s --up %s --fov %s --near %s --far %s",
                 camera.eye(), camera.target(), camera.up(), camera.fovY(), camera.near(), camera.far());

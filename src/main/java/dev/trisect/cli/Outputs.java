@@ -1,6 +1,7 @@
 package dev.trisect.cli;
 
 import dev.trisect.base.InputException;
+import dev.trisect.content.SceneAsset;
 import dev.trisect.io.OutputBatch;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -117,6 +118,16 @@ final class Outputs {
         if (same) {
             throw InputException.usage(output + " is also " + what + "; an output may not "
                     + "replace an input (write it under another name)");
+        }
+    }
+
+    /**
+     * An output must not replace a file the scene was read from: the OBJ's material libraries and
+     * textures, known only once it is read (checked then, before any work on the frame or the export).
+     */
+    static void checkNotSceneInput(Path output, SceneAsset scene) {
+        for (Path in : scene.inputs()) {
+            checkNotInput(output, "an input of " + scene.name() + " (a material library or texture it names)", in);
         }
     }
 

@@ -53,11 +53,9 @@ abstract class SceneCommand implements Callable<Integer> {
                 }
             }
             SceneAsset scene = frame.loadScene(common::note);
-            // The textures an OBJ's materials name are known only now, before any rendering.
+            // The material libraries and textures an OBJ names are known only now, before any rendering.
             for (Path out : outputs()) {
-                for (Path in : scene.inputs()) {
-                    Outputs.checkNotInput(out, "an input of " + scene.name() + " (a texture it names)", in);
-                }
+                Outputs.checkNotSceneInput(out, scene);
             }
             return run(scene, frame.camera(scene), batch);
         }

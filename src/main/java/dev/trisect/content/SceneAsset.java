@@ -15,8 +15,8 @@ import java.util.List;
  * @param textures    one texture per material, in the mesh's material order
  * @param camera      the scene's own camera, used when the user gives none
  * @param source      the OBJ file it was read from, or null for a built-in scene
- * @param inputs      every file it was read from (the OBJ and its textures; the MTL files are not
- *                    listed), absolute: what an output must not replace. Empty for a built-in scene.
+ * @param inputs      every file it was read from (the OBJ, the MTL files it names and read, and its
+ *                    textures), absolute: what an output must not replace. Empty for a built-in scene.
  */
 public record SceneAsset(String name, String description, Mesh mesh, List<Texture> textures, Camera camera,
                     java.nio.file.Path source, List<java.nio.file.Path> inputs) {

@@ -56,6 +56,7 @@ public final class SceneLoader {
             for (Material m : object.materials()) {
                 textures.add(m.texture());
             }
+            inputs.addAll(model.materialLibraries());
             model.materialTextures().stream().filter(Objects::nonNull).distinct().forEach(inputs::add);
         }
         return new SceneAsset(String.valueOf(obj.getFileName()), "OBJ file " + obj, mesh, textures, frame(mesh),

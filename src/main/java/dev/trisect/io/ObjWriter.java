@@ -40,13 +40,10 @@ public final class ObjWriter {
      * is committed.
      */
     public static List<Path> write(OutputBatch batch, Path obj, Mesh mesh, List<Texture> textures) {
-        Path dir = obj.toAbsolutePath().getParent();
-        String base = obj.getFileName().toString().replaceFirst("\\.[^.]*$", "");
-        Path mtl = dir.resolve(base + ".mtl");
-        Path[] maps = new Path[mesh.materialCount()];
-        java.util.Set<String> taken = new java.util.HashSet<>();
+        List<Path> files = files(obj, mesh);
+        Path mtl = files.get(1);
+        Path[] maps = files.subList(2, files.size()).toArray(Path[]::new);
         for (int m = 0; m < maps.length; m++) {
-            maps[m] = dir.resolve(unique(base + "-" + safe(mesh.materialNames().get(m)), taken) + ".ppm");
             Texture t = textures.get(m);
             ImageFiles.write(batch, maps[m], t.width(), t.height(), t.argb());
         }
@@ -87,6 +84,26 @@ public final class ObjWriter {
             }
         });
         return List.of(maps);
+    }
+
+    /**
+     * The files {@link #write} writes for {@code obj}, known before writing (so that a command can check
+     * them against its inputs first): the OBJ, its MTL beside it, then one PPM per material, in the
+     * mesh's material order, named after the OBJ and the material.
+     *
+     * @param obj  the OBJ file to write
+     * @param mesh the mesh, for its material names
+     * @return the OBJ, the MTL and the textures, absolute
+     */
+    public static List<Path> files(Path obj, Mesh mesh) {
+        Path dir = obj.toAbsolutePath().getParent();
+        String base = obj.getFileName().toString().replaceFirst("\\.[^.]*$", "");
+        List<Path> files = new java.util.ArrayList<>(List.of(obj.toAbsolutePath(), dir.resolve(base + ".mtl")));
+        java.util.Set<String> taken = new java.util.HashSet<>();
+        for (String material : mesh.materialNames()) {
+            files.add(dir.resolve(unique(base + "-" + safe(material), taken) + ".ppm"));
+        }
+        return files;
     }
 
     /**

@@ -5,7 +5,8 @@ import java.io.IOException;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.HashMap;
-import java.util.HashSet;
+import java.util.LinkedHashSet;
+import java.util.List;
 import java.util.Map;
 import java.util.Set;
 
@@ -27,7 +28,8 @@ final class MtlLibraries {
     private final Map<String, String> textureSources = new HashMap<>();
     /** Each material's map_Kd {@code -s} and {@code -o}: {su, sv, ou, ov}; absent for none. */
     private final Map<String, float[]> uvTransforms = new HashMap<>();
-    private final Set<Path> librariesRead = new HashSet<>();
+    /** Absolute and normalized, in the order the OBJ names them. */
+    private final Set<Path> librariesRead = new LinkedHashSet<>();
 
     MtlLibraries(Path obj, LineScanner objLines) {
         this.obj = obj;
@@ -42,6 +44,11 @@ final class MtlLibraries {
     /** Where the texture of {@code material} was given, as {@code mtl-file:line}, or null. */
     String source(String material) {
         return textureSources.get(material);
+    }
+
+    /** The libraries read, absolute and normalized, in the order the OBJ named them. */
+    List<Path> files() {
+        return List.copyOf(librariesRead);
     }
 
     boolean hasUvTransforms() {

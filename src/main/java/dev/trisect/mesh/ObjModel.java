@@ -17,19 +17,24 @@ import java.util.Objects;
  *                         Unmodifiable; may contain nulls.
  * @param textureSources   one entry per material, same order: where its {@code map_Kd} was given, as
  *                         {@code mtl-file:line} for messages, or null where there is none. Unmodifiable.
+ * @param materialLibraries the MTL files read for it ({@code mtllib}), absolute and normalized, in
+ *                         the order the OBJ names them; empty when none was read. Unmodifiable.
  */
-public record ObjModel(Mesh mesh, List<Path> materialTextures, List<String> textureSources) {
+public record ObjModel(Mesh mesh, List<Path> materialTextures, List<String> textureSources,
+                       List<Path> materialLibraries) {
 
     /**
      * Checks that there is one entry per material in each list and keeps unmodifiable copies.
      *
-     * @param mesh             the triangles
-     * @param materialTextures each material's texture file, or null
-     * @param textureSources   where each material's texture was named, or null
+     * @param mesh              the triangles
+     * @param materialTextures  each material's texture file, or null
+     * @param textureSources    where each material's texture was named, or null
+     * @param materialLibraries the MTL files read
      * @throws IllegalArgumentException when a list's length is not the mesh's material count
      */
     public ObjModel {
         Objects.requireNonNull(mesh, "mesh");
+        materialLibraries = List.copyOf(materialLibraries);
         // List.copyOf rejects nulls, which mean "no texture" here.
         materialTextures = Collections.unmodifiableList(new ArrayList<>(materialTextures));
         textureSources = Collections.unmodifiableList(new ArrayList<>(textureSources));
@@ -37,6 +42,17 @@ public record ObjModel(Mesh mesh, List<Path> materialTextures, List<String> text
             throw new IllegalArgumentException(materialTextures.size() + " material textures and "
                     + textureSources.size() + " sources for " + mesh.materialCount() + " materials");
         }
+    }
+
+    /**
+     * A model read from no material library (the textures' sources given).
+     *
+     * @param mesh             the triangles
+     * @param materialTextures each material's texture file, or null
+     * @param textureSources   where each material's texture was named, or null
+     */
+    public ObjModel(Mesh mesh, List<Path> materialTextures, List<String> textureSources) {
+        this(mesh, materialTextures, textureSources, List.of());
     }
 
     /**

@@ -106,7 +106,7 @@ public final class ObjReader {
             materialTextures.add(libraries.texture(name));
             sources.add(libraries.source(name));
         }
-        return new ObjModel(built, materialTextures, sources);
+        return new ObjModel(built, materialTextures, sources, libraries.files());
     }
 
     private void vertex() {

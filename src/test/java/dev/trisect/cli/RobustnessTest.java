@@ -197,4 +197,43 @@ class RobustnessTest {
                 dir.resolve("r.ppm").toString());
         assertEquals(0, ok.status(), ok.err());
     }
+
+    /**
+     * The MTL files an OBJ reads are inputs too (found by the command-line trial: they were not checked):
+     * export --to e.obj writes e.mtl and e-MATERIAL.ppm beside it, and replaced the model's own e.mtl
+     * (mtllib e.mtl) or its texture e-a.ppm with exit 0; a render over an MTL file was not refused either.
+     * Each is refused now, before anything is written, and the model keeps its files.
+     */
+    @Test
+    void anOutputOverAnMtlFileOrATextureTheExportWritesIsRefused() throws IOException {
+        byte[] texture = "P6\n2 1\n255\n\377\0\0\0\0\377".getBytes(StandardCharsets.ISO_8859_1);
+        Files.write(dir.resolve("t.ppm"), texture);
+        String library = "newmtl a\nmap_Kd t.ppm\n";
+        Files.writeString(dir.resolve("e.mtl"), library);
+        Path obj = dir.resolve("m.obj");
+        String model = "mtllib e.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl a\nf 1/1 2/2 3/3\n";
+        Files.writeString(obj, model);
+        status(2, CliRun.of("export", "--obj", obj.toString(), "--to", dir.resolve("e.obj").toString()),
+                dir.resolve("e.mtl") + " is also an input of m.obj (a material library or texture it names)");
+        // An MTL file may have any name, an image's too.
+        Files.writeString(dir.resolve("lib.png"), library);
+        Path other = dir.resolve("other.obj");
+        Files.writeString(other, model.replace("e.mtl", "lib.png"));
+        status(2, CliRun.of("render", "--size", "8x8", "--obj", other.toString(), "--out",
+                dir.resolve("lib.png").toString()), "is also an input of other.obj");
+        // The exported textures are named after the OBJ and the material: t.obj's is t-a.ppm.
+        Files.write(dir.resolve("t-a.ppm"), texture);
+        Files.writeString(dir.resolve("e.mtl"), "newmtl a\nmap_Kd t-a.ppm\n");
+        status(2, CliRun.of("export", "--obj", obj.toString(), "--to", dir.resolve("t.obj").toString()),
+                dir.resolve("t-a.ppm") + " is also an input of m.obj");
+        status(2, CliRun.of("export", "--obj", obj.toString(), "--texture", dir.resolve("t-a.ppm").toString(),
+                "--to", dir.resolve("t.obj").toString()), "t-a.ppm is also the --texture input");
+        assertEquals("newmtl a\nmap_Kd t-a.ppm\n", Files.readString(dir.resolve("e.mtl")));
+        assertEquals(library, Files.readString(dir.resolve("lib.png")));
+        assertArrayEquals(texture, Files.readAllBytes(dir.resolve("t-a.ppm")));
+        assertEquals(List.of("e.mtl", "lib.png", "m.obj", "other.obj", "t-a.ppm", "t.ppm"), listing(dir),
+                "nothing else is written");
+        CliRun ok = CliRun.of("export", "--obj", obj.toString(), "--to", dir.resolve("x.obj").toString());
+        assertEquals(0, ok.status(), ok.err());
+    }
 }
