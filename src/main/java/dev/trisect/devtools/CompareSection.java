@@ -134,6 +134,15 @@ public final class CompareSection implements ToolSection {
         }
     }
 
+    /**
+     * A measure's text, or a dash where there was nothing to measure (NaN): no pixel that both paths
+     * drew with the same triangle, or none whose texture coordinates span an area (a model without
+     * texture coordinates). It read "NaN px" there, where {@code compare} prints null.
+     */
+    static String measure(String format, double value) {
+        return Double.isNaN(value) ? "\u2014" : String.format(Locale.ROOT, format, value);
+    }
+
     @Override
     public void refresh(ViewState.Progress progress, FrameSlot front, ViewState.Measurement m) {
         ViewSettings now = owner.state().settings();
@@ -149,13 +158,13 @@ public final class CompareSection implements ToolSection {
         }
         // Unticked, the last numbers stay, greyed, so that they can still be read (and copied).
         Comparison c = m.comparison();
-        form.set(MEASURES[0], String.format(Locale.ROOT, "%.3f px", c.maxDisplacement()));
-        form.set(MEASURES[1], String.format(Locale.ROOT, "%.3f px", c.p99Displacement()));
-        form.set(MEASURES[2], String.format(Locale.ROOT, "%.3f px", c.meanDisplacement())
+        form.set(MEASURES[0], measure("%.3f px", c.maxDisplacement()));
+        form.set(MEASURES[1], measure("%.3f px", c.p99Displacement()));
+        form.set(MEASURES[2], measure("%.3f px", c.meanDisplacement())
                 + (c.degenerateUvPixels() > 0 ? String.format(Locale.ROOT, " (%d px no UV area)", c.degenerateUvPixels())
                         : ""));
-        form.set(MEASURES[3], String.format(Locale.ROOT, "%.2f %%", 100 * c.texelDifferShare()));
-        form.set(MEASURES[4], Double.isInfinite(c.psnrDb()) ? "identical" : String.format(Locale.ROOT, "%.2f dB", c.psnrDb()));
+        form.set(MEASURES[3], measure("%.2f %%", 100 * c.texelDifferShare()));
+        form.set(MEASURES[4], Double.isInfinite(c.psnrDb()) ? "identical" : measure("%.2f dB", c.psnrDb()));
         form.set(MEASURES[5], String.format(Locale.ROOT, "%.1f s ago, %.0f ms", (System.nanoTime() - m.nanos()) / 1e9,
                 progress.compareMs()));
         if (now.render().mode() != m.settings().render().mode()) {

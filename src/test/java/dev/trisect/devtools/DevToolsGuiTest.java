@@ -9,6 +9,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import dev.trisect.GuiTests;
 import dev.trisect.content.AssetScenes;
 import dev.trisect.content.DemoScenes;
+import dev.trisect.content.SceneAsset;
+import dev.trisect.content.SceneLoader;
 import dev.trisect.render.RenderMode;
 import dev.trisect.view.TrisectView;
 import dev.trisect.view.internal.ViewController;
@@ -21,6 +23,8 @@ import java.awt.Robot;
 import java.awt.Window;
 import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -30,6 +34,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 /** The developer tools window with real clicks and key presses under an X server. */
 @Tag("gui")
@@ -184,5 +189,29 @@ class DevToolsGuiTest {
         }
         click(onEdt(folded::header));
         waitFor("the section to fold", () -> onEdt(() -> !folded.open()));
+    }
+
+    @Test
+    void aModelWithoutTextureCoordinatesReadsDashesWhereNothingWasMeasured(@TempDir Path dir) throws Exception {
+        // An OBJ without vt: every pixel's texture coordinates span no area, so no displacement exists;
+        // compare prints null for it, and the tools read "NaN px" (found by the demo trial).
+        Path obj = dir.resolve("flat.obj");
+        Files.writeString(obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        SceneAsset flat = SceneLoader.load(obj, null, note -> { }, true);
+        edt(() -> {
+            view.setScene(AssetScenes.scene(flat));
+            view.setCamera(flat.camera());
+        });
+        DevToolsPanel tools = onEdt(() -> dialog().panel());
+        waitFor("the flat model measured", () -> onEdt(() -> tools.readout("Mean displacement")).contains("no UV area"));
+        for (String k : CompareSection.MEASURES) {
+            String text = onEdt(() -> tools.readout(k));
+            assertTrue(!text.contains("NaN"), k + ": " + text);
+        }
+        assertEquals("\u2014", onEdt(() -> tools.readout("Max displacement")));
+        assertTrue(onEdt(() -> tools.readout("Mean displacement")).startsWith("\u2014 ("),
+                onEdt(() -> tools.readout("Mean displacement")));
+        assertEquals("\u2014", CompareSection.measure("%.2f %%", Double.NaN), "no pixel compared: no share");
+        assertEquals("0.50 %", CompareSection.measure("%.2f %%", 0.5));
     }
 }
