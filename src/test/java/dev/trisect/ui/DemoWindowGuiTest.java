@@ -205,9 +205,14 @@ class DemoWindowGuiTest {
         waitFor("the developer tools again", () -> onEdt(() -> devToolsWindow().isShowing()));
     }
 
+    /**
+     * This window's developer tools. Window.getWindows() also lists the disposed tools of views that
+     * other GUI test classes opened earlier in the same JVM (until they are collected), and lists them
+     * first: only the dialog this window owns is ours.
+     */
     private static JDialog devToolsWindow() {
         for (Window w : Window.getWindows()) {
-            if (w instanceof JDialog d && "Developer tools".equals(d.getTitle())) {
+            if (w instanceof JDialog d && d.getOwner() == window.frame() && "Developer tools".equals(d.getTitle())) {
                 return d;
             }
         }
