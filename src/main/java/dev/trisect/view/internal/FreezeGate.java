@@ -29,6 +29,8 @@ public final class FreezeGate {
     }
 
     private volatile boolean frozen;
+    /** Written by the render thread: whether its last answer was {@link Action#HOLD}. */
+    private volatile boolean holding;
     private final AtomicInteger steps = new AtomicInteger();
     /** Render thread only: what the frozen frame was drawn with. */
     private ViewSettings drawnSettings;
@@ -37,6 +39,16 @@ public final class FreezeGate {
 
     public boolean frozen() {
         return frozen;
+    }
+
+    /**
+     * Whether the render loop has answered {@link Action#HOLD} since it last drew: frozen, and the
+     * frame it drew last (a frame under way when {@link #freeze} was called included) is handed to
+     * the screen, with nothing new under way. {@link #frozen} alone does not say that frame is done.
+     * Any thread.
+     */
+    public boolean holding() {
+        return holding;
     }
 
     /** Event thread: freezes or thaws; thawing drops steps not yet taken. */
@@ -72,8 +84,10 @@ public final class FreezeGate {
         } else if (!settings.equals(drawnSettings) || size != drawnSize || inspected != drawnInspected) {
             a = Action.REDRAW;
         } else {
+            holding = true;
             return Action.HOLD;
         }
+        holding = false;
         drawnSettings = settings;
         drawnSize = size;
         drawnInspected = inspected;

@@ -26,11 +26,14 @@ class FreezeGateTest {
         ViewSettings a = ViewSettings.defaults();
         assertEquals(FreezeGate.Action.RUN, g.next(a, 1));
         g.freeze(true);
+        assertFalse(g.holding(), "frozen, but the loop has not yet come back from the frame it was drawing");
         assertEquals(FreezeGate.Action.HOLD, g.next(a, 1), "the frame last drawn stays");
+        assertTrue(g.holding());
         assertEquals(FreezeGate.Action.HOLD, g.next(a, 1));
         g.step();
         g.step();
         assertEquals(FreezeGate.Action.STEP, g.next(a, 1));
+        assertFalse(g.holding(), "a step is under way");
         assertEquals(FreezeGate.Action.STEP, g.next(a, 1));
         assertEquals(FreezeGate.Action.HOLD, g.next(a, 1), "one frame per step");
         ViewSettings b = a.withRender(a.render().withBorders(true));
@@ -60,7 +63,12 @@ class FreezeGateTest {
                 Thread.sleep(10);
             }
             state.freeze.freeze(true);
-            Thread.sleep(100);
+            // A frame under way still arrives: wait (bounded) until the loop holds, not a fixed 100 ms,
+            // which a frame can outlast on a loaded machine.
+            for (int poll = 0; poll < 1000 && !state.freeze.holding(); poll++) {
+                Thread.sleep(10);
+            }
+            assertTrue(state.freeze.holding(), "the loop holds the frozen frame");
             long frozenAt = state.progress().frames();
             Thread.sleep(300);
             assertEquals(frozenAt, state.progress().frames(), "no frames while frozen");
