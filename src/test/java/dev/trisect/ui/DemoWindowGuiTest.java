@@ -294,6 +294,9 @@ class DemoWindowGuiTest {
     @Order(5)
     void comparisonNumbersAppearAndAgreeWithTheCommandLine() throws Exception {
         press(KeyEvent.VK_3);
+        // The key reaches the event thread some time after the robot returns (longer under load): read
+        // the settings only once it has, or they are the spans path's, whose numbers the tools replace.
+        waitFor("the tessellated path", () -> state().settings().render().mode() == RenderMode.TESSELLATED);
         ViewSettings now = state().settings();
         waitFor("a measurement of the current settings", () -> {
             ViewState.Measurement m = state().measurement();
@@ -432,12 +435,11 @@ class DemoWindowGuiTest {
         press(KeyEvent.VK_SPACE);
         waitFor("frozen", () -> state().freeze.frozen());
         assertTrue(onEdt(() -> cmd(ViewAction.FREEZE).selected()), "the View menu shows it");
-        // A frame already being drawn when Space was pressed still arrives; wait until it is on screen.
-        waitFor("the last frame on screen", () -> {
-            long drawn = state().progress().frames();
-            Thread.sleep(300);
-            return drawn == state().progress().frames() && onEdt(() -> front().serial) == drawn;
-        });
+        // A frame already being drawn when Space was pressed still arrives; wait until the loop holds
+        // (that frame handed over) and it is on screen. A quiet spell of 300 ms was no proof: under load
+        // a frame of four paths and a comparison can take longer, and then arrived after "held".
+        waitFor("the last frame on screen", () -> state().freeze.holding()
+                && onEdt(() -> front().serial) == state().progress().frames());
         long held = onEdt(() -> front().serial);
         Thread.sleep(400);
         assertEquals(held, (long) onEdt(() -> front().serial), "no new frames while frozen");
