@@ -12,6 +12,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.ExecutionException;
+import java.util.function.Consumer;
+import java.util.function.Function;
 import javax.swing.Action;
 import javax.swing.JFileChooser;
 import javax.swing.JMenu;
@@ -32,6 +34,12 @@ final class FileMenu {
     private final JMenu recentMenu = new JMenu("Open recent");
     private final JMenu scenes = new JMenu("Built-in scene");
     final Action open;
+    /**
+     * Counts the scenes asked for (a model to load, a built-in scene): a load that finishes after
+     * another scene was asked for is dropped, so the last choice stays on screen. A large OBJ takes
+     * seconds to read, and a built-in scene chosen meanwhile was replaced by it when it came.
+     */
+    private long asked;
 
     FileMenu(DemoWindow window, RecentFiles recent) {
         this.window = window;
@@ -43,7 +51,10 @@ final class FileMenu {
         for (String name : DemoScenes.names()) {
             String label = name.substring(0, 1).toUpperCase(Locale.ROOT) + name.substring(1);
             scenes.add(new JMenuItem(action(label, DemoScenes.describe(name), null,
-                    () -> window.show(DemoScenes.byName(name).orElseThrow()))));
+                    () -> {
+                        asked++;
+                        window.show(DemoScenes.byName(name).orElseThrow());
+                    })));
         }
         rebuildRecent();
     }
@@ -100,17 +111,32 @@ final class FileMenu {
 
     /** Loads an OBJ in the background; the demo keeps running, and a bad file gets a dialog. */
     void load(Path file) {
+        // A lost texture does not reject the model here: a placeholder and a warning instead.
+        load(file, notes -> SceneLoader.load(file, null, notes, true));
+    }
+
+    /**
+     * As {@link #load(Path)}, reading the file with {@code reader} (given where notes go), on a
+     * background thread; its result is shown unless another scene is asked for before it comes.
+     *
+     * @return the load under way
+     */
+    SwingWorker<SceneAsset, Void> load(Path file, Function<Consumer<String>, SceneAsset> reader) {
         window.status("Loading " + file + " \u2026");
         List<String> notes = new ArrayList<>();
-        new SwingWorker<SceneAsset, Void>() {
+        long request = ++asked;
+        SwingWorker<SceneAsset, Void> worker = new SwingWorker<>() {
             @Override
             protected SceneAsset doInBackground() {
-                // A lost texture does not reject the model here: a placeholder and a warning instead.
-                return SceneLoader.load(file, null, notes::add, true);
+                return reader.apply(notes::add);
             }
 
             @Override
             protected void done() {
+                if (request != asked) {
+                    // Another scene was asked for while this one loaded: that one stays.
+                    return;
+                }
                 try {
                     SceneAsset s = get();
                     window.show(s);
@@ -131,7 +157,9 @@ final class FileMenu {
                     Thread.currentThread().interrupt();
                 }
             }
-        }.execute();
+        };
+        worker.execute();
+        return worker;
     }
 
     /** What the status bar keeps showing for a model loaded with these notes, or null for none. */
