@@ -189,17 +189,38 @@ final class BenchCommand extends SceneCommand {
                 lines.add(String.format(Locale.ROOT, "%-12s %10s %10s %10s %10s %8s %10s", "path", "median ms",
                         "min ms", "mean ms", "p95 ms", "fps", "pieces"));
             }
-            FrameBench bench = new FrameBench(renderer, scene, textures, vp, Frames.allocate(frame.size));
-            for (RenderMode mode : modes) {
-                RenderSettings settings = path.settings(frame).withMode(mode);
-                FrameBench.Result r = bench.time(settings, warmup, frames, progress.task(mode.id()));
-                lines.add(row(mode.id(), r, threads));
+            // Each row is printed as soon as its path is measured, not with the others at the end: a user who
+            // stops a long bench (Ctrl-C) keeps what was measured, and is told the table is short.
+            int total = modes.size() + (glref == null ? 0 : 1);
+            int[] measured = {0};
+            Thread notice = new Thread(() -> {
+                progress.close();
+                common.err().println("trisect: interrupted after measuring " + measured[0] + " of "
+                        + Counts.of(total, "path") + ": their rows are printed, the others are missing");
+                common.err().flush();
+            }, "trisect-bench-interrupted");
+            Runtime.getRuntime().addShutdownHook(notice);
+            try {
+                Results.print(common.out(), lines);
+                FrameBench bench = new FrameBench(renderer, scene, textures, vp, Frames.allocate(frame.size));
+                for (RenderMode mode : modes) {
+                    RenderSettings settings = path.settings(frame).withMode(mode);
+                    FrameBench.Result r = bench.time(settings, warmup, frames, progress.task(mode.id()));
+                    progress.close(); // erased before the row, which goes to the same terminal
+                    Results.print(common.out(), List.of(row(mode.id(), r, threads)));
+                    measured[0]++;
+                }
+                if (glref != null) {
+                    Results.print(common.out(), List.of(glrefRow(scene, textures[0], camera, threads)));
+                }
+            } finally {
+                try {
+                    Runtime.getRuntime().removeShutdownHook(notice);
+                } catch (IllegalStateException e) {
+                    // The program is being stopped: the notice runs.
+                }
             }
         }
-        if (glref != null) {
-            lines.add(glrefRow(scene, textures[0], camera, threads));
-        }
-        Results.print(common.out(), lines);
         return 0;
     }
 

@@ -156,4 +156,52 @@ class ProcessRobustnessTest {
         d.writeInt((int) crc.getValue());
         d.flush();
     }
+
+    /**
+     * Ctrl-C during bench kept nothing: the table was printed whole at the end (found by the command-line
+     * trial). Now each row is printed when its path is measured, and the signal adds a line saying the
+     * table is short, with the exit status of an interrupted program (130). The stand-in glref holds the
+     * run after the first path until the test has interrupted it.
+     */
+    @Test
+    @Timeout(value = 120, unit = TimeUnit.SECONDS)
+    void benchStoppedByCtrlCKeepsTheRowsMeasuredAndSaysItWasInterrupted() throws Exception {
+        Path status = Path.of("/proc/self/status");
+        assumeTrue(Files.exists(status) && Files.isExecutable(Path.of("/bin/kill")), "needs Linux and /bin/kill");
+        // A program started with SIGINT ignored (a background job of a shell without job control) passes
+        // that on to its children, whose JVM then leaves it ignored: nothing to test there.
+        String ignored = Files.readAllLines(status).stream().filter(l -> l.startsWith("SigIgn:")).findFirst()
+                .orElse("SigIgn: 0").substring(7).trim();
+        assumeTrue((Long.parseLong(ignored, 16) & 2) == 0, "SIGINT is ignored in this process");
+        Path glref = dir.resolve("held-glref.sh");
+        // Held until released, 60 s at most, so that a bench printing only at its end still ends.
+        Files.writeString(glref, "#!/bin/sh\nfor i in $(seq 600); do [ -e " + dir.resolve("release")
+                + " ] && break; sleep 0.1; done\necho 'ms_per_frame 1.0'\n");
+        glref.toFile().setExecutable(true);
+        Process p = java(dir, List.of("-Djava.awt.headless=true"), "dev.trisect.Trisect", "bench", "--scene", "floor",
+                "--size", "16x16", "--frames", "2", "--warmup", "0", "--threads", "1", "--modes", "affine",
+                "--glref", glref.toString());
+        var stdout = new java.io.BufferedReader(new java.io.InputStreamReader(p.getInputStream(),
+                StandardCharsets.UTF_8));
+        List<String> lines = new ArrayList<>();
+        long start = System.nanoTime();
+        for (String line; lines.size() < 3 && (line = stdout.readLine()) != null; ) {
+            lines.add(line);
+        }
+        assertTrue(System.nanoTime() - start < TimeUnit.SECONDS.toNanos(40) && p.isAlive(),
+                "the header and the affine row arrive while glref is held: " + lines);
+        assertEquals(3, lines.size(), lines.toString());
+        assertTrue(lines.get(2).startsWith("affine "), lines.toString());
+        try {
+            assertEquals(0, new ProcessBuilder("/bin/kill", "-INT", Long.toString(p.pid())).start().waitFor());
+            String err = drain(p);
+            assertEquals(130, p.exitValue(), err);
+            assertEquals("trisect: interrupted after measuring 1 of 2 paths: their rows are printed, the others are "
+                    + "missing", err.strip());
+            assertEquals(null, stdout.readLine(), "nothing more on standard output");
+        } finally {
+            Files.writeString(dir.resolve("release"), "");
+            p.destroyForcibly();
+        }
+    }
 }
