@@ -154,12 +154,23 @@ final class BenchCommand extends SceneCommand {
              ProgressLine progress = ProgressLine.forTerminal(common.err())) {
             threads = renderer.threads();
             if (sweep) {
-                Sweep.Result result = Sweep.run(renderer, scene, textures, vp, frame.size.width(),
-                        frame.size.height(), path.settings(frame), edges == null ? Sweep.DEFAULT_EDGES : edges,
-                        errors == null ? Sweep.DEFAULT_ERRORS : errors, warmup, frames, progress.task("sweep"));
-                progress.close();
+                List<Double> e = edges == null ? Sweep.DEFAULT_EDGES : edges;
+                List<Double> r = errors == null ? Sweep.DEFAULT_ERRORS : errors;
                 SweepOutput output = new SweepOutput(scene.name(), frame.size.toString(), threads);
-                lines.addAll(json ? output.json(result) : output.table(result));
+                Sweep.Result result;
+                // As the paths' rows below: each setting's row when it is measured, kept should the sweep be stopped.
+                try (InterruptNotice notice = new InterruptNotice(common.err(), progress,
+                        Sweep.settingsCount(e, r), "setting")) {
+                    Results.print(common.out(), json ? List.of() : output.header(frames));
+                    result = Sweep.run(renderer, scene, textures, vp, frame.size.width(), frame.size.height(),
+                            path.settings(frame), e, r, warmup, frames, progress.task("sweep"), p -> {
+                                progress.close();
+                                Results.print(common.out(), List.of(output.row(p, json)));
+                                notice.measured();
+                            });
+                }
+                progress.close();
+                lines.addAll(output.summary(result, json));
                 Results.deliver(common.out(), batch, b -> {
                     if (plot != null) {
                         SweepChart.write(b, result, scene.name() + " " + frame.size + ", " + Counts.of(threads, "thread"),
@@ -191,16 +202,8 @@ final class BenchCommand extends SceneCommand {
             }
             // Each row is printed as soon as its path is measured, not with the others at the end: a user who
             // stops a long bench (Ctrl-C) keeps what was measured, and is told the table is short.
-            int total = modes.size() + (glref == null ? 0 : 1);
-            int[] measured = {0};
-            Thread notice = new Thread(() -> {
-                progress.close();
-                common.err().println("trisect: interrupted after measuring " + measured[0] + " of "
-                        + Counts.of(total, "path") + ": their rows are printed, the others are missing");
-                common.err().flush();
-            }, "trisect-bench-interrupted");
-            Runtime.getRuntime().addShutdownHook(notice);
-            try {
+            try (InterruptNotice notice = new InterruptNotice(common.err(), progress,
+                    modes.size() + (glref == null ? 0 : 1), "path")) {
                 Results.print(common.out(), lines);
                 FrameBench bench = new FrameBench(renderer, scene, textures, vp, Frames.allocate(frame.size));
                 for (RenderMode mode : modes) {
@@ -208,16 +211,10 @@ final class BenchCommand extends SceneCommand {
                     FrameBench.Result r = bench.time(settings, warmup, frames, progress.task(mode.id()));
                     progress.close(); // erased before the row, which goes to the same terminal
                     Results.print(common.out(), List.of(row(mode.id(), r, threads)));
-                    measured[0]++;
+                    notice.measured();
                 }
                 if (glref != null) {
                     Results.print(common.out(), List.of(glrefRow(scene, textures[0], camera, threads)));
-                }
-            } finally {
-                try {
-                    Runtime.getRuntime().removeShutdownHook(notice);
-                } catch (IllegalStateException e) {
-                    // The program is being stopped: the notice runs.
                 }
             }
         }

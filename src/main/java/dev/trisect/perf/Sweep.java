@@ -107,13 +107,16 @@ public final class Sweep {
      * @param edges    edge-policy thresholds, pixels, each &gt; 0 (sorted here)
      * @param errors   error-policy thresholds, and the span path's max errors, pixels, each &gt; 0 (sorted here)
      * @param progress told after every frame of the whole sweep
+     * @param measured told each point as soon as it is measured, in the order of the result: the per-pixel
+     *                 path, the affine path, then the points
      */
     public static Result run(FrameRenderer renderer, SceneAsset scene, Texture[] textures, Mat4 viewProjection,
                              int width, int height, RenderSettings base, List<Double> edges, List<Double> errors,
-                             int warmup, int frames, FrameBench.Progress progress) {
+                             int warmup, int frames, FrameBench.Progress progress,
+                             java.util.function.Consumer<Point> measured) {
         List<Double> e = sortedPositive(edges, "edge");
         List<Double> r = sortedPositive(errors, "error");
-        int settingsCount = 2 + e.size() + 2 * r.size();
+        int settingsCount = settingsCount(e, r);
         int perSetting = warmup + frames + 1;
         int total = settingsCount * perSetting;
         FrameBench bench = new FrameBench(renderer, scene, textures, viewProjection, new Framebuffer(width, height));
@@ -134,8 +137,10 @@ public final class Sweep {
                     reference.uv(), exact, null);
             done[0] += perSetting;
             progress.frameDone(done[0], total);
-            return new Point(settings.mode(), policy, threshold, timed.times(), timed.last().pieces(),
+            Point p = new Point(settings.mode(), policy, threshold, timed.times(), timed.last().pieces(),
                     c.maxDisplacement(), c.p99Displacement());
+            measured.accept(p);
+            return p;
         };
         RenderSettings plain = base.withBorders(false);
         Point perspective = measure.run(plain.withMode(RenderMode.PERSPECTIVE), null, Double.NaN);
@@ -155,6 +160,18 @@ public final class Sweep {
                     error));
         }
         return new Result(perspective, affine, List.copyOf(points));
+    }
+
+    /**
+     * How many settings a sweep of these thresholds measures: the per-pixel and affine paths, each distinct
+     * edge threshold, and each distinct error threshold twice (tessellated and spans).
+     *
+     * @param edges  edge-policy thresholds, pixels
+     * @param errors error-policy thresholds, pixels
+     * @return the number of settings
+     */
+    public static int settingsCount(List<Double> edges, List<Double> errors) {
+        return 2 + (int) edges.stream().distinct().count() + 2 * (int) errors.stream().distinct().count();
     }
 
     @FunctionalInterface

@@ -183,4 +183,22 @@ class BenchCommandTest {
         assertEquals(header.indexOf("fps") + "fps".length(), row.indexOf("250.0") + "250.0".length(),
                 header + "\n" + row);
     }
+
+    /**
+     * bench and its sweep print each row when it is measured (the header first), so that Ctrl-C keeps what
+     * was measured (see ProcessRobustnessTest). Shown here by a standard output that is gone: the run stops
+     * at its first line, where it measured every setting first, a million frames each, before printing.
+     */
+    @Test
+    @org.junit.jupiter.api.Timeout(value = 60, unit = java.util.concurrent.TimeUnit.SECONDS)
+    void rowsArePrintedAsTheyAreMeasuredSoAClosedOutputStopsTheRunAtOnce() {
+        for (String[] mode : new String[][] {{"--modes", "perspective,affine"}, {"--sweep", "--errors", "1"}}) {
+            List<String> args = new ArrayList<>(List.of("bench", "--scene", "floor", "--size", "8x8", "--frames",
+                    "1000000", "--warmup", "0", "--threads", "1"));
+            args.addAll(List.of(mode));
+            CliRun r = CliRun.withFailingStdout("Broken pipe", args.toArray(String[]::new));
+            assertEquals(1, r.status(), r.err());
+            assertEquals("trisect: cannot write to standard output: Broken pipe", r.errLine());
+        }
+    }
 }
