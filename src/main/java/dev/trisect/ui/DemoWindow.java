@@ -11,6 +11,9 @@ import dev.trisect.view.ViewAction;
 import java.awt.BorderLayout;
 import java.awt.Dimension;
 import java.awt.Frame;
+import java.awt.GraphicsEnvironment;
+import java.awt.Rectangle;
+import java.awt.Window;
 import java.awt.event.ActionEvent;
 import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
@@ -104,8 +107,19 @@ final class DemoWindow {
             }
         });
         frame.pack();
-        frame.setLocation(0, 0);
+        fitTo(frame, GraphicsEnvironment.getLocalGraphicsEnvironment().getMaximumWindowBounds());
         refresh = new Timer(250, e -> refreshReadouts());
+    }
+
+    /**
+     * Puts the window in the top left of {@code usable} (the screen less its panels), no larger than
+     * it: the 1280x720 view and its bars come to 1280x767, more than a 1280x720 screen, a 1366x768 one
+     * less its panel, or a 2560x1440 one scaled 2x, where the status bar fell off the bottom. The view
+     * then gets the room left and renders at that size.
+     */
+    static void fitTo(Window window, Rectangle usable) {
+        window.setSize(Math.min(window.getWidth(), usable.width), Math.min(window.getHeight(), usable.height));
+        window.setLocation(usable.x, usable.y);
     }
 
     private static String title(SceneAsset scene) {

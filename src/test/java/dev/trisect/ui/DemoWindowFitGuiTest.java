@@ -1,0 +1,63 @@
+package dev.trisect.ui;
+
+import static dev.trisect.GuiTests.edt;
+import static dev.trisect.GuiTests.onEdt;
+import static dev.trisect.GuiTests.waitFor;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trisect.GuiTests;
+import dev.trisect.content.DemoScenes;
+import java.awt.BorderLayout;
+import java.awt.Component;
+import java.awt.Container;
+import java.awt.GraphicsEnvironment;
+import java.awt.Rectangle;
+import javax.swing.SwingUtilities;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+
+/** The demo window on the screen it gets, under an X server. */
+@Tag("gui")
+class DemoWindowFitGuiTest {
+    private DemoWindow window;
+
+    @AfterEach
+    void close() throws Exception {
+        if (window != null) {
+            SwingUtilities.invokeAndWait(() -> window.frame().dispose());
+        }
+    }
+
+    /** The status bar's bounds in the window's own coordinates. */
+    private Rectangle statusBar() throws Exception {
+        return onEdt(() -> {
+            Container content = window.frame().getContentPane();
+            Component bottom = ((BorderLayout) content.getLayout()).getLayoutComponent(BorderLayout.SOUTH);
+            return SwingUtilities.convertRectangle(content, bottom.getBounds(), window.frame());
+        });
+    }
+
+    @Test
+    void theWindowAndItsStatusBarFitTheScreen() throws Exception {
+        GuiTests.requireDisplay();
+        window = DemoApp.openForTest(DemoScenes.demo(), 1);
+        Rectangle usable = GraphicsEnvironment.getLocalGraphicsEnvironment().getMaximumWindowBounds();
+        Rectangle bounds = onEdt(() -> window.frame().getBounds());
+        assertTrue(usable.contains(bounds), bounds + " within the screen " + usable);
+        // The rule on a 1024x600 screen (this display is larger): on a 1280x720 one the 1280x767 window
+        // reached past the bottom and its status bar was off screen (found by the demo trial).
+        edt(() -> {
+            DemoWindow.fitTo(window.frame(), new Rectangle(0, 0, 1024, 600));
+            window.frame().validate();
+        });
+        assertEquals(new Rectangle(0, 0, 1024, 600), onEdt(() -> window.frame().getBounds()));
+        Rectangle bar = statusBar();
+        assertTrue(bar.height > 0 && bar.y + bar.height <= 600, "the status bar " + bar + " inside the window");
+        waitFor("frames at the view's new size", () -> {
+            var f = onEdt(() -> window.latest());
+            return f != null && f.height() < 600 && f.width() <= 1024;
+        });
+    }
+}
