@@ -77,6 +77,11 @@ class LauncherTest {
         Run bad = launch("demo", "--render-scale", "5");
         assertEquals(2, bad.status(), bad.err());
         assertEquals("trisect: --render-scale must be between 0.25 and 1, got 5.0", bad.err().strip());
+        // 0 is refused: the message read "between 0 and 1000", which 0 is (found by the demo trial).
+        Run zero = launch("demo", "--target-ms", "0");
+        assertEquals(2, zero.status(), zero.err());
+        assertEquals("trisect: --target-ms must be more than 0 and at most 1000 milliseconds, got 0.0",
+                zero.err().strip());
     }
 
     @Test

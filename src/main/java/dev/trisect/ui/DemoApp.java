@@ -146,7 +146,7 @@ public final class DemoApp implements Callable<Integer> {
             throw InputException.usage("--threads must be between 1 and 256, got " + n);
         }
         if (targetMs != null && !(targetMs > 0 && targetMs <= 1000)) {
-            throw InputException.usage("--target-ms must be between 0 and 1000 milliseconds, got " + targetMs);
+            throw InputException.usage("--target-ms must be more than 0 and at most 1000 milliseconds, got " + targetMs);
         }
         if (soak != null && soak < 1) {
             throw InputException.usage("--soak must be at least 1 second, got " + soak);

@@ -234,8 +234,8 @@ public class TrisectView extends JComponent implements AutoCloseable {
         } else if (milliseconds > 0 && milliseconds <= 1000) {
             state.budget(new ViewState.Budget(true, milliseconds));
         } else {
-            throw new IllegalArgumentException("frame time target must be between 0 and 1000 milliseconds, got "
-                    + milliseconds);
+            throw new IllegalArgumentException("frame time target must be more than 0 and at most 1000 milliseconds "
+                    + "(or 0 for none), got " + milliseconds);
         }
         controller.settingsChangedLater();
     }
