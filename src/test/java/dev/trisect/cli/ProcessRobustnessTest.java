@@ -175,7 +175,9 @@ class ProcessRobustnessTest {
         assumeTrue((Long.parseLong(ignored, 16) & 2) == 0, "SIGINT is ignored in this process");
         Path glref = dir.resolve("held-glref.sh");
         // Held until released, 60 s at most, so that a bench printing only at its end still ends.
-        Files.writeString(glref, "#!/bin/sh\nfor i in $(seq 600); do [ -e " + dir.resolve("release")
+        // It says when it starts: the test interrupts only then, while the run waits for it.
+        Path started = dir.resolve("started");
+        Files.writeString(glref, "#!/bin/sh\n: > " + started + "\nfor i in $(seq 600); do [ -e " + dir.resolve("release")
                 + " ] && break; sleep 0.1; done\necho 'ms_per_frame 1.0'\n");
         glref.toFile().setExecutable(true);
         Process p = java(dir, List.of("-Djava.awt.headless=true"), "dev.trisect.Trisect", "bench", "--scene", "floor",
@@ -193,6 +195,12 @@ class ProcessRobustnessTest {
         assertEquals(3, lines.size(), lines.toString());
         assertTrue(lines.get(2).startsWith("affine "), lines.toString());
         try {
+            // The affine row is printed before glref is run; interrupted in between, the run could also
+            // have been stopped while it prepared glref's files, which says so in a line of its own.
+            while (!Files.exists(started) && p.isAlive() && System.nanoTime() - start < TimeUnit.SECONDS.toNanos(60)) {
+                Thread.sleep(10);
+            }
+            assertTrue(Files.exists(started), "the held glref started");
             assertEquals(0, new ProcessBuilder("/bin/kill", "-INT", Long.toString(p.pid())).start().waitFor());
             String err = drain(p);
             assertEquals(130, p.exitValue(), err);
