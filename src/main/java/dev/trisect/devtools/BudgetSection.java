@@ -19,13 +19,18 @@ final class BudgetSection implements ToolSection {
     private boolean syncing;
     private final JCheckBox auto = new JCheckBox("Auto: hold the target frame time");
     private final NumberField target;
+    /**
+     * The smallest target the field takes: the view and {@code demo --target-ms} take any target above 0,
+     * and the field shows one decimal, so 0.1 ms is the least it can show as typed.
+     */
+    static final double MIN_TARGET_MS = 0.1;
 
     BudgetSection(ViewController owner) {
         this.state = owner.state();
-        target = new NumberField("Target ms", "ms", 1, 1000, this::publish, owner::message).decimals(1);
+        target = new NumberField("Target ms", "ms", MIN_TARGET_MS, 1000, this::publish, owner::message).decimals(1);
         auto.setToolTipText("Adjust the split threshold every frame to hold the target frame time (tessellated "
                 + "path); the max edge or max error set above is the loosest it may go");
-        target.setToolTipText("Frame time to hold, milliseconds of engine time per frame, 1 to 1000: type it and "
+        target.setToolTipText("Frame time to hold, milliseconds of engine time per frame, 0.1 to 1000: type it and "
                 + "press Enter");
         auto.addActionListener(e -> publish(state.budget().targetMs()));
         form.row(auto);

@@ -141,6 +141,10 @@ class DevToolsGuiTest {
         focus(target);
         type(KeyEvent.VK_4, KeyEvent.VK_0, KeyEvent.VK_ENTER);
         waitFor("the typed target", () -> state().budget().targetMs() == 40);
+        // A target under 1 ms, as demo --target-ms and the view take: the field took only 1 to 1000.
+        focus(target);
+        type(KeyEvent.VK_0, KeyEvent.VK_PERIOD, KeyEvent.VK_5, KeyEvent.VK_ENTER);
+        waitFor("the typed target under 1 ms", () -> state().budget().targetMs() == 0.5);
         assertEquals(RenderMode.TESSELLATED, state().settings().render().mode(), "the 4 typed is not key 4 (spans)");
 
         NumberField maxEdge = onEdt(() -> tools.section(SplitPolicySection.class).fields()[0]);
