@@ -14,6 +14,7 @@ import java.util.Locale;
 import java.util.concurrent.ExecutionException;
 import java.util.function.Consumer;
 import java.util.function.Function;
+import java.util.function.Supplier;
 import javax.swing.Action;
 import javax.swing.JFileChooser;
 import javax.swing.JMenu;
@@ -51,10 +52,7 @@ final class FileMenu {
         for (String name : DemoScenes.names()) {
             String label = name.substring(0, 1).toUpperCase(Locale.ROOT) + name.substring(1);
             scenes.add(new JMenuItem(action(label, DemoScenes.describe(name), null,
-                    () -> {
-                        asked++;
-                        window.show(DemoScenes.byName(name).orElseThrow());
-                    })));
+                    () -> builtIn(label, () -> DemoScenes.byName(name).orElseThrow()))));
         }
         rebuildRecent();
     }
@@ -153,6 +151,41 @@ final class FileMenu {
                         rebuildRecent();
                     }
                     JOptionPane.showMessageDialog(window.frame(), line, "Cannot open OBJ", JOptionPane.ERROR_MESSAGE);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            }
+        };
+        worker.execute();
+        return worker;
+    }
+
+    /**
+     * Shows a built-in scene, made by {@code maker} on a background thread (the largest, a million-triangle
+     * globe, takes a second to build, which on the event thread froze the window), unless another scene
+     * is asked for before it is made.
+     *
+     * @return the making under way
+     */
+    SwingWorker<SceneAsset, Void> builtIn(String label, Supplier<SceneAsset> maker) {
+        window.status("Building " + label + " \u2026");
+        long request = ++asked;
+        SwingWorker<SceneAsset, Void> worker = new SwingWorker<>() {
+            @Override
+            protected SceneAsset doInBackground() {
+                return maker.get();
+            }
+
+            @Override
+            protected void done() {
+                if (request != asked) {
+                    return;
+                }
+                try {
+                    window.show(get());
+                    window.status("Built-in scene " + label);
+                } catch (ExecutionException e) {
+                    window.status("trisect: " + DemoWindow.message(e.getCause()));
                 } catch (InterruptedException e) {
                     Thread.currentThread().interrupt();
                 }

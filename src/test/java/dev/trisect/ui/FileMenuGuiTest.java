@@ -3,6 +3,7 @@ package dev.trisect.ui;
 import static dev.trisect.GuiTests.onEdt;
 import static dev.trisect.GuiTests.waitFor;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 
 import dev.trisect.GuiTests;
@@ -66,5 +67,31 @@ class FileMenuGuiTest {
                 notes -> DemoScenes.boxes()));
         waitFor("the load to end", last::isDone);
         waitFor("the model", () -> title().equals("Trisect \u2014 boxes"));
+    }
+
+    @Test
+    void aBuiltInSceneIsMadeOffTheEventThread() throws Exception {
+        GuiTests.requireDisplay();
+        window = DemoApp.openForTest(DemoScenes.demo(), 1);
+        // Built-in scene > Sphere1m built its million triangles on the event thread: the window froze
+        // for up to 1.4 s (found by the demo trial). The making now runs in the background.
+        java.util.concurrent.atomic.AtomicBoolean onEventThread = new java.util.concurrent.atomic.AtomicBoolean(true);
+        CountDownLatch making = new CountDownLatch(1);
+        SwingWorker<SceneAsset, Void> build = onEdt(() -> window.fileMenu.builtIn("Boxes", () -> {
+            onEventThread.set(SwingUtilities.isEventDispatchThread());
+            try {
+                making.await();
+            } catch (InterruptedException e) {
+                throw new IllegalStateException(e);
+            }
+            return DemoScenes.boxes();
+        }));
+        // The event thread is free while the scene is being made.
+        SwingUtilities.invokeAndWait(() -> { });
+        assertEquals("Trisect \u2014 demo", title(), "the old scene stays until the new one is made");
+        making.countDown();
+        waitFor("the making to end", build::isDone);
+        assertFalse(onEventThread.get(), "made off the event thread");
+        waitFor("the boxes", () -> title().equals("Trisect \u2014 boxes"));
     }
 }
