@@ -122,42 +122,20 @@ final class FileMenu {
     SwingWorker<SceneAsset, Void> load(Path file, Function<Consumer<String>, SceneAsset> reader) {
         window.status("Loading " + file + " \u2026");
         List<String> notes = new ArrayList<>();
-        long request = ++asked;
-        SwingWorker<SceneAsset, Void> worker = new SwingWorker<>() {
-            @Override
-            protected SceneAsset doInBackground() {
-                return reader.apply(notes::add);
+        return inBackground(() -> reader.apply(notes::add), s -> {
+            window.show(s);
+            // The placeholder stays on screen, so its warning stays in the bar when the message goes.
+            window.sceneNote(standingNote(notes));
+            recent.opened(file);
+            rebuildRecent();
+            window.status(loaded(file, s.mesh().triangleCount(), notes));
+        }, line -> {
+            if (!Files.exists(file)) {
+                recent.forget(file);
+                rebuildRecent();
             }
-
-            @Override
-            protected void done() {
-                if (request != asked) {
-                    // Another scene was asked for while this one loaded: that one stays.
-                    return;
-                }
-                try {
-                    SceneAsset s = get();
-                    window.show(s);
-                    // The placeholder stays on screen, so its warning stays in the bar when the message goes.
-                    window.sceneNote(standingNote(notes));
-                    recent.opened(file);
-                    rebuildRecent();
-                    window.status(loaded(file, s.mesh().triangleCount(), notes));
-                } catch (ExecutionException e) {
-                    String line = "trisect: " + DemoWindow.message(e.getCause());
-                    window.status(line);
-                    if (!Files.exists(file)) {
-                        recent.forget(file);
-                        rebuildRecent();
-                    }
-                    JOptionPane.showMessageDialog(window.frame(), line, "Cannot open OBJ", JOptionPane.ERROR_MESSAGE);
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                }
-            }
-        };
-        worker.execute();
-        return worker;
+            JOptionPane.showMessageDialog(window.frame(), line, "Cannot open OBJ", JOptionPane.ERROR_MESSAGE);
+        });
     }
 
     /**
@@ -169,11 +147,24 @@ final class FileMenu {
      */
     SwingWorker<SceneAsset, Void> builtIn(String label, Supplier<SceneAsset> maker) {
         window.status("Building " + label + " \u2026");
+        return inBackground(maker, s -> {
+            window.show(s);
+            window.status("Built-in scene " + label);
+        }, line -> { });
+    }
+
+    /**
+     * Makes a scene on a background thread and, on the event thread, hands it to {@code shown}, unless
+     * another scene was asked for meanwhile (that one stays); a failure goes to the status bar as the
+     * command line's one line, then to {@code failed}.
+     */
+    private SwingWorker<SceneAsset, Void> inBackground(Supplier<SceneAsset> make, Consumer<SceneAsset> shown,
+                                                       Consumer<String> failed) {
         long request = ++asked;
         SwingWorker<SceneAsset, Void> worker = new SwingWorker<>() {
             @Override
             protected SceneAsset doInBackground() {
-                return maker.get();
+                return make.get();
             }
 
             @Override
@@ -182,10 +173,11 @@ final class FileMenu {
                     return;
                 }
                 try {
-                    window.show(get());
-                    window.status("Built-in scene " + label);
+                    shown.accept(get());
                 } catch (ExecutionException e) {
-                    window.status("trisect: " + DemoWindow.message(e.getCause()));
+                    String line = "trisect: " + DemoWindow.message(e.getCause());
+                    window.status(line);
+                    failed.accept(line);
                 } catch (InterruptedException e) {
                     Thread.currentThread().interrupt();
                 }
