@@ -87,7 +87,10 @@ final class BandPass {
             rasterizer.spans(spanError);
             for (int c = 0; c < chunkCount; c++) {
                 Chunk chunk = chunks.get(c);
-                lane.pixels += rasterizer.fill(frame, chunk.out, chunk.bins.items(), chunk.bins.start(b),
+                lane.pixels += chunk.split
+                        ? rasterizer.fillTrees(frame, chunk.trees, chunk.bins.items(), chunk.bins.start(b),
+                        chunk.bins.start(b + 1), textures, 0, y0, width, y1)
+                        : rasterizer.fill(frame, chunk.out, chunk.bins.items(), chunk.bins.start(b),
                         chunk.bins.start(b + 1), textures, perspective, 0, y0, width, y1);
             }
             lane.fillNanos += System.nanoTime() - t0;
@@ -122,8 +125,13 @@ final class BandPass {
             Rasterizer rasterizer = lanes[thread].rasterizer;
             for (int c = 0; c < chunkCount; c++) {
                 Chunk chunk = chunks.get(c);
-                rasterizer.countCoverage(counts, width, chunk.out, chunk.bins.items(), chunk.bins.start(b),
-                        chunk.bins.start(b + 1), 0, y0, width, y1);
+                if (chunk.split) {
+                    rasterizer.countTreeCoverage(counts, width, chunk.trees, chunk.bins.items(),
+                            chunk.bins.start(b), chunk.bins.start(b + 1), 0, y0, width, y1);
+                } else {
+                    rasterizer.countCoverage(counts, width, chunk.out, chunk.bins.items(), chunk.bins.start(b),
+                            chunk.bins.start(b + 1), 0, y0, width, y1);
+                }
             }
         });
         return counts;

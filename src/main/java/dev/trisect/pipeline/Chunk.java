@@ -2,6 +2,7 @@ package dev.trisect.pipeline;
 
 import dev.trisect.raster.BandBins;
 import dev.trisect.raster.ScreenTriangles;
+import dev.trisect.raster.SplitTrees;
 
 /**
  * One contiguous range of input triangles as the geometry stage leaves it for the fill: its screen
@@ -20,7 +21,17 @@ final class Chunk {
     static final int TRIM_FLOOR = 16384;
 
     final ScreenTriangles out = new ScreenTriangles();
-    /** The screen triangles of each band of {@link FrameRenderer#BAND_ROWS} rows. */
+    /**
+     * In the tessellated path, the input triangles that were split and their split trees, whose
+     * leaves are the pieces in {@link #out}: what the fill fills.
+     */
+    final SplitTrees trees = new SplitTrees();
+    /** Whether the last attempt split its triangles: then the fill takes {@link #trees}, else {@link #out}. */
+    boolean split;
+    /**
+     * What the fill fills in each band of {@link FrameRenderer#BAND_ROWS} rows: the screen triangles
+     * of {@link #out}, or in the tessellated path the groups of {@link #trees}.
+     */
     final BandBins bins = new BandBins();
     // What the last geometry attempt counted (see FrameStats for their meaning).
     long culledBack;
@@ -42,17 +53,22 @@ final class Chunk {
     /** Empties the screen triangles and zeroes the counters, for a new attempt at the geometry. */
     void clear() {
         out.clear();
+        trees.clear();
         culledBack = culledFrustum = culledDegenerate = invalid = clipped = 0;
         clipNanos = tessellateNanos = 0;
     }
 
-    /** Sorts the screen triangles into bands of rows of a frame {@code height} rows high, in order. */
+    /**
+     * Sorts what the fill fills (the screen triangles, or in the tessellated path the split trees'
+     * input triangles) into bands of rows of a frame {@code height} rows high, in order.
+     */
     void bin(int bands, int height) {
-        int n = out.count();
+        ScreenTriangles filled = split ? trees.inputs() : out;
+        int n = filled.count();
         bins.prepare(n);
         for (int i = 0; i < n; i++) {
-            int r0 = Math.max(0, out.firstRow(i));
-            int r1 = Math.min(height, out.endRow(i));
+            int r0 = Math.max(0, filled.firstRow(i));
+            int r1 = Math.min(height, filled.endRow(i));
             if (r0 >= r1) {
                 bins.none(i);
             } else {
@@ -70,6 +86,7 @@ final class Chunk {
         if (oversizedFrames >= FrameRenderer.TRIM_FRAMES) {
             oversizedFrames = 0;
             out.shrinkTo(2 * need);
+            trees.shrinkTo(2 * need);
             bins.shrink(2 * need, Math.max(2 * bins.entries(), 2 * need));
         }
     }

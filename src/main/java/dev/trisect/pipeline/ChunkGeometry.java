@@ -3,6 +3,9 @@ package dev.trisect.pipeline;
 import dev.trisect.render.CullMode;
 import dev.trisect.render.RenderSettings;
 import static dev.trisect.tessellate.VertexLayout.CLIP_STRIDE;
+import static dev.trisect.tessellate.VertexLayout.PROJECTED_STRIDE;
+import static dev.trisect.tessellate.VertexLayout.SCREEN_X;
+import static dev.trisect.tessellate.VertexLayout.SCREEN_Y;
 import static dev.trisect.tessellate.VertexLayout.S;
 import static dev.trisect.tessellate.VertexLayout.T;
 import static dev.trisect.tessellate.VertexLayout.W;
@@ -15,6 +18,7 @@ import dev.trisect.mesh.Mesh;
 import dev.trisect.tessellate.PieceBudget;
 import dev.trisect.tessellate.Tessellator;
 import dev.trisect.texture.Texture;
+import dev.trisect.texture.TextureFilter;
 import java.util.Arrays;
 
 /**
@@ -88,6 +92,7 @@ final class ChunkGeometry {
     void run(int thread, Chunk chunk, Input in, int from, int to) {
         Scratch w = scratch[thread];
         chunk.clear();
+        chunk.split = in.split();
         Tessellator tess = w.tessellator;
         PieceBudget budget = in.budget();
         tess.configure(in.viewport(), in.settings().tessellation());
@@ -99,6 +104,7 @@ final class ChunkGeometry {
         w.sink.target(chunk.out);
         boolean cullBack = in.settings().cull() == CullMode.BACK;
         boolean split = in.split();
+        boolean trilinear = in.settings().filter() == TextureFilter.TRILINEAR;
         for (int batchStart = from; batchStart < to && !budget.exceeded(); batchStart += BATCH) {
             int batchEnd = Math.min(to, batchStart + BATCH);
             long t0 = System.nanoTime();
@@ -120,7 +126,13 @@ final class ChunkGeometry {
             for (int i = 0; i < n; i++) {
                 w.sink.triangle(w.batchIds[i], w.batchMaterials[i]);
                 int o = i * stride;
+                int firstPiece = chunk.out.count();
                 tess.process(b, o, o + CLIP_STRIDE, o + 2 * CLIP_STRIDE, split, w.sink);
+                if (split && tess.splitTree().complete() && tess.splitTree().leaves() > 0) {
+                    int material = w.batchMaterials[i];
+                    int maxLevel = trilinear ? draws.textures()[material].mipChain().maxLevel() : 0;
+                    addTree(chunk, tess, w.batchIds[i], material, firstPiece, maxLevel);
+                }
             }
             long t2 = System.nanoTime();
             chunk.clipNanos += t1 - t0;
@@ -132,6 +144,21 @@ final class ChunkGeometry {
         chunk.deepest = tess.deepestLevel();
         chunk.caps = tess.capsReached();
         chunk.fallback = tess.fallbackPieces();
+    }
+
+    /**
+     * Adds the input triangle the tessellator just split to the chunk's split trees, with its tree,
+     * whose pieces are the chunk's screen triangles from {@code firstPiece} on.
+     */
+    private static void addTree(Chunk chunk, Tessellator tess, int id, int material, int firstPiece, int maxLevel) {
+        double[] v = tess.vertices();
+        int a = 0;
+        int b = PROJECTED_STRIDE;
+        int c = 2 * PROJECTED_STRIDE;
+        chunk.trees.add(v[a + SCREEN_X], v[a + SCREEN_Y], 1 / v[a + W], v[a + S], v[a + T],
+                v[b + SCREEN_X], v[b + SCREEN_Y], 1 / v[b + W], v[b + S], v[b + T],
+                v[c + SCREEN_X], v[c + SCREEN_Y], 1 / v[c + W], v[c + S], v[c + T], id, material,
+                tess.splitTree(), chunk.out, firstPiece, maxLevel);
     }
 
     /**

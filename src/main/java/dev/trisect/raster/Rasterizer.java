@@ -25,6 +25,8 @@ import dev.trisect.texture.TextureFilter;
 public final class Rasterizer {
     private final TriangleSetup setup = new TriangleSetup();
     private final SpanSolver solver = new SpanSolver();
+    private final TreeFill trees = new TreeFill();
+    private final TreeFilteredFill filteredTrees = new TreeFilteredFill();
     /** How {@link #fill} samples textures. */
     private TextureFilter filter = TextureFilter.NEAREST;
     /** The span path's largest displacement between knots, pixels; 0: perspective fills divide per pixel. */
@@ -103,6 +105,66 @@ public final class Rasterizer {
             }
         }
         return written;
+    }
+
+    /**
+     * The tessellated path: fills groups {@code order[from..to)} of {@code groups}, in that order, into
+     * the pixels {@code [x0, x1) x [y0, y1)} of the frame, one pass per input triangle: its coverage
+     * and depth from the input triangle, each pixel's texel coordinates from the piece of the split
+     * tree it lies in ({@link TreeFill}).
+     *
+     * @param textures texture of each material index
+     * @return the number of pixels written (depth test passed)
+     */
+    public long fillTrees(Framebuffer frame, SplitTrees groups, int[] order, int from, int to, Texture[] textures,
+                          int x0, int y0, int x1, int y1) {
+        long written = 0;
+        ScreenTriangles inputs = groups.inputs();
+        int[] materials = inputs.materials();
+        int[] ids = inputs.ids();
+        int[] roots = groups.roots();
+        TriangleSetup t = setup;
+        for (int n = from; n < to; n++) {
+            int g = order[n];
+            if (!t.prepare(inputs, g, true, x0, y0, x1, y1)) {
+                continue;
+            }
+            solver.walk(t);
+            int[] spans = solver.spans();
+            Texture texture = textures[materials[g]];
+            int uvId = ids[g] + 1;
+            if (filter == TextureFilter.NEAREST) {
+                written += trees.nearest(t, spans, groups, roots[g], groups.nodeCount(g), groups.simple(g), frame, texture,
+                        uvId);
+            } else {
+                written += filteredTrees.fill(trees, t, spans, groups, roots[g], groups.nodeCount(g), frame,
+                        texture.mipChain(), uvId, filter == TextureFilter.TRILINEAR);
+            }
+        }
+        return written;
+    }
+
+    /**
+     * Adds 1 to {@code counts[y * width + x]} for every pixel of {@code [x0, x1) x [y0, y1)} that the
+     * tessellated path's one-pass fill gives a piece, for each of groups {@code order[from..to)}, ignoring
+     * depth: the input triangle's coverage, less any pixel the split tree leaves without a piece (which
+     * would be a crack).
+     *
+     * @return the number of coverings counted
+     */
+    public long countTreeCoverage(int[] counts, int width, SplitTrees groups, int[] order, int from, int to,
+                                  int x0, int y0, int x1, int y1) {
+        long covered = 0;
+        TriangleSetup t = setup;
+        for (int n = from; n < to; n++) {
+            int g = order[n];
+            if (!t.prepare(groups.inputs(), g, false, x0, y0, x1, y1)) {
+                continue;
+            }
+            solver.walk(t);
+            covered += trees.count(t, solver.spans(), groups, groups.roots()[g], groups.nodeCount(g), counts, width);
+        }
+        return covered;
     }
 
     /**

@@ -43,15 +43,18 @@ import java.util.Arrays;
  */
 public final class Tessellator {
     /**
-     * Ints per stacked piece: three vertex offsets, the levels of edges v0-v1, v1-v2, v2-v0, and those
-     * edges' numbers in {@link #edges}.
+     * Ints per stacked piece: three vertex offsets, the levels of edges v0-v1, v1-v2, v2-v0, those
+     * edges' numbers in {@link #edges}, and where its reference goes in the split tree (the slot of its
+     * parent's {@link SplitTree#kids()}, or -1 for the root).
      */
-    private static final int PIECE = 9;
+    private static final int PIECE = 10;
 
     /** Vertices in {@link VertexLayout}, {@link VertexLayout#PROJECTED_STRIDE} doubles each. */
     private double[] vertices = new double[PROJECTED_STRIDE * 256];
     private int vertexCount;
     private int[] stack = new int[PIECE * 64];
+    /** The split tree of the last triangle split. */
+    private final SplitTree tree = new SplitTree();
     /** The edges of the current input triangle's pieces, for the links handed on with each piece. */
     private final PieceEdges edges = new PieceEdges();
     /** The links handed on with a piece (scratch). */
@@ -150,6 +153,21 @@ public final class Tessellator {
     }
 
     /**
+     * The vertices of the last triangle processed, in {@link VertexLayout} ({@link
+     * VertexLayout#PROJECTED_STRIDE} doubles each): its three corners, screen positions included, at
+     * offsets 0, {@code PROJECTED_STRIDE} and {@code 2 * PROJECTED_STRIDE}. Scratch: read it before the
+     * next {@link #process}.
+     */
+    public double[] vertices() {
+        return vertices;
+    }
+
+    /** The split tree of the last triangle processed (see {@link SplitTree}); scratch, like {@link #vertices()}. */
+    public SplitTree splitTree() {
+        return tree;
+    }
+
+    /**
      * Processes one triangle.
      *
      * @param input  input vertices, {@link VertexLayout#CLIP_STRIDE} doubles each in {@link VertexLayout}
@@ -162,6 +180,7 @@ public final class Tessellator {
      */
     public void process(double[] input, int i0, int i1, int i2, boolean split, PieceSink sink) {
         vertexCount = 0;
+        tree.clear();
         int a = load(input, i0);
         int b = load(input, i1);
         int c = load(input, i2);
@@ -171,6 +190,7 @@ public final class Tessellator {
         link[2] = PieceSink.OUTER;
         if (!split) {
             pieces++;
+            tree.leaf(-1);
             sink.piece(vertices, a, b, c, 0, false, link);
             return;
         }
@@ -185,7 +205,7 @@ public final class Tessellator {
         pe.clear();
         boolean tracking = linking;
         int outer = PieceEdges.OUTER;
-        int top = push(0, a, b, c, 0, 0, 0, outer, outer, outer);
+        int top = push(0, a, b, c, 0, 0, 0, outer, outer, outer, -1);
         int handedOn = 0;
         int maxSplits = settings.maxPieces() - 1;
         int maxLevel = settings.maxDepth();
@@ -203,10 +223,12 @@ public final class Tessellator {
             int e0 = st[p + 6];
             int e1 = st[p + 7];
             int e2 = st[p + 8];
+            int slot = st[p + 9];
             if (offScreen(v0, v1, v2)) {
                 // Nothing of it can be seen, so it is neither split nor filled. Its edges lie off
                 // screen too, so a neighbour that does split a shared edge cannot open a visible crack.
                 culledOffScreen++;
+                tree.refer(slot, SplitTree.NO_PIECE);
                 continue;
             }
             double m0 = measure(v0, v1);
@@ -268,6 +290,7 @@ public final class Tessellator {
                     link[2] = pe.link(e2, handedOn, 2);
                     handedOn++;
                 }
+                tree.leaf(slot);
                 sink.piece(vertices, v0, v1, v2, level, perPixel, link);
                 continue;
             }
@@ -304,11 +327,13 @@ public final class Tessellator {
             }
             int inner = tracking ? pe.add(m) : PieceEdges.OUTER;
             int half = lpq + 1;
+            int pSlot = tree.split(vertices, slot, m, vr, vp);
             // The new inner edge m-r also gets level lpq + 1: every split then lowers the sum of
             // 2^(maxLevel - level) over a piece's edges, so splitting ends even without the piece cap.
-            top = push(top, m, vq, vr, half, lqr, half, halfQ, eqr, inner);
-            top = push(top, vp, m, vr, half, half, lrp, halfP, inner, erp);
+            top = push(top, m, vq, vr, half, lqr, half, halfQ, eqr, inner, pSlot ^ 1);
+            top = push(top, vp, m, vr, half, half, lrp, halfP, inner, erp, pSlot);
         }
+        tree.complete(true);
         if (capped) {
             capsReached++;
         }
@@ -437,7 +462,7 @@ public final class Tessellator {
         return o;
     }
 
-    private int push(int top, int v0, int v1, int v2, int l0, int l1, int l2, int e0, int e1, int e2) {
+    private int push(int top, int v0, int v1, int v2, int l0, int l1, int l2, int e0, int e1, int e2, int slot) {
         int p = top * PIECE;
         if (p + PIECE > stack.length) {
             stack = Arrays.copyOf(stack, stack.length * 2);
@@ -452,6 +477,7 @@ public final class Tessellator {
         st[p + 6] = e0;
         st[p + 7] = e1;
         st[p + 8] = e2;
+        st[p + 9] = slot;
         return top + 1;
     }
 }

@@ -49,6 +49,28 @@ class CommandsTest {
         assertTrue(number(json, "pixels_written") > 160 * 90 / 2, json);
     }
 
+    /**
+     * Three points on one line: the snapped corners still enclose a sliver, whose pieces, cut at
+     * points rounded off the line, reached two pixel centres when the pieces were filled one by one
+     * (found 2026-11-26). Every path takes coverage from the input triangle, so none writes a pixel.
+     */
+    @Test
+    void aTriangleWithNoAreaFillsNoPixelInAnyPath() throws IOException {
+        Path obj = dir.resolve("line.obj");
+        Files.writeString(obj, "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
+        for (String mode : new String[] {"perspective", "affine", "tessellated", "spans"}) {
+            for (String split : new String[] {"--max-edge=32", "--max-edge=2", "--split=error"}) {
+                CliRun r = CliRun.of("render", "--obj", obj.toString(), "--mode", mode, split, "--size", "1280x720",
+                        "--out", dir.resolve("line.png").toString(), "--stats");
+                assertEquals(0, r.status(), r.err());
+                assertEquals(0, number(r.out(), "pixels_written"), mode + " " + split + ": " + r.out());
+                if (mode.equals("tessellated") && split.equals("--max-edge=32")) {
+                    assertTrue(number(r.out(), "pieces") > 10, "the sliver is split: " + r.out());
+                }
+            }
+        }
+    }
+
     @Test
     void ppmOutputAndBackground() throws IOException {
         Path ppm = dir.resolve("f.ppm");

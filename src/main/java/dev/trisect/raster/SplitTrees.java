@@ -1,0 +1,352 @@
+package dev.trisect.raster;
+
+import dev.trisect.tessellate.SplitTree;
+import dev.trisect.texture.internal.Lod;
+import java.util.Arrays;
+
+/**
+ * The tessellated path's input triangles with the split trees that say which of their pieces each
+ * pixel lies in, for {@link TreeFill}: one pass per input triangle, coverage from the input triangle
+ * itself, each row cut into its pieces' segments by descending the tree.
+ *
+ * <p>Per input triangle (a group): the triangle as the tessellator received it, in {@link #inputs()}
+ * (snapped corners for coverage, {@code 1/w} for depth, texel coordinates for the per-pixel fallback),
+ * and the root of its tree. A node is one split: a line in screen pixels ({@link #lines()}: along the
+ * row of pixel centres of pixel row y it lies at x = {@code k y + m + 0.5}, so that its first column
+ * at or right of the line is {@code ceil(k y + m)}) and its two children ({@link #kids()}: left,
+ * the side of smaller x, then right), each a node ({@code >= 0}), a piece ({@code -1 - p}, p the
+ * piece's index in the chunk's pieces) or {@link #NO_PIECE} (dropped off screen).
+ *
+ * <p>Per piece, set up in bulk when its group is added (the geometry pass, not the fill): its affine
+ * texel planes over pixel centres ({@link #planes()}: s base, dx, dy, then t), fitted exactly as
+ * {@link TriangleSetup} fits a piece's, their steps per column in 32.32 fixed point and the piece's
+ * first column where its rows are anchored ({@link #fixedSteps()}, {@link #firstColumns()}), how it is
+ * filled ({@link #kinds()}) and, for trilinear filtering, its one level of detail ({@link #selections()}).
+ *
+ * <p>Storage grows as needed and is kept from frame to frame; {@link #clear} empties it.
+ */
+public final class SplitTrees {
+    /** The reference of a piece dropped for lying off screen (no pixel centre of the frame lies in it). */
+    public static final int NO_PIECE = SplitTree.NO_PIECE;
+    /** Doubles per node in {@link #lines()}: k, m (see the class comment). */
+    public static final int LINE = 2;
+    /** Doubles per piece in {@link #planes()}: s base, s dx, s dy, t base, t dx, t dy. */
+    public static final int PLANE = 6;
+    /** Longs per piece in {@link #fixedSteps()}: the steps of s and of t per column, 32.32 fixed point. */
+    public static final int FIXED_STEP = 2;
+    /** {@link #kinds()}: affine, stepped in 32.32 fixed point. */
+    public static final byte AFFINE = 0;
+    /** {@link #kinds()}: affine, texel coordinates too large for fixed point, in doubles per pixel. */
+    public static final byte AFFINE_WIDE = 1;
+    /** {@link #kinds()}: the per-pixel fallback (a cap stopped it, or a sliver): perspective-correct. */
+    public static final byte PER_PIXEL = 2;
+
+    /** 2^32: texel coordinates in 32.32 fixed point. */
+    private static final double FIXED_SCALE = 4294967296.0;
+    /** Texel coordinates below this magnitude fit 32.32 fixed point with room for stepping. */
+    private static final double FIXED_POINT_LIMIT = 1 << 30;
+
+    private final ScreenTriangles inputs = new ScreenTriangles();
+    private int[] roots = new int[1024];
+    private int[] nodeCounts = new int[1024];
+    private boolean[] simple = new boolean[1024];
+    private int nodes;
+    private int[] kids = new int[2 * 4096];
+    private double[] lines = new double[LINE * 4096];
+    private int[] rows = new int[2 * 4096];
+    private int[] rowKids = new int[2 * 4096];
+    private int pieces;
+    private double[] planes = new double[PLANE * 4096];
+    private long[] fixedSteps = new long[FIXED_STEP * 4096];
+    private int[] firstColumns = new int[4096];
+    private byte[] kinds = new byte[4096];
+    private int[] selections = new int[4096];
+    private int largestTree;
+
+    /** Removes every group, keeping the storage. */
+    public void clear() {
+        inputs.clear();
+        nodes = 0;
+        pieces = 0;
+        largestTree = 0;
+    }
+
+    /** Number of groups (input triangles). */
+    public int count() {
+        return inputs.count();
+    }
+
+    /** The input triangles, one per group, with their ids and materials. */
+    public ScreenTriangles inputs() {
+        return inputs;
+    }
+
+    /** The root of each group's tree (a reference, see the class comment). */
+    public int[] roots() {
+        return roots;
+    }
+
+    /** The nodes' children, two per node: left, right. */
+    public int[] kids() {
+        return kids;
+    }
+
+    /**
+     * Per node, two rows: rows above the first lie wholly in the child {@link #rowKids()} names first,
+     * rows from the second on wholly in the one it names second; only the rows between meet the line.
+     */
+    public int[] rows() {
+        return rows;
+    }
+
+    /** Per node, the child of the rows above its line's rows, then the child of the rows below. */
+    public int[] rowKids() {
+        return rowKids;
+    }
+
+    /** The nodes' lines, {@link #LINE} doubles per node, screen pixels. */
+    public double[] lines() {
+        return lines;
+    }
+
+    /** Per piece of the chunk: its texel planes over pixel centres, {@link #PLANE} doubles. */
+    public double[] planes() {
+        return planes;
+    }
+
+    /**
+     * Per piece, {@link #FIXED_STEP} longs: the steps per column of s and of t in 32.32 fixed point,
+     * {@code floor(dx * 2^32)}, as {@link NearestSpans#affineFixed} steps a piece.
+     */
+    public long[] fixedSteps() {
+        return fixedSteps;
+    }
+
+    /**
+     * Per piece: its own first column (from its snapped corners), where each of its rows is anchored in
+     * fixed point as {@link NearestSpans#affineFixed} anchors it, so that a pixel's texel coordinates
+     * are those the piece-by-piece fill gave it: they depend on the piece and the pixel alone.
+     */
+    public int[] firstColumns() {
+        return firstColumns;
+    }
+
+    /**
+     * Per piece: its one level of detail for trilinear filtering ({@link Lod#select} form), from its
+     * planes' constant derivatives as {@link FilteredSpans} takes it, or 0 when the group was added
+     * without a mip chain's last level.
+     */
+    public int[] selections() {
+        return selections;
+    }
+
+    /** Per piece: {@link #AFFINE}, {@link #AFFINE_WIDE} or {@link #PER_PIXEL}. */
+    public byte[] kinds() {
+        return kinds;
+    }
+
+    /** The most nodes in one group's tree: a row's descent never holds more than that many pending parts. */
+    public int largestTree() {
+        return largestTree;
+    }
+
+    /** Group {@code g}'s number of nodes. */
+    public int nodeCount(int g) {
+        return nodeCounts[g];
+    }
+
+    /**
+     * Adds a group: the input triangle (screen pixels, {@code 1/w}, texel coordinates per corner), and its
+     * split tree as a tessellator recorded it, whose leaf k is piece {@code firstPiece + k} of
+     * {@code pieces} (already appended there, {@code tree.leaves()} of them).
+     *
+     * @param maxLevel the last level of the material's mip chain when the frame filters trilinearly
+     *                 (each piece's level of detail is set up with it), else 0
+     */
+    public void add(double x0, double y0, double q0, double s0, double t0,
+                    double x1, double y1, double q1, double s1, double t1,
+                    double x2, double y2, double q2, double s2, double t2, int id, int material,
+                    SplitTree tree, ScreenTriangles pieceTriangles, int firstPiece, int maxLevel) {
+        int root = tree.root();
+        int[] treeKids = tree.kids();
+        double[] treeLines = tree.lines();
+        int[] treeRows = tree.rows();
+        int treeNodes = tree.nodes();
+        int leaves = tree.leaves();
+        int g = inputs.count();
+        if (g == roots.length) {
+            roots = Arrays.copyOf(roots, 2 * g);
+            nodeCounts = Arrays.copyOf(nodeCounts, 2 * g);
+            simple = Arrays.copyOf(simple, 2 * g);
+        }
+        inputs.add(x0, y0, q0, s0, t0, x1, y1, q1, s1, t1, x2, y2, q2, s2, t2, id, material);
+        int base = nodes;
+        if (2 * (base + treeNodes) > kids.length) {
+            int n = Math.max(2 * (base + treeNodes), 2 * kids.length);
+            kids = Arrays.copyOf(kids, n);
+            lines = Arrays.copyOf(lines, n / 2 * LINE);
+            rows = Arrays.copyOf(rows, n);
+            rowKids = Arrays.copyOf(rowKids, n);
+        }
+        roots[g] = translate(root, base, firstPiece);
+        nodeCounts[g] = treeNodes;
+        for (int k = 0; k < 2 * treeNodes; k++) {
+            kids[2 * base + k] = translate(treeKids[k], base, firstPiece);
+        }
+        System.arraycopy(treeLines, 0, lines, LINE * base, LINE * treeNodes);
+        for (int k = 0; k < treeNodes; k++) {
+            int o = 2 * (base + k);
+            rows[o] = treeRows[3 * k];
+            rows[o + 1] = treeRows[3 * k + 1];
+            int upper = treeRows[3 * k + 2];
+            rowKids[o] = kids[o + upper];
+            rowKids[o + 1] = kids[o + 1 - upper];
+        }
+        nodes = base + treeNodes;
+        largestTree = Math.max(largestTree, treeNodes);
+        fitPieces(pieceTriangles, firstPiece, firstPiece + leaves, maxLevel);
+        boolean all = leaves == treeNodes + 1;
+        for (int p = firstPiece; p < firstPiece + leaves; p++) {
+            all &= kinds[p] == AFFINE;
+        }
+        simple[g] = all;
+    }
+
+    /**
+     * Whether group {@code g}'s pieces are all {@link #AFFINE} and none was dropped off screen: its
+     * rows' segments then follow one another without gaps, each filled in fixed point.
+     */
+    public boolean simple(int g) {
+        return simple[g];
+    }
+
+    private static int translate(int ref, int nodeBase, int firstPiece) {
+        if (ref == SplitTree.NO_PIECE) {
+            return NO_PIECE;
+        }
+        return ref >= 0 ? nodeBase + ref : -1 - (firstPiece + (-1 - ref));
+    }
+
+    /** Sets up pieces [from, to) of {@code t}: planes, first columns, steps, kinds and levels of detail. */
+    private void fitPieces(ScreenTriangles t, int from, int to, int maxLevel) {
+        if (to > kinds.length) {
+            int n = Math.max(to, 2 * kinds.length);
+            planes = Arrays.copyOf(planes, PLANE * n);
+            fixedSteps = Arrays.copyOf(fixedSteps, FIXED_STEP * n);
+            firstColumns = Arrays.copyOf(firstColumns, n);
+            kinds = Arrays.copyOf(kinds, n);
+            selections = Arrays.copyOf(selections, n);
+        }
+        pieces = Math.max(pieces, to);
+        int[] f = t.fixed();
+        double[] sc = t.screen();
+        double[] at = t.attributes();
+        boolean[] perPixel = t.perPixel();
+        for (int p = from; p < to; p++) {
+            int o = p * ScreenTriangles.FIXED_STRIDE;
+            long ax = f[o];
+            long ay = f[o + 1];
+            long bx = f[o + 2];
+            long by = f[o + 3];
+            long cx = f[o + 4];
+            long cy = f[o + 5];
+            long area = (bx - ax) * (cy - ay) - (cx - ax) * (by - ay);
+            // Corner order as TriangleSetup takes it: 0, i1, i2 with a positive snapped area.
+            int i1 = area < 0 ? 2 : 1;
+            int i2 = area < 0 ? 1 : 2;
+            int minX = (int) Math.min(ax, Math.min(bx, cx));
+            firstColumns[p] = ScreenTriangles.ceilDiv(minX - FixedPoint.HALF, FixedPoint.ONE);
+            int s = p * ScreenTriangles.SCREEN_STRIDE;
+            int a = p * ScreenTriangles.ATTRIBUTE_STRIDE;
+            double x0 = sc[s];
+            double y0 = sc[s + 1];
+            double ex1 = sc[s + 2 * i1] - x0;
+            double ey1 = sc[s + 2 * i1 + 1] - y0;
+            double ex2 = sc[s + 2 * i2] - x0;
+            double ey2 = sc[s + 2 * i2 + 1] - y0;
+            double det = ex1 * ey2 - ex2 * ey1;
+            if (det == 0 || !Double.isFinite(det)) {
+                // As TriangleSetup: snapping gave area to a triangle that had none.
+                double one = FixedPoint.ONE;
+                x0 = f[o] / one;
+                y0 = f[o + 1] / one;
+                ex1 = f[o + 2 * i1] / one - x0;
+                ey1 = f[o + 2 * i1 + 1] / one - y0;
+                ex2 = f[o + 2 * i2] / one - x0;
+                ey2 = f[o + 2 * i2 + 1] / one - y0;
+                det = ex1 * ey2 - ex2 * ey1;
+            }
+            double inv = 1.0 / det;
+            int c1 = a + 3 * i1;
+            int c2 = a + 3 * i2;
+            double sv0 = at[a + 1];
+            double sv1 = at[c1 + 1];
+            double sv2 = at[c2 + 1];
+            double tv0 = at[a + 2];
+            double tv1 = at[c1 + 2];
+            double tv2 = at[c2 + 2];
+            int po = PLANE * p;
+            fit(planes, po, x0, y0, ex1, ey1, ex2, ey2, inv, sv0, sv1, sv2);
+            fit(planes, po + 3, x0, y0, ex1, ey1, ex2, ey2, inv, tv0, tv1, tv2);
+            fixedSteps[FIXED_STEP * p] = (long) Math.floor(planes[po + 1] * FIXED_SCALE);
+            fixedSteps[FIXED_STEP * p + 1] = (long) Math.floor(planes[po + 4] * FIXED_SCALE);
+            double limit = FIXED_POINT_LIMIT;
+            boolean safe = Math.abs(sv0) < limit && Math.abs(sv1) < limit && Math.abs(sv2) < limit
+                    && Math.abs(tv0) < limit && Math.abs(tv1) < limit && Math.abs(tv2) < limit;
+            // A piece whose snapped corners enclose no area has no plane of its own (the piece-by-piece
+            // fill gave it no pixel); a pixel centre its region holds takes the input triangle's
+            // perspective-correct mapping.
+            boolean flat = area == 0 || !Double.isFinite(inv);
+            kinds[p] = perPixel[p] || flat ? PER_PIXEL : safe ? AFFINE : AFFINE_WIDE;
+            double sDx = planes[po + 1];
+            double sDy = planes[po + 2];
+            double tDx = planes[po + 4];
+            double tDy = planes[po + 5];
+            selections[p] = maxLevel <= 0 ? 0
+                    : Lod.selectOfSquared(sDx * sDx + tDx * tDx, sDy * sDy + tDy * tDy, maxLevel);
+        }
+    }
+
+    /** {@link Plane#fit} into {@code out[o..o+3)}: base, dx, dy. */
+    private static void fit(double[] out, int o, double x0, double y0, double ex1, double ey1, double ex2,
+                            double ey2, double inv, double v0, double v1, double v2) {
+        double d1 = v1 - v0;
+        double d2 = v2 - v0;
+        double dx = (d1 * ey2 - d2 * ey1) * inv;
+        double dy = (d2 * ex1 - d1 * ex2) * inv;
+        out[o] = v0 + dx * (0.5 - x0) + dy * (0.5 - y0);
+        out[o + 1] = dx;
+        out[o + 2] = dy;
+    }
+
+    /** Storage held, in pieces, for trimming: see {@link #shrinkTo}. */
+    public int capacity() {
+        return kinds.length;
+    }
+
+    /** Gives storage back after a spike, keeping room for {@code n} pieces (and as many nodes and groups). */
+    public void shrinkTo(int n) {
+        int m = Math.max(Math.max(n, pieces), Math.max(nodes, inputs.count()));
+        m = Math.max(m, 1);
+        if (m >= kinds.length) {
+            return;
+        }
+        inputs.shrinkTo(m);
+        planes = Arrays.copyOf(planes, PLANE * m);
+        fixedSteps = Arrays.copyOf(fixedSteps, FIXED_STEP * m);
+        firstColumns = Arrays.copyOf(firstColumns, m);
+        kinds = Arrays.copyOf(kinds, m);
+        selections = Arrays.copyOf(selections, m);
+        if (kids.length > 2 * m) {
+            kids = Arrays.copyOf(kids, 2 * m);
+            lines = Arrays.copyOf(lines, LINE * m);
+            rows = Arrays.copyOf(rows, 2 * m);
+            rowKids = Arrays.copyOf(rowKids, 2 * m);
+        }
+        if (roots.length > m) {
+            roots = Arrays.copyOf(roots, m);
+            nodeCounts = Arrays.copyOf(nodeCounts, m);
+            simple = Arrays.copyOf(simple, m);
+        }
+    }
+}

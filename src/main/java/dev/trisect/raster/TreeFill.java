@@ -1,0 +1,371 @@
+package dev.trisect.raster;
+
+import dev.trisect.render.Framebuffer;
+import dev.trisect.texture.Texture;
+import java.util.Arrays;
+
+/**
+ * The tessellated path's nearest fill, one pass per input triangle: the input triangle's rows, as
+ * {@link SpanSolver} solved them from its own snapped corners, are each cut into the segments of its
+ * pieces by descending the split tree ({@link SplitTrees}) along the row, left to right, and each
+ * segment is filled with its piece's affine texel planes in 32.32 fixed point. Per row, each split
+ * line the row meets inside its node is crossed once (one multiply-add and a ceiling), instead of
+ * each piece setting up and walking its own edges: the interior edges are found once per row for the
+ * two pieces that share them.
+ *
+ * <p>Which piece a pixel takes: the one whose region, as the tree's lines bound it, holds the pixel's
+ * centre; a centre exactly on a split line goes to the right-hand piece (the lower one for a horizontal
+ * line). Since the leaves of a split tree tile its triangle, every covered pixel gets exactly one
+ * piece. Two pieces that share a line agree on it (both planes interpolate the same two corners),
+ * and a piece's plane is evaluated only at centres inside it (up to the rounding of the crossing), so
+ * no pixel is extrapolated beyond its piece.
+ *
+ * <p>Depth is the input triangle's {@code 1/w} plane, as in the per-pixel path; the per-pixel
+ * fallback pieces divide by it, with the input triangle's perspective planes (s/w, t/w); affine pieces
+ * too large for fixed point are evaluated in doubles from their planes.
+ *
+ * <p>One per thread (its descent stack is scratch).
+ */
+final class TreeFill {
+    /** 2^32: texel coordinates in 32.32 fixed point. */
+    private static final double FIXED_SCALE = 4294967296.0;
+
+    /** The descent's pending right-hand parts: reference, first column, end column. */
+    private int[] stack = new int[3 * 64];
+
+    /** A row's segments from the descent: first column, end column, piece. */
+    private int[] segments = new int[3 * 64];
+
+    /** The segments array of the last {@link #stackFor} (scratch for {@link #descend}). */
+    int[] segments() {
+        return segments;
+    }
+
+    /** Makes room for a descent through a tree of {@code nodes} nodes (and its segments). */
+    int[] stackFor(int nodes) {
+        if (stack.length < 3 * (nodes + 1)) {
+            stack = Arrays.copyOf(stack, Math.max(3 * (nodes + 1), 2 * stack.length));
+            segments = new int[stack.length];
+        }
+        return stack;
+    }
+
+    /**
+     * Cuts the pixels [a, b) of pixel row {@code y} into the segments of the
+     * tree's pieces, left to right: {@code segs[3i..3i+3)} is segment i's first column, end column and
+     * piece. Pieces dropped off screen get no segment.
+     *
+     * @param st scratch of {@code 3 * (nodes + 1)} ints
+     * @return 3 times the number of segments
+     */
+    static int descend(int root, int a, int b, int y, SplitTrees trees, int[] st, int[] segs) {
+        int[] kids = trees.kids();
+        double[] lines = trees.lines();
+        int[] rows = trees.rows();
+        int[] rowKids = trees.rowKids();
+        double yd = y;
+        int n = 0;
+        int top = 0;
+        int ref = root;
+        while (true) {
+            if (ref >= 0) {
+                int r = 2 * ref;
+                if (y < rows[r]) {
+                    ref = rowKids[r];
+                    continue;
+                }
+                if (y >= rows[r + 1]) {
+                    ref = rowKids[r + 1];
+                    continue;
+                }
+                // A split: the first column whose centre is at or right of the line goes right.
+                int o = SplitTrees.LINE * ref;
+                int c = Math.min(b, Math.max(a, (int) Math.ceil(lines[o] * yd + lines[o + 1])));
+                int k = 2 * ref;
+                // Without branches: the right part is pushed when both parts hold pixels, and the
+                // descent goes on into the left part if it holds any, else into the right.
+                int right = kids[k + 1];
+                boolean left = c > a;
+                st[top] = right;
+                st[top + 1] = c;
+                st[top + 2] = b;
+                top += left & c < b ? 3 : 0;
+                ref = left ? kids[k] : right;
+                b = left ? c : b;
+                continue;
+            }
+            segs[n] = a;
+            segs[n + 1] = b;
+            segs[n + 2] = -1 - ref;
+            n += ref != SplitTrees.NO_PIECE ? 3 : 0;
+            if (top == 0) {
+                return n;
+            }
+            top -= 3;
+            ref = st[top];
+            a = st[top + 1];
+            b = st[top + 2];
+        }
+    }
+
+    /**
+     * Fills group {@code root}'s input triangle, set up as {@code setup} for a perspective fill (its
+     * planes hold 1/w, s/w, t/w) with spans {@code spans}, nearest sampling.
+     *
+     * @return pixels written
+     */
+    long nearest(TriangleSetup setup, int[] spans, SplitTrees trees, int root, int nodes, boolean simple,
+                 Framebuffer frame, Texture texture, int uvId) {
+        // Two loops, so that each stays small for the compiler: rows of a simple tree tile without
+        // gaps, one loop across each row; the others one loop per segment, by the piece's kind.
+        return simple ? nearestSimple(setup, spans, trees, root, nodes, frame, texture, uvId)
+                : nearestSegments(setup, spans, trees, root, nodes, frame, texture, uvId);
+    }
+
+    /** {@link #nearest} for a simple tree ({@link SplitTrees#simple}). */
+    private long nearestSimple(TriangleSetup setup, int[] spans, SplitTrees trees, int root, int nodes,
+                                Framebuffer frame, Texture texture, int uvId) {
+        int[] st = stackFor(nodes);
+        int[] segs = segments;
+        double[] planes = trees.planes();
+        long[] steps = trees.fixedSteps();
+        int[] firstColumns = trees.firstColumns();
+        double qBase = setup.qPlane.base;
+        double qDx = setup.qPlane.dx;
+        double qDy = setup.qPlane.dy;
+        int width = frame.width();
+        int[] color = frame.color();
+        float[] depth = frame.depth();
+        double[] uv = frame.uv();
+        int[] texels = texture.argb();
+        int tw = texture.width();
+        int th = texture.height();
+        boolean pot = (tw & (tw - 1)) == 0 && (th & (th - 1)) == 0;
+        int wMask = tw - 1;
+        int hMask = th - 1;
+        int topRow = th - 1;
+        long written = 0;
+        int[] sp = spans;
+        for (int y = setup.rowStart, j = 0; y < setup.rowEnd; y++, j += 2) {
+            int a = sp[j];
+            int b = sp[j + 1];
+            if (a >= b) {
+                continue;
+            }
+            double qRow = qBase + qDy * y;
+            int rowOffset = y * width;
+            descend(root, a, b, y, trees, st, segs);
+            // One loop across the row, loading the next piece's fixed-point planes where the row
+            // crosses into it (the pieces of a simple tree tile the row without gaps).
+            int g = 0;
+            int end = segs[1];
+            int piece = segs[2];
+            int po = SplitTrees.PLANE * piece;
+            int fc = firstColumns[piece];
+            long ds = steps[SplitTrees.FIXED_STEP * piece];
+            long dt = steps[SplitTrees.FIXED_STEP * piece + 1];
+            long s = start(planes, po, y, fc, ds, a);
+            long t = start(planes, po + 3, y, fc, dt, a);
+            double xd = a;
+            for (int x = a; x < b; x++, xd++, s += ds, t += dt) {
+                if (x == end) {
+                    g += 3;
+                    end = segs[g + 1];
+                    piece = segs[g + 2];
+                    po = SplitTrees.PLANE * piece;
+                    fc = firstColumns[piece];
+                    ds = steps[SplitTrees.FIXED_STEP * piece];
+                    dt = steps[SplitTrees.FIXED_STEP * piece + 1];
+                    s = start(planes, po, y, fc, ds, x);
+                    t = start(planes, po + 3, y, fc, dt, x);
+                }
+                float qf = (float) (qRow + qDx * xd);
+                int i = rowOffset + x;
+                if (qf > depth[i]) {
+                    depth[i] = qf;
+                    int si = (int) (s >> 32);
+                    int ti = (int) (t >> 32);
+                    int column = pot ? si & wMask : Math.floorMod(si, tw);
+                    int rowFromBottom = pot ? ti & hMask : Math.floorMod(ti, th);
+                    color[i] = texels[(topRow - rowFromBottom) * tw + column] | 0xFF000000;
+                    if (uv != null) {
+                        uv[3 * i] = s / FIXED_SCALE;
+                        uv[3 * i + 1] = t / FIXED_SCALE;
+                        uv[3 * i + 2] = uvId;
+                    }
+                    written++;
+                }
+            }
+        }
+        return written;
+    }
+
+    /** {@link #nearest} for any tree, one loop per segment. */
+    private long nearestSegments(TriangleSetup setup, int[] spans, SplitTrees trees, int root, int nodes,
+                                  Framebuffer frame, Texture texture, int uvId) {
+        int[] st = stackFor(nodes);
+        int[] segs = segments;
+        double[] planes = trees.planes();
+        long[] steps = trees.fixedSteps();
+        int[] firstColumns = trees.firstColumns();
+        byte[] kinds = trees.kinds();
+        double qBase = setup.qPlane.base;
+        double qDx = setup.qPlane.dx;
+        double qDy = setup.qPlane.dy;
+        int width = frame.width();
+        int[] color = frame.color();
+        float[] depth = frame.depth();
+        double[] uv = frame.uv();
+        int[] texels = texture.argb();
+        int tw = texture.width();
+        int th = texture.height();
+        boolean pot = (tw & (tw - 1)) == 0 && (th & (th - 1)) == 0;
+        int wMask = tw - 1;
+        int hMask = th - 1;
+        int topRow = th - 1;
+        long written = 0;
+        int[] sp = spans;
+        for (int y = setup.rowStart, j = 0; y < setup.rowEnd; y++, j += 2) {
+            int a = sp[j];
+            int b = sp[j + 1];
+            if (a >= b) {
+                continue;
+            }
+            double qRow = qBase + qDy * y;
+            int rowOffset = y * width;
+            int n = descend(root, a, b, y, trees, st, segs);
+            for (int g = 0; g < n; g += 3) {
+                a = segs[g];
+                b = segs[g + 1];
+                int piece = segs[g + 2];
+                byte kind = kinds[piece];
+                int po = SplitTrees.PLANE * piece;
+                if (kind == SplitTrees.AFFINE) {
+                    int fc = firstColumns[piece];
+                    long ds = steps[SplitTrees.FIXED_STEP * piece];
+                    long dt = steps[SplitTrees.FIXED_STEP * piece + 1];
+                    long s = start(planes, po, y, fc, ds, a);
+                    long t = start(planes, po + 3, y, fc, dt, a);
+                    // The column as a double counter, not (double) x: see NearestSpans.perPixel.
+                    double xd = a;
+                    for (int x = a; x < b; x++, xd++, s += ds, t += dt) {
+                        float qf = (float) (qRow + qDx * xd);
+                        int i = rowOffset + x;
+                        if (qf > depth[i]) {
+                            depth[i] = qf;
+                            // An arithmetic shift floors, negative coordinates included.
+                            int si = (int) (s >> 32);
+                            int ti = (int) (t >> 32);
+                            int column = pot ? si & wMask : Math.floorMod(si, tw);
+                            int rowFromBottom = pot ? ti & hMask : Math.floorMod(ti, th);
+                            color[i] = texels[(topRow - rowFromBottom) * tw + column] | 0xFF000000;
+                            if (uv != null) {
+                                uv[3 * i] = s / FIXED_SCALE;
+                                uv[3 * i + 1] = t / FIXED_SCALE;
+                                uv[3 * i + 2] = uvId;
+                            }
+                            written++;
+                        }
+                    }
+                } else {
+                    written += perPixel(setup, kind == SplitTrees.PER_PIXEL, planes, po, y, a, b, qRow, qDx,
+                            frame, texture, uvId);
+                }
+            }
+        }
+        return written;
+    }
+
+    /**
+     * A texel coordinate at column {@code x} of row {@code y} of a piece, in 32.32 fixed point, from its
+     * plane at {@code planes[o..o+3)} (base, dx, dy): anchored at the piece's first column {@code fc}
+     * and stepped from there by {@code step}, exactly as {@link NearestSpans#affineFixed} and
+     * {@link FilteredSpans} do for a piece's row, so that the pixel takes the bits it took when pieces
+     * were filled one by one.
+     */
+    static long start(double[] planes, int o, int y, int fc, long step, int x) {
+        long skip = x - fc;
+        return (long) Math.floor((planes[o] + planes[o + 2] * y + planes[o + 1] * fc) * FIXED_SCALE) + step * skip;
+    }
+
+    /**
+     * Pixels [a, b) of row y in doubles: perspective-correct from the input triangle's planes (the
+     * per-pixel fallback), or from the piece's affine planes at {@code planes[po..]}.
+     */
+    private static long perPixel(TriangleSetup setup, boolean perspective, double[] planes, int po, int y, int a,
+                                 int b, double qRow, double qDx, Framebuffer frame, Texture texture, int uvId) {
+        double sRow;
+        double sDx;
+        double tRow;
+        double tDx;
+        if (perspective) {
+            sRow = setup.sPlane.base + setup.sPlane.dy * y;
+            sDx = setup.sPlane.dx;
+            tRow = setup.tPlane.base + setup.tPlane.dy * y;
+            tDx = setup.tPlane.dx;
+        } else {
+            sRow = planes[po] + planes[po + 2] * y;
+            sDx = planes[po + 1];
+            tRow = planes[po + 3] + planes[po + 5] * y;
+            tDx = planes[po + 4];
+        }
+        int width = frame.width();
+        int[] color = frame.color();
+        float[] depth = frame.depth();
+        double[] uv = frame.uv();
+        int[] texels = texture.argb();
+        int tw = texture.width();
+        int th = texture.height();
+        int topRow = th - 1;
+        long written = 0;
+        int rowOffset = y * width;
+        double xd = a;
+        for (int x = a; x < b; x++, xd++) {
+            double q = qRow + qDx * xd;
+            float qf = (float) q;
+            int i = rowOffset + x;
+            if (qf > depth[i]) {
+                depth[i] = qf;
+                double r = perspective ? 1.0 / q : 1.0;
+                double s = (sRow + sDx * xd) * r;
+                double t = (tRow + tDx * xd) * r;
+                int column = Math.floorMod((int) Math.floor(s), tw);
+                int rowFromBottom = Math.floorMod((int) Math.floor(t), th);
+                color[i] = texels[(topRow - rowFromBottom) * tw + column] | 0xFF000000;
+                if (uv != null) {
+                    uv[3 * i] = s;
+                    uv[3 * i + 1] = t;
+                    uv[3 * i + 2] = uvId;
+                }
+                written++;
+            }
+        }
+        return written;
+    }
+
+    /**
+     * Adds 1 to {@code counts[y * width + x]} for each pixel of the set-up input triangle's spans that
+     * the descent gives a piece (not {@link SplitTrees#NO_PIECE}).
+     *
+     * @return the number of pixels counted
+     */
+    long count(TriangleSetup setup, int[] spans, SplitTrees trees, int root, int nodes, int[] counts, int width) {
+        int[] st = stackFor(nodes);
+        long covered = 0;
+        for (int y = setup.rowStart, j = 0; y < setup.rowEnd; y++, j += 2) {
+            int a = spans[j];
+            int b = spans[j + 1];
+            if (a >= b) {
+                continue;
+            }
+            int n = descend(root, a, b, y, trees, st, segments);
+            for (int g = 0; g < n; g += 3) {
+                for (int x = segments[g]; x < segments[g + 1]; x++) {
+                    counts[y * width + x]++;
+                }
+                covered += segments[g + 1] - segments[g];
+            }
+        }
+        return covered;
+    }
+}
