@@ -43,8 +43,6 @@ public final class SplitTrees {
 
     /** 2^32: texel coordinates in 32.32 fixed point. */
     private static final double FIXED_SCALE = 4294967296.0;
-    /** Texel coordinates below this magnitude fit 32.32 fixed point with room for stepping. */
-    private static final double FIXED_POINT_LIMIT = 1 << 30;
 
     private final ScreenTriangles inputs = new ScreenTriangles();
     private int[] roots = new int[1024];
@@ -62,6 +60,8 @@ public final class SplitTrees {
     private byte[] kinds = new byte[4096];
     private int[] selections = new int[4096];
     private int largestTree;
+    /** Scratch for fitting a piece's planes exactly as the piece-by-piece fill fits them. */
+    private final TriangleSetup scratch = new TriangleSetup();
 
     /** Removes every group, keeping the storage. */
     public void clear() {
@@ -239,65 +239,26 @@ public final class SplitTrees {
         }
         pieces = Math.max(pieces, to);
         int[] f = t.fixed();
-        double[] sc = t.screen();
-        double[] at = t.attributes();
         boolean[] perPixel = t.perPixel();
+        TriangleSetup setup = scratch;
         for (int p = from; p < to; p++) {
             int o = p * ScreenTriangles.FIXED_STRIDE;
-            long ax = f[o];
-            long ay = f[o + 1];
-            long bx = f[o + 2];
-            long by = f[o + 3];
-            long cx = f[o + 4];
-            long cy = f[o + 5];
-            long area = (bx - ax) * (cy - ay) - (cx - ax) * (by - ay);
-            // Corner order as TriangleSetup takes it: 0, i1, i2 with a positive snapped area.
-            int i1 = area < 0 ? 2 : 1;
-            int i2 = area < 0 ? 1 : 2;
-            int minX = (int) Math.min(ax, Math.min(bx, cx));
+            int minX = Math.min(f[o], Math.min(f[o + 2], f[o + 4]));
             firstColumns[p] = ScreenTriangles.ceilDiv(minX - FixedPoint.HALF, FixedPoint.ONE);
-            int s = p * ScreenTriangles.SCREEN_STRIDE;
-            int a = p * ScreenTriangles.ATTRIBUTE_STRIDE;
-            double x0 = sc[s];
-            double y0 = sc[s + 1];
-            double ex1 = sc[s + 2 * i1] - x0;
-            double ey1 = sc[s + 2 * i1 + 1] - y0;
-            double ex2 = sc[s + 2 * i2] - x0;
-            double ey2 = sc[s + 2 * i2 + 1] - y0;
-            double det = ex1 * ey2 - ex2 * ey1;
-            if (det == 0 || !Double.isFinite(det)) {
-                // As TriangleSetup: snapping gave area to a triangle that had none.
-                double one = FixedPoint.ONE;
-                x0 = f[o] / one;
-                y0 = f[o + 1] / one;
-                ex1 = f[o + 2 * i1] / one - x0;
-                ey1 = f[o + 2 * i1 + 1] / one - y0;
-                ex2 = f[o + 2 * i2] / one - x0;
-                ey2 = f[o + 2 * i2 + 1] / one - y0;
-                det = ex1 * ey2 - ex2 * ey1;
-            }
-            double inv = 1.0 / det;
-            int c1 = a + 3 * i1;
-            int c2 = a + 3 * i2;
-            double sv0 = at[a + 1];
-            double sv1 = at[c1 + 1];
-            double sv2 = at[c2 + 1];
-            double tv0 = at[a + 2];
-            double tv1 = at[c1 + 2];
-            double tv2 = at[c2 + 2];
+            // The piece's affine planes exactly as the piece-by-piece fill set them up; a piece whose
+            // snapped corners enclose no area (which that fill gave no pixel) has none: a pixel centre
+            // its region holds takes the input triangle's perspective-correct mapping.
+            boolean flat = !setup.affinePlanes(t, p);
             int po = PLANE * p;
-            fit(planes, po, x0, y0, ex1, ey1, ex2, ey2, inv, sv0, sv1, sv2);
-            fit(planes, po + 3, x0, y0, ex1, ey1, ex2, ey2, inv, tv0, tv1, tv2);
+            planes[po] = setup.sPlane.base;
+            planes[po + 1] = setup.sPlane.dx;
+            planes[po + 2] = setup.sPlane.dy;
+            planes[po + 3] = setup.tPlane.base;
+            planes[po + 4] = setup.tPlane.dx;
+            planes[po + 5] = setup.tPlane.dy;
             fixedSteps[FIXED_STEP * p] = (long) Math.floor(planes[po + 1] * FIXED_SCALE);
             fixedSteps[FIXED_STEP * p + 1] = (long) Math.floor(planes[po + 4] * FIXED_SCALE);
-            double limit = FIXED_POINT_LIMIT;
-            boolean safe = Math.abs(sv0) < limit && Math.abs(sv1) < limit && Math.abs(sv2) < limit
-                    && Math.abs(tv0) < limit && Math.abs(tv1) < limit && Math.abs(tv2) < limit;
-            // A piece whose snapped corners enclose no area has no plane of its own (the piece-by-piece
-            // fill gave it no pixel); a pixel centre its region holds takes the input triangle's
-            // perspective-correct mapping.
-            boolean flat = area == 0 || !Double.isFinite(inv);
-            kinds[p] = perPixel[p] || flat ? PER_PIXEL : safe ? AFFINE : AFFINE_WIDE;
+            kinds[p] = perPixel[p] || flat ? PER_PIXEL : setup.fixedPointSafe ? AFFINE : AFFINE_WIDE;
             double sDx = planes[po + 1];
             double sDy = planes[po + 2];
             double tDx = planes[po + 4];
@@ -305,18 +266,6 @@ public final class SplitTrees {
             selections[p] = maxLevel <= 0 ? 0
                     : Lod.selectOfSquared(sDx * sDx + tDx * tDx, sDy * sDy + tDy * tDy, maxLevel);
         }
-    }
-
-    /** {@link Plane#fit} into {@code out[o..o+3)}: base, dx, dy. */
-    private static void fit(double[] out, int o, double x0, double y0, double ex1, double ey1, double ex2,
-                            double ey2, double inv, double v0, double v1, double v2) {
-        double d1 = v1 - v0;
-        double d2 = v2 - v0;
-        double dx = (d1 * ey2 - d2 * ey1) * inv;
-        double dy = (d2 * ex1 - d1 * ex2) * inv;
-        out[o] = v0 + dx * (0.5 - x0) + dy * (0.5 - y0);
-        out[o + 1] = dx;
-        out[o + 2] = dy;
     }
 
     /** Storage held, in pieces, for trimming: see {@link #shrinkTo}. */

@@ -268,8 +268,8 @@ final class TreeFill {
                         }
                     }
                 } else {
-                    written += perPixel(setup, kind == SplitTrees.PER_PIXEL, planes, po, y, a, b, qRow, qDx,
-                            frame, texture, uvId);
+                    written += NearestSpans.perPixel(oneRow(setup, trees, piece, y, a, b), segmentSpan, frame,
+                            texture, uvId, kind == SplitTrees.PER_PIXEL);
                 }
             }
         }
@@ -288,59 +288,47 @@ final class TreeFill {
         return (long) Math.floor((planes[o] + planes[o + 2] * y + planes[o + 1] * fc) * FIXED_SCALE) + step * skip;
     }
 
+    /** A segment of a per-pixel or wide piece, as a {@link TriangleSetup} of one row ({@link #oneRow}). */
+    private final TriangleSetup segment = new TriangleSetup();
+    /** That segment's span, first column and end column: the spans of {@link #segment}. */
+    final int[] segmentSpan = new int[2];
+
     /**
-     * Pixels [a, b) of row y in doubles: perspective-correct from the input triangle's planes (the
-     * per-pixel fallback), or from the piece's affine planes at {@code planes[po..]}.
+     * Pixels [a, b) of row y of {@code piece}, a per-pixel fallback piece or an affine piece too large
+     * for fixed point, as a setup of one row for the loops that fill whole triangles
+     * ({@link NearestSpans#perPixel}, {@link FilteredSpans#fill}; its span in {@link #segmentSpan}):
+     * the input triangle's depth, and its perspective-correct planes for a fallback piece (so that
+     * the pixel is the per-pixel path's), the piece's own affine planes (doubles) for the other.
      */
-    private static long perPixel(TriangleSetup setup, boolean perspective, double[] planes, int po, int y, int a,
-                                 int b, double qRow, double qDx, Framebuffer frame, Texture texture, int uvId) {
-        double sRow;
-        double sDx;
-        double tRow;
-        double tDx;
-        if (perspective) {
-            sRow = setup.sPlane.base + setup.sPlane.dy * y;
-            sDx = setup.sPlane.dx;
-            tRow = setup.tPlane.base + setup.tPlane.dy * y;
-            tDx = setup.tPlane.dx;
+    TriangleSetup oneRow(TriangleSetup input, SplitTrees trees, int piece, int y, int a, int b) {
+        TriangleSetup one = segment;
+        copy(input.qPlane, one.qPlane);
+        if (trees.kinds()[piece] == SplitTrees.PER_PIXEL) {
+            copy(input.sPlane, one.sPlane);
+            copy(input.tPlane, one.tPlane);
         } else {
-            sRow = planes[po] + planes[po + 2] * y;
-            sDx = planes[po + 1];
-            tRow = planes[po + 3] + planes[po + 5] * y;
-            tDx = planes[po + 4];
+            double[] planes = trees.planes();
+            int po = SplitTrees.PLANE * piece;
+            one.sPlane.base = planes[po];
+            one.sPlane.dx = planes[po + 1];
+            one.sPlane.dy = planes[po + 2];
+            one.tPlane.base = planes[po + 3];
+            one.tPlane.dx = planes[po + 4];
+            one.tPlane.dy = planes[po + 5];
         }
-        int width = frame.width();
-        int[] color = frame.color();
-        float[] depth = frame.depth();
-        double[] uv = frame.uv();
-        int[] texels = texture.argb();
-        int tw = texture.width();
-        int th = texture.height();
-        int topRow = th - 1;
-        long written = 0;
-        int rowOffset = y * width;
-        double xd = a;
-        for (int x = a; x < b; x++, xd++) {
-            double q = qRow + qDx * xd;
-            float qf = (float) q;
-            int i = rowOffset + x;
-            if (qf > depth[i]) {
-                depth[i] = qf;
-                double r = perspective ? 1.0 / q : 1.0;
-                double s = (sRow + sDx * xd) * r;
-                double t = (tRow + tDx * xd) * r;
-                int column = Math.floorMod((int) Math.floor(s), tw);
-                int rowFromBottom = Math.floorMod((int) Math.floor(t), th);
-                color[i] = texels[(topRow - rowFromBottom) * tw + column] | 0xFF000000;
-                if (uv != null) {
-                    uv[3 * i] = s;
-                    uv[3 * i + 1] = t;
-                    uv[3 * i + 2] = uvId;
-                }
-                written++;
-            }
-        }
-        return written;
+        one.firstColumn = trees.firstColumns()[piece];
+        one.fixedPointSafe = false;
+        one.rowStart = y;
+        one.rowEnd = y + 1;
+        segmentSpan[0] = a;
+        segmentSpan[1] = b;
+        return one;
+    }
+
+    private static void copy(Plane from, Plane to) {
+        to.base = from.base;
+        to.dx = from.dx;
+        to.dy = from.dy;
     }
 
     /**

@@ -16,21 +16,15 @@ import dev.trisect.texture.internal.TexelLanes;
  * fixed point at the piece's own first column, trilinear with the piece's one level of detail, set
  * up once per piece in the geometry pass ({@link SplitTrees#selections()}). Depth is the input
  * triangle's, as in the per-pixel path. Per-pixel fallback pieces and pieces too large for fixed
- * point are filled by {@link FilteredSpans#fill} as a triangle of one row (the fallback with the
- * input triangle's perspective-correct planes).
+ * point are filled by {@link FilteredSpans#fill} as a triangle of one row ({@link TreeFill#oneRow}).
  *
- * <p>One per thread (it holds the current levels' descriptors and a one-row setup as scratch).
+ * <p>One per thread, beside the thread's {@link TreeFill}, whose scratch it uses.
  */
 final class TreeFilteredFill {
     /** 2^32: texel coordinates in 32.32 fixed point. */
     private static final double FIXED_SCALE = 4294967296.0;
     /** Right shift from 32.32 fixed point to the sampler's 8 fraction bits. */
     private static final int TO_SAMPLER = 32 - Sampler.FRACTION_BITS;
-
-    /** A segment of a per-pixel or wide piece, as a {@link TriangleSetup} of one row. */
-    private final TriangleSetup segment = new TriangleSetup();
-    /** That segment's span: first column, end column. */
-    private final int[] segmentSpan = new int[2];
 
     /**
      * Fills group {@code root}'s input triangle, set up as {@code setup} for a perspective fill (its
@@ -81,7 +75,9 @@ final class TreeFilteredFill {
                 int b = segs[g + 1];
                 int piece = segs[g + 2];
                 if (kinds[piece] != SplitTrees.AFFINE) {
-                    written += other(setup, trees, piece, y, a, b, frame, mips, uvId, trilinear);
+                    written += FilteredSpans.fill(descent.oneRow(setup, trees, piece, y, a, b), descent.segmentSpan,
+                            frame, mips, uvId, kinds[piece] == SplitTrees.PER_PIXEL,
+                            trilinear ? TextureFilter.TRILINEAR : TextureFilter.BILINEAR);
                     continue;
                 }
                 int selection = trilinear ? selections[piece] : 0;
@@ -158,44 +154,5 @@ final class TreeFilteredFill {
             }
         }
         return written;
-    }
-
-    /**
-     * Pixels [a, b) of row y of a per-pixel fallback piece (the input triangle's perspective-correct
-     * planes) or of an affine piece too large for fixed point (its own planes, in doubles), by
-     * {@link FilteredSpans#fill} over a one-row setup with the input triangle's depth.
-     */
-    private long other(TriangleSetup setup, SplitTrees trees, int piece, int y, int a, int b, Framebuffer frame,
-                       MipChain mips, int uvId, boolean trilinear) {
-        TriangleSetup one = segment;
-        boolean perspective = trees.kinds()[piece] == SplitTrees.PER_PIXEL;
-        copy(setup.qPlane, one.qPlane);
-        if (perspective) {
-            copy(setup.sPlane, one.sPlane);
-            copy(setup.tPlane, one.tPlane);
-        } else {
-            double[] planes = trees.planes();
-            int po = SplitTrees.PLANE * piece;
-            one.sPlane.base = planes[po];
-            one.sPlane.dx = planes[po + 1];
-            one.sPlane.dy = planes[po + 2];
-            one.tPlane.base = planes[po + 3];
-            one.tPlane.dx = planes[po + 4];
-            one.tPlane.dy = planes[po + 5];
-        }
-        one.firstColumn = trees.firstColumns()[piece];
-        one.fixedPointSafe = false;
-        one.rowStart = y;
-        one.rowEnd = y + 1;
-        segmentSpan[0] = a;
-        segmentSpan[1] = b;
-        return FilteredSpans.fill(one, segmentSpan, frame, mips, uvId, perspective,
-                trilinear ? TextureFilter.TRILINEAR : TextureFilter.BILINEAR);
-    }
-
-    private static void copy(Plane from, Plane to) {
-        to.base = from.base;
-        to.dx = from.dx;
-        to.dy = from.dy;
     }
 }

@@ -95,6 +95,27 @@ final class TriangleSetup {
         return true;
     }
 
+    /**
+     * Sets up only the affine attribute planes of triangle {@code tri} ({@code s}, {@code t}; and
+     * {@link #fixedPointSafe}), exactly as {@link #prepare} with {@code perspective} false sets them,
+     * for fills that set up pieces in bulk ({@link SplitTrees}).
+     *
+     * @return false, with the planes unset, when the snapped corners enclose no area (then
+     *         {@link #prepare} fills no pixel of it)
+     */
+    boolean affinePlanes(ScreenTriangles triangles, int tri) {
+        int[] f = triangles.fixed();
+        int o = tri * ScreenTriangles.FIXED_STRIDE;
+        long ax = f[o];
+        long ay = f[o + 1];
+        long area = (f[o + 2] - ax) * (f[o + 5] - ay) - (f[o + 4] - ax) * (long) (f[o + 3] - ay);
+        if (area == 0) {
+            return false;
+        }
+        planes(triangles, tri, area < 0 ? 2 : 1, area < 0 ? 1 : 2, false);
+        return true;
+    }
+
     /** Attribute planes from the unsnapped corners, so snapping moves coverage but never the mapping. */
     private void planes(ScreenTriangles triangles, int tri, int i1, int i2, boolean perspective) {
         double[] sc = triangles.screen();
