@@ -1,6 +1,6 @@
 package dev.trisect.pipeline;
 
-import dev.trisect.tessellate.Tessellator;
+import dev.trisect.tessellate.Slivers;
 
 /**
  * One filled triangle of the last frame (a tessellated piece, or a clipped triangle in the other
@@ -15,9 +15,9 @@ import dev.trisect.tessellate.Tessellator;
  */
 public record PieceInfo(int index, int triangle, int level, boolean fallback, double[] screen, double[] attributes) {
 
-    /** Whether it is a sliver by the tessellator's rule ({@link Tessellator#sliver}): thinner than 1/16 px. */
+    /** Whether it is a sliver by the tessellator's rule ({@link Slivers#sliver}): thinner than 1/16 px. */
     public boolean sliver() {
-        return Tessellator.sliver(screen[0], screen[1], screen[2], screen[3], screen[4], screen[5]);
+        return Slivers.sliver(screen[0], screen[1], screen[2], screen[3], screen[4], screen[5]);
     }
 
     /**

@@ -29,7 +29,7 @@ public interface PieceSink {
      * @param level    the piece's split level: how many times its most-halved edge was halved (0 for
      *                 a triangle passed on whole), for the overlay's depth colouring
      * @param fallback true when a cap stopped the splitting while the piece still fails its policy,
-     *                 or the piece is a sliver ({@link Tessellator#SLIVER_PIXELS}): it must be filled
+     *                 or the piece is a sliver ({@link Slivers#SLIVER_PIXELS}): it must be filled
      *                 per pixel (perspective-correct), not affinely, so that the bound holds on it too
      * @param links    per edge: {@link #OUTER}, {@link #INNER}, or {@code 3 * back + edge} (&gt;= 3): the
      *                 edge is edge {@code edge} of the piece handed on {@code back} &gt;= 1 pieces before

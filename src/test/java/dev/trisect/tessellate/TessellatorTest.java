@@ -252,7 +252,7 @@ class TessellatorTest {
             longest = Math.max(longest, Math.hypot(p[a + 6] - p[b + 6], p[a + 7] - p[b + 7]));
         }
         double altitude = Math.abs(Pieces.area2(p)) / longest;
-        return altitude < Tessellator.SLIVER_PIXELS && altitude * 8 < longest;
+        return altitude < Slivers.SLIVER_PIXELS && altitude * 8 < longest;
     }
 
     /**
