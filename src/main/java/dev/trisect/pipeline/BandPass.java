@@ -88,7 +88,7 @@ final class BandPass {
             for (int c = 0; c < chunkCount; c++) {
                 Chunk chunk = chunks.get(c);
                 lane.pixels += chunk.split
-                        ? rasterizer.fillTrees(frame, chunk.trees, chunk.bins.items(), chunk.bins.start(b),
+                        ? rasterizer.fillTrees(frame, chunk.trees, chunk.out, chunk.bins.items(), chunk.bins.start(b),
                         chunk.bins.start(b + 1), textures, 0, y0, width, y1)
                         : rasterizer.fill(frame, chunk.out, chunk.bins.items(), chunk.bins.start(b),
                         chunk.bins.start(b + 1), textures, perspective, 0, y0, width, y1);
@@ -126,7 +126,7 @@ final class BandPass {
             for (int c = 0; c < chunkCount; c++) {
                 Chunk chunk = chunks.get(c);
                 if (chunk.split) {
-                    rasterizer.countTreeCoverage(counts, width, chunk.trees, chunk.bins.items(),
+                    rasterizer.countTreeCoverage(counts, width, chunk.trees, chunk.out, chunk.bins.items(),
                             chunk.bins.start(b), chunk.bins.start(b + 1), 0, y0, width, y1);
                 } else {
                     rasterizer.countCoverage(counts, width, chunk.out, chunk.bins.items(), chunk.bins.start(b),

@@ -63,12 +63,16 @@ final class Chunk {
      * input triangles) into bands of rows of a frame {@code height} rows high, in order.
      */
     void bin(int bands, int height) {
-        ScreenTriangles filled = split ? trees.inputs() : out;
-        int n = filled.count();
+        int n = split ? trees.count() : out.count();
+        int[] refs = trees.refs();
+        ScreenTriangles inputs = trees.inputs();
         bins.prepare(n);
         for (int i = 0; i < n; i++) {
-            int r0 = Math.max(0, filled.firstRow(i));
-            int r1 = Math.min(height, filled.endRow(i));
+            // A group that was split is binned by its input triangle, one that was not by its one piece.
+            ScreenTriangles filled = !split ? out : refs[i] >= 0 ? inputs : out;
+            int t = !split ? i : refs[i] >= 0 ? refs[i] : -1 - refs[i];
+            int r0 = Math.max(0, filled.firstRow(t));
+            int r1 = Math.min(height, filled.endRow(t));
             if (r0 >= r1) {
                 bins.none(i);
             } else {

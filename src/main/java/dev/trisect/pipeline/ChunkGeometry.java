@@ -129,9 +129,13 @@ final class ChunkGeometry {
                 int firstPiece = chunk.out.count();
                 tess.process(b, o, o + CLIP_STRIDE, o + 2 * CLIP_STRIDE, split, w.sink);
                 if (split && tess.splitTree().complete() && tess.splitTree().leaves() > 0) {
-                    int material = w.batchMaterials[i];
-                    int maxLevel = trilinear ? draws.textures()[material].mipChain().maxLevel() : 0;
-                    addTree(chunk, tess, w.batchIds[i], material, firstPiece, maxLevel);
+                    if (tess.splitTree().nodes() == 0) {
+                        chunk.trees.addSingle(firstPiece);
+                    } else {
+                        int material = w.batchMaterials[i];
+                        int maxLevel = trilinear ? draws.textures()[material].mipChain().maxLevel() : 0;
+                        addTree(chunk, tess, w.batchIds[i], material, firstPiece, maxLevel);
+                    }
                 }
             }
             long t2 = System.nanoTime();

@@ -67,44 +67,46 @@ public final class Rasterizer {
     public long fill(Framebuffer frame, ScreenTriangles triangles, int[] order, int from, int to,
                      Texture[] textures, boolean perspective, int x0, int y0, int x1, int y1) {
         long written = 0;
-        int[] materials = triangles.materials();
-        int[] ids = triangles.ids();
-        boolean[] perPixel = triangles.perPixel();
-        TriangleSetup t = setup;
         for (int n = from; n < to; n++) {
-            int tri = order[n];
-            boolean divide = perspective || perPixel[tri];
-            // The span path places its knots on each row's covered columns within the frame, whatever
-            // the rectangle, so that a pixel never depends on the rectangle being filled.
-            boolean knots = perspective && spanError > 0;
-            if (!t.prepare(triangles, tri, divide, knots ? 0 : x0, y0, knots ? frame.width() : x1, y1)) {
-                continue;
-            }
-            if (knots && !t.fixedPointSafe) {
-                // Texel coordinates beyond 32.32 fixed point: filled per pixel, over the rectangle.
-                knots = false;
-                if ((x0 != 0 || x1 != frame.width()) && !t.prepare(triangles, tri, true, x0, y0, x1, y1)) {
-                    continue;
-                }
-            }
-            solver.walk(t);
-            int[] spans = solver.spans();
-            Texture texture = textures[materials[tri]];
-            int uvId = ids[tri] + 1;
-            if (knots) {
-                written += filter == TextureFilter.NEAREST
-                        ? KnotSpans.nearest(t, spans, frame, texture, uvId, spanError, x0, x1)
-                        : KnotFilteredSpans.fill(t, spans, frame, texture.mipChain(), uvId, spanError,
-                        filter == TextureFilter.TRILINEAR, x0, x1);
-            } else if (filter != TextureFilter.NEAREST) {
-                written += FilteredSpans.fill(t, spans, frame, texture.mipChain(), uvId, divide, filter);
-            } else if (!divide && t.fixedPointSafe) {
-                written += NearestSpans.affineFixed(t, spans, frame, texture, uvId);
-            } else {
-                written += NearestSpans.perPixel(t, spans, frame, texture, uvId, divide);
-            }
+            written += fillOne(frame, triangles, order[n], textures, perspective, x0, y0, x1, y1);
         }
         return written;
+    }
+
+    /** {@link #fill} of one triangle, {@code tri} of {@code triangles}. */
+    private long fillOne(Framebuffer frame, ScreenTriangles triangles, int tri, Texture[] textures,
+                         boolean perspective, int x0, int y0, int x1, int y1) {
+        TriangleSetup t = setup;
+        boolean divide = perspective || triangles.perPixel()[tri];
+        // The span path places its knots on each row's covered columns within the frame, whatever
+        // the rectangle, so that a pixel never depends on the rectangle being filled.
+        boolean knots = perspective && spanError > 0;
+        if (!t.prepare(triangles, tri, divide, knots ? 0 : x0, y0, knots ? frame.width() : x1, y1)) {
+            return 0;
+        }
+        if (knots && !t.fixedPointSafe) {
+            // Texel coordinates beyond 32.32 fixed point: filled per pixel, over the rectangle.
+            knots = false;
+            if ((x0 != 0 || x1 != frame.width()) && !t.prepare(triangles, tri, true, x0, y0, x1, y1)) {
+                return 0;
+            }
+        }
+        solver.walk(t);
+        int[] spans = solver.spans();
+        Texture texture = textures[triangles.materials()[tri]];
+        int uvId = triangles.ids()[tri] + 1;
+        if (knots) {
+            return filter == TextureFilter.NEAREST
+                    ? KnotSpans.nearest(t, spans, frame, texture, uvId, spanError, x0, x1)
+                    : KnotFilteredSpans.fill(t, spans, frame, texture.mipChain(), uvId, spanError,
+                    filter == TextureFilter.TRILINEAR, x0, x1);
+        } else if (filter != TextureFilter.NEAREST) {
+            return FilteredSpans.fill(t, spans, frame, texture.mipChain(), uvId, divide, filter);
+        } else if (!divide && t.fixedPointSafe) {
+            return NearestSpans.affineFixed(t, spans, frame, texture, uvId);
+        } else {
+            return NearestSpans.perPixel(t, spans, frame, texture, uvId, divide);
+        }
     }
 
     /**
@@ -113,19 +115,27 @@ public final class Rasterizer {
      * and depth from the input triangle, each pixel's texel coordinates from the piece of the split
      * tree it lies in ({@link TreeFill}).
      *
+     * @param pieces   the pieces the groups' trees refer to (a group that was not split is filled as
+     *                 its one piece)
      * @param textures texture of each material index
      * @return the number of pixels written (depth test passed)
      */
-    public long fillTrees(Framebuffer frame, SplitTrees groups, int[] order, int from, int to, Texture[] textures,
-                          int x0, int y0, int x1, int y1) {
+    public long fillTrees(Framebuffer frame, SplitTrees groups, ScreenTriangles pieces, int[] order, int from, int to,
+                          Texture[] textures, int x0, int y0, int x1, int y1) {
         long written = 0;
         ScreenTriangles inputs = groups.inputs();
         int[] materials = inputs.materials();
         int[] ids = inputs.ids();
         int[] roots = groups.roots();
         TriangleSetup t = setup;
+        int[] refs = groups.refs();
         for (int n = from; n < to; n++) {
-            int g = order[n];
+            int g = refs[order[n]];
+            if (g < 0) {
+                // Not split: its one piece is the input triangle, filled as the other paths fill one.
+                written += fillOne(frame, pieces, -1 - g, textures, false, x0, y0, x1, y1);
+                continue;
+            }
             if (!t.prepare(inputs, g, true, x0, y0, x1, y1)) {
                 continue;
             }
@@ -152,12 +162,17 @@ public final class Rasterizer {
      *
      * @return the number of coverings counted
      */
-    public long countTreeCoverage(int[] counts, int width, SplitTrees groups, int[] order, int from, int to,
-                                  int x0, int y0, int x1, int y1) {
+    public long countTreeCoverage(int[] counts, int width, SplitTrees groups, ScreenTriangles pieces, int[] order,
+                                  int from, int to, int x0, int y0, int x1, int y1) {
         long covered = 0;
         TriangleSetup t = setup;
+        int[] refs = groups.refs();
         for (int n = from; n < to; n++) {
-            int g = order[n];
+            int g = refs[order[n]];
+            if (g < 0) {
+                covered += countOne(counts, width, pieces, -1 - g, x0, y0, x1, y1);
+                continue;
+            }
             if (!t.prepare(groups.inputs(), g, false, x0, y0, x1, y1)) {
                 continue;
             }
@@ -178,21 +193,29 @@ public final class Rasterizer {
     public long countCoverage(int[] counts, int width, ScreenTriangles triangles, int[] order, int from, int to,
                               int x0, int y0, int x1, int y1) {
         long covered = 0;
-        TriangleSetup t = setup;
         for (int n = from; n < to; n++) {
-            if (!t.prepare(triangles, order[n], false, x0, y0, x1, y1)) {
-                continue;
+            covered += countOne(counts, width, triangles, order[n], x0, y0, x1, y1);
+        }
+        return covered;
+    }
+
+    /** {@link #countCoverage} of one triangle, {@code tri} of {@code triangles}. */
+    private long countOne(int[] counts, int width, ScreenTriangles triangles, int tri, int x0, int y0, int x1,
+                          int y1) {
+        TriangleSetup t = setup;
+        if (!t.prepare(triangles, tri, false, x0, y0, x1, y1)) {
+            return 0;
+        }
+        solver.walk(t);
+        int[] sp = solver.spans();
+        long covered = 0;
+        for (int y = t.rowStart, j = 0; y < t.rowEnd; y++, j += 2) {
+            int row = y * width;
+            int end = sp[j + 1];
+            for (int x = sp[j]; x < end; x++) {
+                counts[row + x]++;
             }
-            solver.walk(t);
-            int[] sp = solver.spans();
-            for (int y = t.rowStart, j = 0; y < t.rowEnd; y++, j += 2) {
-                int row = y * width;
-                int end = sp[j + 1];
-                for (int x = sp[j]; x < end; x++) {
-                    counts[row + x]++;
-                }
-                covered += end - sp[j];
-            }
+            covered += end - sp[j];
         }
         return covered;
     }

@@ -9,9 +9,10 @@ import java.util.Arrays;
  * pixel lies in, for {@link TreeFill}: one pass per input triangle, coverage from the input triangle
  * itself, each row cut into its pieces' segments by descending the tree.
  *
- * <p>Per input triangle (a group): the triangle as the tessellator received it, in {@link #inputs()}
- * (snapped corners for coverage, {@code 1/w} for depth, texel coordinates for the per-pixel fallback),
- * and the root of its tree. A node is one split: a line in screen pixels ({@link #lines()}: along the
+ * <p>Per input triangle (a group, in the order added; {@link #refs()}): one that was not split is
+ * its one piece, filled as a triangle; one that was split is the triangle as the tessellator received
+ * it, in {@link #inputs()} (snapped corners for coverage, {@code 1/w} for depth, texel coordinates for
+ * the per-pixel fallback), and the root of its tree. A node is one split: a line in screen pixels ({@link #lines()}: along the
  * row of pixel centres of pixel row y it lies at x = {@code k y + m + 0.5}, so that its first column
  * at or right of the line is {@code ceil(k y + m)}) and its two children ({@link #kids()}: left,
  * the side of smaller x, then right), each a node ({@code >= 0}), a piece ({@code -1 - p}, p the
@@ -48,6 +49,9 @@ public final class SplitTrees {
     private int[] roots = new int[1024];
     private int[] nodeCounts = new int[1024];
     private boolean[] simple = new boolean[1024];
+    /** Per group: the index of its split tree's input triangle in {@link #inputs}, or -1 - its one piece. */
+    private int[] refs = new int[1024];
+    private int groups;
     private int nodes;
     private int[] kids = new int[2 * 4096];
     private double[] lines = new double[LINE * 4096];
@@ -66,22 +70,23 @@ public final class SplitTrees {
     /** Removes every group, keeping the storage. */
     public void clear() {
         inputs.clear();
+        groups = 0;
         nodes = 0;
         pieces = 0;
         largestTree = 0;
     }
 
-    /** Number of groups (input triangles). */
+    /** Number of groups (input triangles, split or not), in the order they were added. */
     public int count() {
-        return inputs.count();
+        return groups;
     }
 
-    /** The input triangles, one per group, with their ids and materials. */
+    /** The input triangles of the groups that were split ({@link #refs()}), with their ids and materials. */
     public ScreenTriangles inputs() {
         return inputs;
     }
 
-    /** The root of each group's tree (a reference, see the class comment). */
+    /** The root of each split input triangle's tree (a reference, see the class comment), by {@link #refs()}. */
     public int[] roots() {
         return roots;
     }
@@ -150,14 +155,39 @@ public final class SplitTrees {
         return largestTree;
     }
 
-    /** Group {@code g}'s number of nodes. */
+    /**
+     * Per group g: what it fills. A group that was split refers to its input triangle, index
+     * {@code refs()[g] >= 0} into {@link #inputs()} and into the per-tree arrays ({@link #roots()},
+     * {@link #nodeCount}, {@link #simple}); a group that was not split (its tree a single leaf, the input
+     * triangle itself) refers to its one piece in the chunk's pieces as {@code -1 - piece}, and has no
+     * input triangle, tree or planes here: the fill takes the piece as a triangle.
+     */
+    public int[] refs() {
+        return refs;
+    }
+
+    /** Adds a group that was not split: piece {@code piece} of the chunk's pieces is the whole input triangle. */
+    public void addSingle(int piece) {
+        int g = group();
+        refs[g] = -1 - piece;
+    }
+
+    /** A new group's number, with room for it. */
+    private int group() {
+        if (groups == refs.length) {
+            refs = Arrays.copyOf(refs, 2 * groups);
+        }
+        return groups++;
+    }
+
+    /** The number of nodes of the tree of input triangle {@code i} ({@link #refs()}). */
     public int nodeCount(int g) {
         return nodeCounts[g];
     }
 
     /**
-     * Adds a group: the input triangle (screen pixels, {@code 1/w}, texel coordinates per corner), and its
-     * split tree as a tessellator recorded it, whose leaf k is piece {@code firstPiece + k} of
+     * Adds a group that was split: the input triangle (screen pixels, {@code 1/w}, texel coordinates per
+     * corner), and its split tree as a tessellator recorded it, whose leaf k is piece {@code firstPiece + k} of
      * {@code pieces} (already appended there, {@code tree.leaves()} of them).
      *
      * @param maxLevel the last level of the material's mip chain when the frame filters trilinearly
@@ -174,6 +204,7 @@ public final class SplitTrees {
         int treeNodes = tree.nodes();
         int leaves = tree.leaves();
         int g = inputs.count();
+        refs[group()] = g;
         if (g == roots.length) {
             roots = Arrays.copyOf(roots, 2 * g);
             nodeCounts = Arrays.copyOf(nodeCounts, 2 * g);
@@ -213,7 +244,7 @@ public final class SplitTrees {
     }
 
     /**
-     * Whether group {@code g}'s pieces are all {@link #AFFINE} and none was dropped off screen: its
+     * Whether the pieces of input triangle {@code g}'s tree ({@link #refs()}) are all {@link #AFFINE} and none was dropped off screen: its
      * rows' segments then follow one another without gaps, each filled in fixed point.
      */
     public boolean simple(int g) {
@@ -296,6 +327,9 @@ public final class SplitTrees {
             roots = Arrays.copyOf(roots, m);
             nodeCounts = Arrays.copyOf(nodeCounts, m);
             simple = Arrays.copyOf(simple, m);
+        }
+        if (refs.length > Math.max(m, groups)) {
+            refs = Arrays.copyOf(refs, Math.max(m, groups));
         }
     }
 }

@@ -200,7 +200,10 @@ final class TreeFill {
         return written;
     }
 
-    /** {@link #nearest} for any tree, one loop per segment. */
+    /**
+     * {@link #nearest} for any tree: one loop across each run of affine pieces of a row, the
+     * fallback and wide pieces between them per pixel.
+     */
     private long nearestSegments(TriangleSetup setup, int[] spans, SplitTrees trees, int root, int nodes,
                                   Framebuffer frame, Texture texture, int uvId) {
         int[] st = stackFor(nodes);
@@ -235,45 +238,72 @@ final class TreeFill {
             int rowOffset = y * width;
             int n = descend(root, a, b, y, trees, st, segs);
             for (int g = 0; g < n; g += 3) {
-                a = segs[g];
-                b = segs[g + 1];
                 int piece = segs[g + 2];
-                byte kind = kinds[piece];
+                if (kinds[piece] != SplitTrees.AFFINE) {
+                    // Per pixel, as the per-pixel path (a fallback piece) or in doubles (a wide one).
+                    written += NearestSpans.perPixel(oneRow(setup, trees, piece, y, segs[g], segs[g + 1]),
+                            segmentSpan, frame, texture, uvId, kinds[piece] == SplitTrees.PER_PIXEL);
+                    continue;
+                }
+                // One loop across the run of affine pieces that starts here, loading the next piece's
+                // planes where the row crosses into it.
+                int runEnd = segs[affineRun(segs, g, n, kinds) - 2];
+                int end = segs[g + 1];
                 int po = SplitTrees.PLANE * piece;
-                if (kind == SplitTrees.AFFINE) {
-                    int fc = firstColumns[piece];
-                    long ds = steps[SplitTrees.FIXED_STEP * piece];
-                    long dt = steps[SplitTrees.FIXED_STEP * piece + 1];
-                    long s = start(planes, po, y, fc, ds, a);
-                    long t = start(planes, po + 3, y, fc, dt, a);
-                    // The column as a double counter, not (double) x: see NearestSpans.perPixel.
-                    double xd = a;
-                    for (int x = a; x < b; x++, xd++, s += ds, t += dt) {
-                        float qf = (float) (qRow + qDx * xd);
-                        int i = rowOffset + x;
-                        if (qf > depth[i]) {
-                            depth[i] = qf;
-                            // An arithmetic shift floors, negative coordinates included.
-                            int si = (int) (s >> 32);
-                            int ti = (int) (t >> 32);
-                            int column = pot ? si & wMask : Math.floorMod(si, tw);
-                            int rowFromBottom = pot ? ti & hMask : Math.floorMod(ti, th);
-                            color[i] = texels[(topRow - rowFromBottom) * tw + column] | 0xFF000000;
-                            if (uv != null) {
-                                uv[3 * i] = s / FIXED_SCALE;
-                                uv[3 * i + 1] = t / FIXED_SCALE;
-                                uv[3 * i + 2] = uvId;
-                            }
-                            written++;
-                        }
+                int fc = firstColumns[piece];
+                long ds = steps[SplitTrees.FIXED_STEP * piece];
+                long dt = steps[SplitTrees.FIXED_STEP * piece + 1];
+                long s = start(planes, po, y, fc, ds, segs[g]);
+                long t = start(planes, po + 3, y, fc, dt, segs[g]);
+                // The column as a double counter, not (double) x: see NearestSpans.perPixel.
+                double xd = segs[g];
+                for (int x = segs[g]; x < runEnd; x++, xd++, s += ds, t += dt) {
+                    if (x == end) {
+                        g += 3;
+                        end = segs[g + 1];
+                        piece = segs[g + 2];
+                        po = SplitTrees.PLANE * piece;
+                        fc = firstColumns[piece];
+                        ds = steps[SplitTrees.FIXED_STEP * piece];
+                        dt = steps[SplitTrees.FIXED_STEP * piece + 1];
+                        s = start(planes, po, y, fc, ds, x);
+                        t = start(planes, po + 3, y, fc, dt, x);
                     }
-                } else {
-                    written += NearestSpans.perPixel(oneRow(setup, trees, piece, y, a, b), segmentSpan, frame,
-                            texture, uvId, kind == SplitTrees.PER_PIXEL);
+                    float qf = (float) (qRow + qDx * xd);
+                    int i = rowOffset + x;
+                    if (qf > depth[i]) {
+                        depth[i] = qf;
+                        // An arithmetic shift floors, negative coordinates included.
+                        int si = (int) (s >> 32);
+                        int ti = (int) (t >> 32);
+                        int column = pot ? si & wMask : Math.floorMod(si, tw);
+                        int rowFromBottom = pot ? ti & hMask : Math.floorMod(ti, th);
+                        color[i] = texels[(topRow - rowFromBottom) * tw + column] | 0xFF000000;
+                        if (uv != null) {
+                            uv[3 * i] = s / FIXED_SCALE;
+                            uv[3 * i + 1] = t / FIXED_SCALE;
+                            uv[3 * i + 2] = uvId;
+                        }
+                        written++;
+                    }
                 }
             }
         }
         return written;
+    }
+
+    /**
+     * The end (exclusive, an index into {@code segs}) of the run of segments from {@code g} on whose
+     * pieces are {@link SplitTrees#AFFINE} and which follow one another without a gap (a gap would be
+     * a piece dropped off screen, which holds no pixel centre of the frame; the run ends there to be safe).
+     * Segment {@code g}'s piece must be affine.
+     */
+    static int affineRun(int[] segs, int g, int n, byte[] kinds) {
+        int k = g + 3;
+        while (k < n && kinds[segs[k + 2]] == SplitTrees.AFFINE && segs[k] == segs[k - 2]) {
+            k += 3;
+        }
+        return k;
     }
 
     /**

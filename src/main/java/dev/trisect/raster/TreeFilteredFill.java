@@ -10,9 +10,10 @@ import dev.trisect.texture.internal.TexelLanes;
 
 /**
  * The tessellated path's bilinear and trilinear fill, one pass per input triangle: each row of the
- * input triangle is cut into its pieces' segments by {@link TreeFill#descend}, and each segment is
- * filled as one row of its piece, so that its pixels take exactly the colour and texel coordinates
- * the piece-by-piece fill ({@link FilteredSpans}) gave them: an affine piece's row anchored in 32.32
+ * input triangle is cut into its pieces' segments by {@link TreeFill#descend}, and each run of affine
+ * pieces along the row is filled by one loop that loads the next piece's planes and levels where the
+ * row crosses into it. Each segment is filled as a row of its piece, so that its pixels take exactly
+ * the colour and texel coordinates the piece-by-piece fill ({@link FilteredSpans}) gave them: an affine piece's row anchored in 32.32
  * fixed point at the piece's own first column, trilinear with the piece's one level of detail, set
  * up once per piece in the geometry pass ({@link SplitTrees#selections()}). Depth is the input
  * triangle's, as in the per-pixel path. Per-pixel fallback pieces and pieces too large for fixed
@@ -71,65 +72,78 @@ final class TreeFilteredFill {
             double qRow = qBase + qDy * y;
             int rowOffset = y * width;
             for (int g = 0; g < n; g += 3) {
-                int a = segs[g];
-                int b = segs[g + 1];
                 int piece = segs[g + 2];
                 if (kinds[piece] != SplitTrees.AFFINE) {
-                    written += FilteredSpans.fill(descent.oneRow(setup, trees, piece, y, a, b), descent.segmentSpan,
-                            frame, mips, uvId, kinds[piece] == SplitTrees.PER_PIXEL,
+                    written += FilteredSpans.fill(descent.oneRow(setup, trees, piece, y, segs[g], segs[g + 1]),
+                            descent.segmentSpan, frame, mips, uvId, kinds[piece] == SplitTrees.PER_PIXEL,
                             trilinear ? TextureFilter.TRILINEAR : TextureFilter.BILINEAR);
                     continue;
                 }
-                int selection = trilinear ? selections[piece] : 0;
-                int l1 = Lod.level(selection);
-                int weight = Lod.weight(selection);
-                int l2 = weight == 0 ? l1 : l1 + 1;
-                if (l1 != level || l2 != level2) {
-                    level = l1;
-                    level2 = l2;
-                    int o1 = level * TexelLanes.LEVEL_INTS;
-                    int o2 = level2 * TexelLanes.LEVEL_INTS;
-                    off = lv[o1 + TexelLanes.OFFSET];
-                    stride = lv[o1 + TexelLanes.STRIDE];
-                    tw = lv[o1 + TexelLanes.WIDTH];
-                    th = lv[o1 + TexelLanes.HEIGHT];
-                    wm = lv[o1 + TexelLanes.WIDTH_MASK];
-                    hm = lv[o1 + TexelLanes.HEIGHT_MASK];
-                    off2 = lv[o2 + TexelLanes.OFFSET];
-                    stride2 = lv[o2 + TexelLanes.STRIDE];
-                    tw2 = lv[o2 + TexelLanes.WIDTH];
-                    th2 = lv[o2 + TexelLanes.HEIGHT];
-                    wm2 = lv[o2 + TexelLanes.WIDTH_MASK];
-                    hm2 = lv[o2 + TexelLanes.HEIGHT_MASK];
-                    pot = (wm | hm | wm2 | hm2) >= 0;
-                    ks = mips.scaleS(level) * FIXED_SCALE;
-                    kt = mips.scaleT(level) * FIXED_SCALE;
-                    ks2 = mips.scaleS(level2) * FIXED_SCALE;
-                    kt2 = mips.scaleT(level2) * FIXED_SCALE;
-                }
-                // As FilteredSpans.levelFixed fills this row of the piece: anchored at its first column.
-                int po = SplitTrees.PLANE * piece;
-                double sDx = planes[po + 1];
-                double tDx = planes[po + 4];
-                int fc = firstColumns[piece];
-                long skip = a - fc;
-                double sAnchor = planes[po] + planes[po + 2] * y + sDx * fc;
-                double tAnchor = planes[po + 3] + planes[po + 5] * y + tDx * fc;
-                long ds0 = steps[SplitTrees.FIXED_STEP * piece];
-                long dt0 = steps[SplitTrees.FIXED_STEP * piece + 1];
-                long ds = (long) Math.floor(sDx * ks);
-                long dt = (long) Math.floor(tDx * kt);
-                long ds2 = (long) Math.floor(sDx * ks2);
-                long dt2 = (long) Math.floor(tDx * kt2);
-                long s0 = (long) Math.floor(sAnchor * FIXED_SCALE) + ds0 * skip;
-                long t0 = (long) Math.floor(tAnchor * FIXED_SCALE) + dt0 * skip;
-                long s = (long) Math.floor(sAnchor * ks) - half + ds * skip;
-                long t = (long) Math.floor(tAnchor * kt) - half + dt * skip;
-                long s2 = (long) Math.floor(sAnchor * ks2) - half + ds2 * skip;
-                long t2 = (long) Math.floor(tAnchor * kt2) - half + dt2 * skip;
+                // One loop across the run of affine pieces that starts here; where the row crosses into
+                // the next piece (first at the run's start), its levels and planes are loaded.
+                int runStart = segs[g];
+                int runEnd = segs[TreeFill.affineRun(segs, g, n, kinds) - 2];
+                int end = runStart;
+                g -= 3;
+                int weight = 0;
+                long ds0 = 0, dt0 = 0, ds = 0, dt = 0, ds2 = 0, dt2 = 0;
+                long s0 = 0, t0 = 0, s = 0, t = 0, s2 = 0, t2 = 0;
                 // The column as a double counter, not (double) x: see NearestSpans.perPixel.
-                double xd = a;
-                for (int x = a; x < b; x++, xd++, s0 += ds0, t0 += dt0, s += ds, t += dt, s2 += ds2, t2 += dt2) {
+                double xd = runStart;
+                for (int x = runStart; x < runEnd; x++, xd++, s0 += ds0, t0 += dt0, s += ds, t += dt, s2 += ds2,
+                        t2 += dt2) {
+                    if (x == end) {
+                        g += 3;
+                        end = segs[g + 1];
+                        piece = segs[g + 2];
+                        int selection = trilinear ? selections[piece] : 0;
+                        int l1 = Lod.level(selection);
+                        weight = Lod.weight(selection);
+                        int l2 = weight == 0 ? l1 : l1 + 1;
+                        if (l1 != level || l2 != level2) {
+                            level = l1;
+                            level2 = l2;
+                            int o1 = level * TexelLanes.LEVEL_INTS;
+                            int o2 = level2 * TexelLanes.LEVEL_INTS;
+                            off = lv[o1 + TexelLanes.OFFSET];
+                            stride = lv[o1 + TexelLanes.STRIDE];
+                            tw = lv[o1 + TexelLanes.WIDTH];
+                            th = lv[o1 + TexelLanes.HEIGHT];
+                            wm = lv[o1 + TexelLanes.WIDTH_MASK];
+                            hm = lv[o1 + TexelLanes.HEIGHT_MASK];
+                            off2 = lv[o2 + TexelLanes.OFFSET];
+                            stride2 = lv[o2 + TexelLanes.STRIDE];
+                            tw2 = lv[o2 + TexelLanes.WIDTH];
+                            th2 = lv[o2 + TexelLanes.HEIGHT];
+                            wm2 = lv[o2 + TexelLanes.WIDTH_MASK];
+                            hm2 = lv[o2 + TexelLanes.HEIGHT_MASK];
+                            pot = (wm | hm | wm2 | hm2) >= 0;
+                            ks = mips.scaleS(level) * FIXED_SCALE;
+                            kt = mips.scaleT(level) * FIXED_SCALE;
+                            ks2 = mips.scaleS(level2) * FIXED_SCALE;
+                            kt2 = mips.scaleT(level2) * FIXED_SCALE;
+                        }
+                        // As FilteredSpans.levelFixed fills this row of the piece: anchored at its first column.
+                        int po = SplitTrees.PLANE * piece;
+                        double sDx = planes[po + 1];
+                        double tDx = planes[po + 4];
+                        int fc = firstColumns[piece];
+                        long skip = x - fc;
+                        double sAnchor = planes[po] + planes[po + 2] * y + sDx * fc;
+                        double tAnchor = planes[po + 3] + planes[po + 5] * y + tDx * fc;
+                        ds0 = steps[SplitTrees.FIXED_STEP * piece];
+                        dt0 = steps[SplitTrees.FIXED_STEP * piece + 1];
+                        ds = (long) Math.floor(sDx * ks);
+                        dt = (long) Math.floor(tDx * kt);
+                        ds2 = (long) Math.floor(sDx * ks2);
+                        dt2 = (long) Math.floor(tDx * kt2);
+                        s0 = (long) Math.floor(sAnchor * FIXED_SCALE) + ds0 * skip;
+                        t0 = (long) Math.floor(tAnchor * FIXED_SCALE) + dt0 * skip;
+                        s = (long) Math.floor(sAnchor * ks) - half + ds * skip;
+                        t = (long) Math.floor(tAnchor * kt) - half + dt * skip;
+                        s2 = (long) Math.floor(sAnchor * ks2) - half + ds2 * skip;
+                        t2 = (long) Math.floor(tAnchor * kt2) - half + dt2 * skip;
+                    }
                     float qf = (float) (qRow + qDx * xd);
                     int i = rowOffset + x;
                     if (qf > depth[i]) {

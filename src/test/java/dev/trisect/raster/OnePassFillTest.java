@@ -63,25 +63,30 @@ class OnePassFillTest {
             }
             splitTrees += tess.splitTree().nodes() > 0 ? 1 : 0;
             SplitTrees trees = new SplitTrees();
-            int maxLevel = filter == TextureFilter.TRILINEAR ? textures[material].mipChain().maxLevel() : 0;
-            double[] v = tess.vertices();
-            int a = 0;
-            int b = PROJECTED_STRIDE;
-            int c = 2 * PROJECTED_STRIDE;
-            trees.add(v[a + SCREEN_X], v[a + SCREEN_Y], 1 / v[a + W], v[a + S], v[a + T],
-                    v[b + SCREEN_X], v[b + SCREEN_Y], 1 / v[b + W], v[b + S], v[b + T],
-                    v[c + SCREEN_X], v[c + SCREEN_Y], 1 / v[c + W], v[c + S], v[c + T], 0, material,
-                    tess.splitTree(), pieces, 0, maxLevel);
+            boolean single = tess.splitTree().nodes() == 0;
+            if (single) {
+                trees.addSingle(0);
+            } else {
+                int maxLevel = filter == TextureFilter.TRILINEAR ? textures[material].mipChain().maxLevel() : 0;
+                double[] v = tess.vertices();
+                int a = 0;
+                int b = PROJECTED_STRIDE;
+                int c = 2 * PROJECTED_STRIDE;
+                trees.add(v[a + SCREEN_X], v[a + SCREEN_Y], 1 / v[a + W], v[a + S], v[a + T],
+                        v[b + SCREEN_X], v[b + SCREEN_Y], 1 / v[b + W], v[b + S], v[b + T],
+                        v[c + SCREEN_X], v[c + SCREEN_Y], 1 / v[c + W], v[c + S], v[c + T], 0, material,
+                        tess.splitTree(), pieces, 0, maxLevel);
+            }
 
             Framebuffer onePass = frame();
             Rasterizer r = new Rasterizer();
             r.filter(filter);
             int band = 1 + random.nextInt(HEIGHT);
             for (int y0 = 0; y0 < HEIGHT; y0 += band) {
-                r.fillTrees(onePass, trees, new int[] {0}, 0, 1, textures, 0, y0, WIDTH, Math.min(HEIGHT, y0 + band));
+                r.fillTrees(onePass, trees, pieces, new int[] {0}, 0, 1, textures, 0, y0, WIDTH, Math.min(HEIGHT, y0 + band));
             }
             Framebuffer perPixel = frame();
-            r.fill(perPixel, trees.inputs(), new int[] {0}, 0, 1, textures, true, 0, 0, WIDTH, HEIGHT);
+            r.fill(perPixel, single ? pieces : trees.inputs(), new int[] {0}, 0, 1, textures, true, 0, 0, WIDTH, HEIGHT);
             String what = "scene " + scene + ", " + filter + ", bands of " + band;
             assertArrayEquals(perPixel.depth(), onePass.depth(), what + ": coverage and depth");
 
@@ -97,13 +102,16 @@ class OnePassFillTest {
                     if (onePass.depth()[i] <= 0) {
                         continue;
                     }
-                    int[] st = descent.stackFor(trees.nodeCount(0));
-                    int n = TreeFill.descend(trees.roots()[0], x, x + 1, y, trees, st, descent.segments());
-                    assertEquals(3, n, what + ": pixel (" + x + ", " + y + ") lies in one piece");
-                    int p = descent.segments()[2];
+                    int p = 0;
+                    if (!single) {
+                        int[] st = descent.stackFor(trees.nodeCount(0));
+                        int n = TreeFill.descend(trees.roots()[0], x, x + 1, y, trees, st, descent.segments());
+                        assertEquals(3, n, what + ": pixel (" + x + ", " + y + ") lies in one piece");
+                        p = descent.segments()[2];
+                    }
                     checked++;
                     Framebuffer expected;
-                    if (trees.kinds()[p] == SplitTrees.PER_PIXEL) {
+                    if (single ? pieces.perPixel()[p] : trees.kinds()[p] == SplitTrees.PER_PIXEL) {
                         expected = perPixel;
                         fallbackPixels++;
                     } else if (alone[p].depth()[i] > 0) {
