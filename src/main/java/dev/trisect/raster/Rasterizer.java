@@ -144,7 +144,7 @@ public final class Rasterizer {
             Texture texture = textures[materials[g]];
             int uvId = ids[g] + 1;
             if (filter == TextureFilter.NEAREST) {
-                written += trees.nearest(t, spans, groups, roots[g], groups.nodeCount(g), groups.simple(g), frame, texture,
+                written += trees.nearest(t, spans, groups, roots[g], groups.nodeCount(g), frame, texture,
                         uvId);
             } else {
                 written += filteredTrees.fill(trees, t, spans, groups, roots[g], groups.nodeCount(g), frame,

@@ -48,7 +48,6 @@ public final class SplitTrees {
     private final ScreenTriangles inputs = new ScreenTriangles();
     private int[] roots = new int[1024];
     private int[] nodeCounts = new int[1024];
-    private boolean[] simple = new boolean[1024];
     /** Per group: the index of its split tree's input triangle in {@link #inputs}, or -1 - its one piece. */
     private int[] refs = new int[1024];
     private int groups;
@@ -208,7 +207,6 @@ public final class SplitTrees {
         if (g == roots.length) {
             roots = Arrays.copyOf(roots, 2 * g);
             nodeCounts = Arrays.copyOf(nodeCounts, 2 * g);
-            simple = Arrays.copyOf(simple, 2 * g);
         }
         inputs.add(x0, y0, q0, s0, t0, x1, y1, q1, s1, t1, x2, y2, q2, s2, t2, id, material);
         int base = nodes;
@@ -236,19 +234,6 @@ public final class SplitTrees {
         nodes = base + treeNodes;
         largestTree = Math.max(largestTree, treeNodes);
         fitPieces(pieceTriangles, firstPiece, firstPiece + leaves, maxLevel);
-        boolean all = leaves == treeNodes + 1;
-        for (int p = firstPiece; p < firstPiece + leaves; p++) {
-            all &= kinds[p] == AFFINE;
-        }
-        simple[g] = all;
-    }
-
-    /**
-     * Whether the pieces of input triangle {@code g}'s tree ({@link #refs()}) are all {@link #AFFINE} and none was dropped off screen: its
-     * rows' segments then follow one another without gaps, each filled in fixed point.
-     */
-    public boolean simple(int g) {
-        return simple[g];
     }
 
     private static int translate(int ref, int nodeBase, int firstPiece) {
@@ -326,7 +311,6 @@ public final class SplitTrees {
         if (roots.length > m) {
             roots = Arrays.copyOf(roots, m);
             nodeCounts = Arrays.copyOf(nodeCounts, m);
-            simple = Arrays.copyOf(simple, m);
         }
         if (refs.length > Math.max(m, groups)) {
             refs = Arrays.copyOf(refs, Math.max(m, groups));

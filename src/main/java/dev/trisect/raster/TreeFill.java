@@ -110,102 +110,14 @@ final class TreeFill {
 
     /**
      * Fills group {@code root}'s input triangle, set up as {@code setup} for a perspective fill (its
-     * planes hold 1/w, s/w, t/w) with spans {@code spans}, nearest sampling.
+     * planes hold 1/w, s/w, t/w) with spans {@code spans}, nearest sampling: one loop across each run of
+     * affine pieces of a row, loading the next piece's planes where the row crosses into it, the
+     * fallback and wide pieces between runs per pixel.
      *
      * @return pixels written
      */
-    long nearest(TriangleSetup setup, int[] spans, SplitTrees trees, int root, int nodes, boolean simple,
-                 Framebuffer frame, Texture texture, int uvId) {
-        // Two loops, so that each stays small for the compiler: rows of a simple tree tile without
-        // gaps, one loop across each row; the others one loop per segment, by the piece's kind.
-        return simple ? nearestSimple(setup, spans, trees, root, nodes, frame, texture, uvId)
-                : nearestSegments(setup, spans, trees, root, nodes, frame, texture, uvId);
-    }
-
-    /** {@link #nearest} for a simple tree ({@link SplitTrees#simple}). */
-    private long nearestSimple(TriangleSetup setup, int[] spans, SplitTrees trees, int root, int nodes,
-                                Framebuffer frame, Texture texture, int uvId) {
-        int[] st = stackFor(nodes);
-        int[] segs = segments;
-        double[] planes = trees.planes();
-        long[] steps = trees.fixedSteps();
-        int[] firstColumns = trees.firstColumns();
-        double qBase = setup.qPlane.base;
-        double qDx = setup.qPlane.dx;
-        double qDy = setup.qPlane.dy;
-        int width = frame.width();
-        int[] color = frame.color();
-        float[] depth = frame.depth();
-        double[] uv = frame.uv();
-        int[] texels = texture.argb();
-        int tw = texture.width();
-        int th = texture.height();
-        boolean pot = (tw & (tw - 1)) == 0 && (th & (th - 1)) == 0;
-        int wMask = tw - 1;
-        int hMask = th - 1;
-        int topRow = th - 1;
-        long written = 0;
-        int[] sp = spans;
-        for (int y = setup.rowStart, j = 0; y < setup.rowEnd; y++, j += 2) {
-            int a = sp[j];
-            int b = sp[j + 1];
-            if (a >= b) {
-                continue;
-            }
-            double qRow = qBase + qDy * y;
-            int rowOffset = y * width;
-            descend(root, a, b, y, trees, st, segs);
-            // One loop across the row, loading the next piece's fixed-point planes where the row
-            // crosses into it (the pieces of a simple tree tile the row without gaps).
-            int g = 0;
-            int end = segs[1];
-            int piece = segs[2];
-            int po = SplitTrees.PLANE * piece;
-            int fc = firstColumns[piece];
-            long ds = steps[SplitTrees.FIXED_STEP * piece];
-            long dt = steps[SplitTrees.FIXED_STEP * piece + 1];
-            long s = start(planes, po, y, fc, ds, a);
-            long t = start(planes, po + 3, y, fc, dt, a);
-            double xd = a;
-            for (int x = a; x < b; x++, xd++, s += ds, t += dt) {
-                if (x == end) {
-                    g += 3;
-                    end = segs[g + 1];
-                    piece = segs[g + 2];
-                    po = SplitTrees.PLANE * piece;
-                    fc = firstColumns[piece];
-                    ds = steps[SplitTrees.FIXED_STEP * piece];
-                    dt = steps[SplitTrees.FIXED_STEP * piece + 1];
-                    s = start(planes, po, y, fc, ds, x);
-                    t = start(planes, po + 3, y, fc, dt, x);
-                }
-                float qf = (float) (qRow + qDx * xd);
-                int i = rowOffset + x;
-                if (qf > depth[i]) {
-                    depth[i] = qf;
-                    int si = (int) (s >> 32);
-                    int ti = (int) (t >> 32);
-                    int column = pot ? si & wMask : Math.floorMod(si, tw);
-                    int rowFromBottom = pot ? ti & hMask : Math.floorMod(ti, th);
-                    color[i] = texels[(topRow - rowFromBottom) * tw + column] | 0xFF000000;
-                    if (uv != null) {
-                        uv[3 * i] = s / FIXED_SCALE;
-                        uv[3 * i + 1] = t / FIXED_SCALE;
-                        uv[3 * i + 2] = uvId;
-                    }
-                    written++;
-                }
-            }
-        }
-        return written;
-    }
-
-    /**
-     * {@link #nearest} for any tree: one loop across each run of affine pieces of a row, the
-     * fallback and wide pieces between them per pixel.
-     */
-    private long nearestSegments(TriangleSetup setup, int[] spans, SplitTrees trees, int root, int nodes,
-                                  Framebuffer frame, Texture texture, int uvId) {
+    long nearest(TriangleSetup setup, int[] spans, SplitTrees trees, int root, int nodes, Framebuffer frame,
+                 Texture texture, int uvId) {
         int[] st = stackFor(nodes);
         int[] segs = segments;
         double[] planes = trees.planes();
