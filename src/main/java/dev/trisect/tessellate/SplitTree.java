@@ -32,7 +32,9 @@ public final class SplitTree {
      * horizontal ones, are taken as this slope (with their own sign; minus it for horizontal ones).
      * Through any row whose centre is not within 2^-30 pixel of the line's height it puts the line
      * more than 2^30 pixels away, beyond the frame, so the row lies wholly on the line's side, as it
-     * does for the true line; a row closer than that lies on the line within rounding.
+     * does for the true line; a row closer than that lies on the line within rounding. A horizontal
+     * line is never evaluated: {@link #rows()} sends every row to one side of it, the row of centres
+     * on it to the piece below.
      */
     public static final double STEEPEST = 0x1p60;
 
@@ -102,6 +104,9 @@ public final class SplitTree {
      * y below the first ({@code y < rows[3n]}: their centres lie above both ends of the line) lie
      * wholly in one child, rows from the second on ({@code y >= rows[3n + 1]}, below both ends) wholly
      * in the other; the third is 0 when the first of these is the left child, 1 when it is the right.
+     * For a horizontal line the first two are equal: a row whose centres lie on it goes with the rows
+     * below, as the tie rule says, without evaluating the line (where {@code k y + m} would cancel to
+     * the rounding of m, up to hundreds of pixels, and cut the row anywhere).
      */
     public int[] rows() {
         return rows;
@@ -146,7 +151,9 @@ public final class SplitTree {
         lines[o + 1] = mx + k * (0.5 - my) - 0.5;
         refer(slot, n);
         // Which side of the line the piece with corner p lies on.
-        int pSide = v[p + SCREEN_X] - 0.5 < lines[o] * (v[p + SCREEN_Y] - 0.5) + lines[o + 1] ? 0 : 1;
+        // (For a horizontal line the left child is the one above it.)
+        int pSide = dy == 0 ? (v[p + SCREEN_Y] < my ? 0 : 1)
+                : v[p + SCREEN_X] - 0.5 < lines[o] * (v[p + SCREEN_Y] - 0.5) + lines[o + 1] ? 0 : 1;
         double top = Math.min(my, v[r + SCREEN_Y]);
         double bottom = Math.max(my, v[r + SCREEN_Y]);
         int ro = 3 * n;
@@ -154,7 +161,8 @@ public final class SplitTree {
         // Rows above both ends lie in the child of whichever of p and the split edge's other end is
         // above m, rows below both in the other.
         rows[ro] = (int) Math.ceil(top - 0.5);
-        rows[ro + 1] = (int) Math.floor(bottom - 0.5) + 1;
+        // A horizontal line: the row of centres on it (if any) goes with the rows below, the tie rule.
+        rows[ro + 1] = dy == 0 ? rows[ro] : (int) Math.floor(bottom - 0.5) + 1;
         rows[ro + 2] = v[p + SCREEN_Y] < my ? pSide : 1 - pSide;
         return 2 * n + pSide;
     }
