@@ -289,31 +289,37 @@ public final class SplitTrees {
         return kinds.length;
     }
 
-    /** Gives storage back after a spike, keeping room for {@code n} pieces (and as many nodes and groups). */
+    /**
+     * Gives storage back after a spike, keeping room for {@code n} pieces (and as many nodes and
+     * groups). Each kind of storage is trimmed on its own: a spike may grow one alone (a frame of
+     * unsplit triangles grows only the groups' references, a frame of off-screen pieces the nodes).
+     */
     public void shrinkTo(int n) {
-        int m = Math.max(Math.max(n, pieces), Math.max(nodes, inputs.count()));
-        m = Math.max(m, 1);
-        if (m >= kinds.length) {
-            return;
+        int keep = Math.max(n, 1);
+        inputs.shrinkTo(Math.max(keep, inputs.count()));
+        int p = Math.max(keep, pieces);
+        if (kinds.length > p) {
+            planes = Arrays.copyOf(planes, PLANE * p);
+            fixedSteps = Arrays.copyOf(fixedSteps, FIXED_STEP * p);
+            firstColumns = Arrays.copyOf(firstColumns, p);
+            kinds = Arrays.copyOf(kinds, p);
+            selections = Arrays.copyOf(selections, p);
         }
-        inputs.shrinkTo(m);
-        planes = Arrays.copyOf(planes, PLANE * m);
-        fixedSteps = Arrays.copyOf(fixedSteps, FIXED_STEP * m);
-        firstColumns = Arrays.copyOf(firstColumns, m);
-        kinds = Arrays.copyOf(kinds, m);
-        selections = Arrays.copyOf(selections, m);
-        if (kids.length > 2 * m) {
-            kids = Arrays.copyOf(kids, 2 * m);
-            lines = Arrays.copyOf(lines, LINE * m);
-            rows = Arrays.copyOf(rows, 2 * m);
-            rowKids = Arrays.copyOf(rowKids, 2 * m);
+        int d = Math.max(keep, nodes);
+        if (kids.length > 2 * d) {
+            kids = Arrays.copyOf(kids, 2 * d);
+            lines = Arrays.copyOf(lines, LINE * d);
+            rows = Arrays.copyOf(rows, 2 * d);
+            rowKids = Arrays.copyOf(rowKids, 2 * d);
         }
-        if (roots.length > m) {
-            roots = Arrays.copyOf(roots, m);
-            nodeCounts = Arrays.copyOf(nodeCounts, m);
+        int i = Math.max(keep, inputs.count());
+        if (roots.length > i) {
+            roots = Arrays.copyOf(roots, i);
+            nodeCounts = Arrays.copyOf(nodeCounts, i);
         }
-        if (refs.length > Math.max(m, groups)) {
-            refs = Arrays.copyOf(refs, Math.max(m, groups));
+        int g = Math.max(keep, groups);
+        if (refs.length > g) {
+            refs = Arrays.copyOf(refs, g);
         }
     }
 }
