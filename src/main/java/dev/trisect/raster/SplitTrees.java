@@ -97,7 +97,8 @@ public final class SplitTrees {
 
     /**
      * Per node, two rows: rows above the first lie wholly in the child {@link #rowKids()} names first,
-     * rows from the second on wholly in the one it names second; only the rows between meet the line.
+     * rows from the second on wholly in the one it names second; only the rows between (those its line
+     * meets, and a row either side: see {@link SplitTree#rows()}) evaluate the line.
      */
     public int[] rows() {
         return rows;

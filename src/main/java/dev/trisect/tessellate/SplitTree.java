@@ -38,6 +38,17 @@ public final class SplitTree {
      */
     public static final double STEEPEST = 0x1p60;
 
+    /**
+     * How far beyond the ends of a split line, in pixels, a row of centres still evaluates the line
+     * rather than going wholly to one side ({@link #rows()}). The input triangle's covered pixels may
+     * lie just outside its pieces: its coverage is its own, from corners snapped to 1/256 px (up to
+     * about 0.003 px beyond it), and a cut point of an edge along a row of centres (y = 8.5) may lie
+     * at 8.500000000000004, leaving that row's centres above the pieces along the edge. In a row just
+     * beyond a line's end such a centre may lie beside either child, both of which reach the row, so
+     * only the line can place it; further out the row's own rule holds for it too.
+     */
+    public static final double END_MARGIN = 1.0 / 64;
+
     private int[] kids = new int[2 * 64];
     private double[] lines = new double[LINE * 64];
     private int[] rows = new int[3 * 64];
@@ -100,13 +111,15 @@ public final class SplitTree {
     }
 
     /**
-     * Per node, three ints: the rows its line can meet inside its piece, and where the others lie. Rows
-     * y below the first ({@code y < rows[3n]}: their centres lie above both ends of the line) lie
-     * wholly in one child, rows from the second on ({@code y >= rows[3n + 1]}, below both ends) wholly
-     * in the other; the third is 0 when the first of these is the left child, 1 when it is the right.
-     * For a horizontal line the first two are equal: a row whose centres lie on it goes with the rows
-     * below, as the tie rule says, without evaluating the line (where {@code k y + m} would cancel to
-     * the rounding of m, up to hundreds of pixels, and cut the row anywhere).
+     * Per node, three ints: the rows where its line must be evaluated, and where the others lie. Rows
+     * y below the first ({@code y < rows[3n]}: their centres lie more than {@link #END_MARGIN} above
+     * both ends of the line) lie wholly in one child, rows from the second on ({@code y >= rows[3n + 1]},
+     * more than that below both ends) wholly in the other; the third is 0 when the first of these is
+     * the left child, 1 when it is the right. For a
+     * horizontal line the first two are equal (the row alone says which side a centre lies on): a row
+     * whose centres lie on it goes with the rows below, as the tie rule says, without evaluating the
+     * line (where {@code k y + m} would cancel to the rounding of m, up to hundreds of pixels, and cut
+     * the row anywhere).
      */
     public int[] rows() {
         return rows;
@@ -157,12 +170,17 @@ public final class SplitTree {
         double top = Math.min(my, v[r + SCREEN_Y]);
         double bottom = Math.max(my, v[r + SCREEN_Y]);
         int ro = 3 * n;
-        // Row y's centre is above top when y < ceil(top - 1/2), below bottom when y > bottom - 1/2.
-        // Rows above both ends lie in the child of whichever of p and the split edge's other end is
-        // above m, rows below both in the other.
-        rows[ro] = (int) Math.ceil(top - 0.5);
-        // A horizontal line: the row of centres on it (if any) goes with the rows below, the tie rule.
-        rows[ro + 1] = dy == 0 ? rows[ro] : (int) Math.floor(bottom - 0.5) + 1;
+        // Row y's centre is above top when y < ceil(top - 1/2), below bottom when y > bottom - 1/2;
+        // more than END_MARGIN above or below likewise (see rows()). Rows above both ends
+        // lie in the child of whichever of p and the split edge's other end is above m, rows below
+        // both in the other.
+        rows[ro] = (int) Math.ceil(top - 0.5 - END_MARGIN);
+        rows[ro + 1] = (int) Math.floor(bottom - 0.5 + END_MARGIN) + 1;
+        if (dy == 0) {
+            // A horizontal line: the row of centres on it (if any) goes with the rows below, the tie rule.
+            rows[ro] = (int) Math.ceil(top - 0.5);
+            rows[ro + 1] = rows[ro];
+        }
         rows[ro + 2] = v[p + SCREEN_Y] < my ? pSide : 1 - pSide;
         return 2 * n + pSide;
     }
