@@ -62,7 +62,6 @@ public final class SplitTrees {
     private int[] firstColumns = new int[4096];
     private byte[] kinds = new byte[4096];
     private int[] selections = new int[4096];
-    private int largestTree;
     /** Scratch for fitting a piece's planes exactly as the piece-by-piece fill fits them. */
     private final TriangleSetup scratch = new TriangleSetup();
 
@@ -72,7 +71,6 @@ public final class SplitTrees {
         groups = 0;
         nodes = 0;
         pieces = 0;
-        largestTree = 0;
     }
 
     /** Number of groups (input triangles, split or not), in the order they were added. */
@@ -98,7 +96,7 @@ public final class SplitTrees {
     /**
      * Per node, two rows: rows above the first lie wholly in the child {@link #rowKids()} names first,
      * rows from the second on wholly in the one it names second; only the rows between (those its line
-     * meets, and a row either side: see {@link SplitTree#rows()}) evaluate the line.
+     * meets, or nearly: see {@link SplitTree#rows()}) evaluate the line.
      */
     public int[] rows() {
         return rows;
@@ -150,15 +148,10 @@ public final class SplitTrees {
         return kinds;
     }
 
-    /** The most nodes in one group's tree: a row's descent never holds more than that many pending parts. */
-    public int largestTree() {
-        return largestTree;
-    }
-
     /**
      * Per group g: what it fills. A group that was split refers to its input triangle, index
      * {@code refs()[g] >= 0} into {@link #inputs()} and into the per-tree arrays ({@link #roots()},
-     * {@link #nodeCount}, {@link #simple}); a group that was not split (its tree a single leaf, the input
+     * {@link #nodeCount}); a group that was not split (its tree a single leaf, the input
      * triangle itself) refers to its one piece in the chunk's pieces as {@code -1 - piece}, and has no
      * input triangle, tree or planes here: the fill takes the piece as a triangle.
      */
@@ -180,9 +173,9 @@ public final class SplitTrees {
         return groups++;
     }
 
-    /** The number of nodes of the tree of input triangle {@code i} ({@link #refs()}). */
-    public int nodeCount(int g) {
-        return nodeCounts[g];
+    /** The number of nodes of the tree of split input triangle {@code i}, an index into {@link #inputs()} ({@link #refs()}). */
+    public int nodeCount(int i) {
+        return nodeCounts[i];
     }
 
     /**
@@ -233,7 +226,6 @@ public final class SplitTrees {
             rowKids[o + 1] = kids[o + 1 - upper];
         }
         nodes = base + treeNodes;
-        largestTree = Math.max(largestTree, treeNodes);
         fitPieces(pieceTriangles, firstPiece, firstPiece + leaves, maxLevel);
     }
 
@@ -283,11 +275,6 @@ public final class SplitTrees {
             selections[p] = maxLevel <= 0 ? 0
                     : Lod.selectOfSquared(sDx * sDx + tDx * tDx, sDy * sDy + tDy * tDy, maxLevel);
         }
-    }
-
-    /** Storage held, in pieces, for trimming: see {@link #shrinkTo}. */
-    public int capacity() {
-        return kinds.length;
     }
 
     /**
