@@ -7,8 +7,9 @@ import java.util.Arrays;
 /**
  * The tessellated path's nearest fill, one pass per input triangle: the input triangle's rows, as
  * {@link SpanSolver} solved them from its own snapped corners, are each cut into the segments of its
- * pieces by descending the split tree ({@link SplitTrees}) along the row, left to right, and each
- * segment is filled with its piece's affine texel planes in 32.32 fixed point. Per row, each split
+ * pieces by descending the split tree ({@link SplitTrees}) along the row, left to right, and each run
+ * of affine pieces along the row is filled by one loop with each piece's texel planes in 32.32 fixed
+ * point, loaded where the row crosses into the piece. Per row, each split
  * line the row meets inside its node is crossed once (one multiply-add and a ceiling), instead of
  * each piece setting up and walking its own edges: the interior edges are found once per row for the
  * two pieces that share them.
@@ -18,7 +19,8 @@ import java.util.Arrays;
  * line). Since the leaves of a split tree tile its triangle, every covered pixel gets exactly one
  * piece. Two pieces that share a line agree on it (both planes interpolate the same two corners),
  * and a piece's plane is evaluated only at centres inside it (up to the rounding of the crossing), so
- * no pixel is extrapolated beyond its piece.
+ * no pixel is extrapolated beyond its piece — except across the input triangle's own edges, where its
+ * coverage from corners snapped to 1/256 px reaches up to ~0.003 px beyond the pieces.
  *
  * <p>Depth is the input triangle's {@code 1/w} plane, as in the per-pixel path; the per-pixel
  * fallback pieces divide by it, with the input triangle's perspective planes (s/w, t/w); affine pieces
