@@ -33,7 +33,7 @@ final class BudgetOutput {
 
     List<String> lines(BudgetRun.Trace t, boolean json) {
         List<String> lines = new ArrayList<>();
-        String policy = t.policy().name().toLowerCase(Locale.ROOT);
+        String policy = t.policy().id();
         int n = t.ms().length;
         if (!json) {
             lines.add(String.format(Locale.ROOT, "scene %s, %s, %s, target %.3f ms, %s policy, ceiling %s px",

@@ -30,8 +30,8 @@ final class PathOptions {
 
     @Option(names = "--max-error", paramLabel = "PX", converter = Converters.PositiveConverter.class,
             defaultValue = "0.5",
-            description = "Error policy, and the span path's knots: largest affine displacement allowed, pixels "
-                    + "(default: ${DEFAULT-VALUE}).")
+            description = "Error policy's threshold, and the span path's knot spacing (both set to this): largest "
+                    + "affine displacement allowed, pixels (default: ${DEFAULT-VALUE}).")
     double maxError;
 
     @Option(names = "--split-point", paramLabel = "screen|geometric|midpoint", converter = Converters.SplitPointConverter.class,
@@ -107,6 +107,6 @@ final class PathOptions {
     /** Render settings for this path with the frame's culling and background. */
     RenderSettings settings(FrameOptions frame) {
         return new RenderSettings(mode, tessellation(), frame.cull, frame.background(), borders, filter,
-                borderStyle());
+                borderStyle(), maxError);
     }
 }

@@ -91,6 +91,6 @@ final class SweepOutput {
     }
 
     private static String name(SplitPolicy policy) {
-        return policy.name().toLowerCase(Locale.ROOT);
+        return policy.id();
     }
 }

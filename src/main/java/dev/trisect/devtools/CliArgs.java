@@ -44,8 +44,9 @@ public final class CliArgs {
                 "--fov", Double.toString(c.fovY()), "--near", Double.toString(c.near()), "--far", Double.toString(c.far()),
                 "--cull", r.cull().name().toLowerCase(Locale.ROOT),
                 "--background", String.format(Locale.ROOT, "%06X", r.background()),
-                "--mode", r.mode().id(), "--split", t.policy().name().toLowerCase(Locale.ROOT),
-                "--max-edge", Double.toString(t.maxEdge()), "--max-error", Double.toString(t.maxError()),
+                "--mode", r.mode().id(), "--split", t.policy().id(),
+                "--max-edge", Double.toString(t.maxEdge()), "--max-error",
+                Double.toString(r.mode().knots() ? r.knotError() : t.maxError()),
                 "--split-point", t.splitPoint().id(), "--max-depth", Integer.toString(t.maxDepth()),
                 "--max-pieces", Integer.toString(t.maxPieces()), "--filter", r.filter().id()));
         if (t.maxFramePieces() != TessellationSettings.AUTO_FRAME_PIECES) {

@@ -1,6 +1,5 @@
 package dev.trisect.devtools;
 
-import dev.trisect.render.RenderMode;
 import dev.trisect.render.SplitPolicy;
 import dev.trisect.render.TessellationSettings;
 import dev.trisect.view.internal.ViewController;
@@ -37,7 +36,7 @@ final class SplitPolicySection implements ToolSection {
         maxEdgeValue = new NumberField("Max edge", "px", 2, 128,
                 v -> tessellation(t -> t.withMaxEdge(Math.round(v))), owner::message).decimals(0);
         maxErrorValue = new NumberField("Max error", "px", MIN_ERROR, MAX_ERROR,
-                v -> tessellation(t -> t.withMaxError(v)), owner::message).decimals(3);
+                this::setMaxError, owner::message).decimals(3);
         maxDepthValue = new NumberField("Max depth", "", 0, 30,
                 v -> tessellation(t -> t.withMaxDepth((int) Math.round(v))), owner::message).decimals(0);
         ButtonGroup group = new ButtonGroup();
@@ -55,7 +54,7 @@ final class SplitPolicySection implements ToolSection {
                 + "(the cap is per edge, so it never opens cracks)");
         ToolsForm.listen(maxEdge, () -> syncing, this::showValues, v -> tessellation(t -> t.withMaxEdge(v)));
         ToolsForm.listen(maxError, () -> syncing, this::showValues,
-                v -> tessellation(t -> t.withMaxError(sliderToError(v))));
+                v -> setMaxError(sliderToError(v)));
         ToolsForm.listen(maxDepth, () -> syncing, this::showValues, v -> tessellation(t -> t.withMaxDepth(v)));
         JPanel policies = new JPanel();
         policies.setLayout(new BoxLayout(policies, BoxLayout.X_AXIS));
@@ -79,6 +78,12 @@ final class SplitPolicySection implements ToolSection {
         owner.update(s -> s.withRender(s.render().withTessellation(f.apply(s.render().tessellation()))));
     }
 
+    /** Max error is the error policy's threshold and the span path's knot spacing: it sets both. */
+    private void setMaxError(double px) {
+        owner.update(s -> s.withRender(s.render().withTessellation(s.render().tessellation().withMaxError(px))
+                .withKnotError(px)));
+    }
+
     private void setPolicy(SplitPolicy policy) {
         if (!syncing) {
             tessellation(t -> t.withPolicy(policy));
@@ -98,18 +103,19 @@ final class SplitPolicySection implements ToolSection {
         syncing = true;
         try {
             TessellationSettings t = s.render().tessellation();
+            double error = s.render().mode().knots() ? s.render().knotError() : t.maxError();
             edgePolicy.setSelected(t.policy() == SplitPolicy.EDGE);
             errorPolicy.setSelected(t.policy() == SplitPolicy.ERROR);
             maxEdge.setValue((int) Math.round(t.maxEdge()));
-            maxError.setValue(errorToSlider(t.maxError()));
+            maxError.setValue(errorToSlider(error));
             maxDepth.setValue(t.maxDepth());
             maxEdge.setEnabled(t.policy() == SplitPolicy.EDGE);
             maxEdgeValue.setEnabled(maxEdge.isEnabled());
-            maxError.setEnabled(t.policy() == SplitPolicy.ERROR || s.render().mode() == RenderMode.SPANS);
+            maxError.setEnabled(t.policy().measuresError() || s.render().mode().knots());
             maxErrorValue.setEnabled(maxError.isEnabled());
             // The values in force, not the sliders' steps: a typed 0.333 px shows as typed.
             maxEdgeValue.show(t.maxEdge());
-            maxErrorValue.show(t.maxError());
+            maxErrorValue.show(error);
             maxDepthValue.show(t.maxDepth());
         } finally {
             syncing = false;

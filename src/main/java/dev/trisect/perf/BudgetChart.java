@@ -5,7 +5,6 @@ import dev.trisect.io.OutputBatch;
 import java.awt.Color;
 import java.awt.image.BufferedImage;
 import java.nio.file.Path;
-import java.util.Locale;
 import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
@@ -33,7 +32,7 @@ public final class BudgetChart {
             target[i] = trace.targetMs();
             ceiling[i] = trace.ceiling();
         }
-        String unit = trace.policy().name().toLowerCase(Locale.ROOT);
+        String unit = trace.policy().id();
         XYChart chart = new XYChartBuilder().width(960).height(480).title(title).xAxisTitle("frame")
                 .yAxisTitle("frame time (ms)").build();
         chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNE);

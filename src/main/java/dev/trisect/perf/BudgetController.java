@@ -55,10 +55,6 @@ public final class BudgetController {
     public static final double BUDGET_AIM = 0.6;
     /** Share of the frame's piece budget beyond which it coarsens at once. */
     public static final double BUDGET_HIGH = 0.75;
-    /** The finest Max edge it chooses, pixels: the finest the split-policy section offers. */
-    public static final double MIN_MAX_EDGE = 2;
-    /** The finest Max error it chooses, pixels: likewise. */
-    public static final double MIN_MAX_ERROR = 0.05;
 
     /** What holds the threshold where it is, as the last frame left it. */
     public enum Limit {
@@ -110,12 +106,11 @@ public final class BudgetController {
 
     /**
      * The finest threshold a controller of {@code policy} allows under {@code ceiling}: 1/64 of it, but
-     * never finer than the split-policy section offers ({@link #MIN_MAX_EDGE}, {@link #MIN_MAX_ERROR}),
+     * never finer than the split-policy section offers ({@link SplitPolicy#floor()}),
      * nor looser than the ceiling itself.
      */
     public static double floorFor(SplitPolicy policy, double ceiling) {
-        double least = policy == SplitPolicy.EDGE ? MIN_MAX_EDGE : MIN_MAX_ERROR;
-        return Math.min(ceiling, Math.max(defaultFloor(ceiling), least));
+        return Math.min(ceiling, Math.max(defaultFloor(ceiling), policy.floor()));
     }
 
     /** What held the threshold at the last frame. */

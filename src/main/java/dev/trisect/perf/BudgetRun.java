@@ -67,10 +67,10 @@ public final class BudgetRun {
                             int frames, FrameBench.Progress progress) {
         RenderSettings base = settings.withMode(RenderMode.TESSELLATED);
         TessellationSettings t = base.tessellation();
-        boolean edge = t.policy() == SplitPolicy.EDGE;
-        double ceiling = edge ? t.maxEdge() : t.maxError();
-        BudgetController controller = new BudgetController(targetMs, ceiling, BudgetController.floorFor(t.policy(),
-                ceiling), ceiling);
+        SplitPolicy policy = t.policy();
+        double ceiling = policy.threshold(t);
+        BudgetController controller = new BudgetController(targetMs, ceiling, BudgetController.floorFor(policy, ceiling),
+                ceiling);
         Framebuffer frame = new Framebuffer(width, height);
         Viewport viewport = new Viewport(width, height);
         for (int i = 0; i < warmup; i++) {
@@ -85,7 +85,7 @@ public final class BudgetRun {
         long pieceBudget = 0;
         for (int i = 0; i < frames; i++) {
             double threshold = controller.threshold();
-            RenderSettings s = base.withTessellation(edge ? t.withMaxEdge(threshold) : t.withMaxError(threshold));
+            RenderSettings s = base.withTessellation(policy.withThreshold(t, threshold));
             Camera c = orbit ? orbit(camera, 2 * Math.PI * i / frames) : camera;
             long t0 = System.nanoTime();
             FrameStats stats = renderer.render(scene.mesh(), textures, c.viewProjection(viewport), s, frame);

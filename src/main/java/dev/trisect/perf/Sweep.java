@@ -48,7 +48,7 @@ public final class Sweep {
             if (policy == null) {
                 return Double.isNaN(threshold) ? mode.id() : mode.id() + " " + threshold;
             }
-            return policy.name().toLowerCase(java.util.Locale.ROOT) + " " + threshold;
+            return policy.id() + " " + threshold;
         }
     }
 
@@ -156,7 +156,7 @@ public final class Sweep {
                     t.withPolicy(SplitPolicy.ERROR).withMaxError(error)), SplitPolicy.ERROR, error));
         }
         for (double error : r) {
-            points.add(measure.run(plain.withMode(RenderMode.SPANS).withTessellation(t.withMaxError(error)), null,
+            points.add(measure.run(plain.withMode(RenderMode.SPANS).withKnotError(error), null,
                     error));
         }
         return new Result(perspective, affine, List.copyOf(points));

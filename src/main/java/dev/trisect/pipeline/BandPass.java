@@ -3,7 +3,6 @@ package dev.trisect.pipeline;
 import dev.trisect.raster.BandBins;
 import dev.trisect.raster.Rasterizer;
 import dev.trisect.render.Framebuffer;
-import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.texture.Texture;
 
@@ -57,9 +56,8 @@ final class BandPass {
             lane.fillNanos = 0;
             lane.overlayNanos = 0;
         }
-        boolean spans = settings.mode() == RenderMode.SPANS;
-        boolean perspective = settings.mode() == RenderMode.PERSPECTIVE || spans;
-        double spanError = spans ? settings.tessellation().maxError() : 0;
+        boolean perspective = settings.mode().divides();
+        double spanError = settings.mode().knots() ? settings.knotError() : 0;
         int width = frame.width();
         int height = frame.height();
         int background = settings.background();

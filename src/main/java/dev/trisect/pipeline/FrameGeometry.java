@@ -2,7 +2,6 @@ package dev.trisect.pipeline;
 
 import dev.trisect.math.Viewport;
 import dev.trisect.raster.BandBins;
-import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.render.TessellationSettings;
 import dev.trisect.tessellate.PieceBudget;
@@ -59,7 +58,7 @@ final class FrameGeometry {
         int perChunk = Chunks.size(triangles, chunkCount);
         double gx = 1 + 2.0 * ChunkGeometry.GUARD_PIXELS / width;
         double gy = 1 + 2.0 * ChunkGeometry.GUARD_PIXELS / height;
-        boolean split = settings.mode() == RenderMode.TESSELLATED;
+        boolean split = settings.mode().splits();
         TessellationSettings t = settings.tessellation();
         long limit = split ? t.framePieceBudget((long) width * height, triangles) : Long.MAX_VALUE;
         DepthCapSearch.Attempt attempt = (depth, pieces) -> {

@@ -6,7 +6,6 @@ import dev.trisect.raster.RowKnots;
 import dev.trisect.render.BorderStyle;
 import dev.trisect.render.FrameStats;
 import dev.trisect.render.Framebuffer;
-import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.render.TessellationSettings;
 import dev.trisect.texture.Texture;
@@ -138,7 +137,7 @@ public final class FrameRenderer implements AutoCloseable {
                 pool);
         long end = System.nanoTime();
         drawn = g;
-        drawnSpanError = settings.mode() == RenderMode.SPANS ? settings.tessellation().maxError() : 0;
+        drawnSpanError = settings.mode().knots() ? settings.knotError() : 0;
         drawnWidth = frame.width();
         drawnHeight = frame.height();
         return new FrameStatsBuilder(pool.threads(), start)

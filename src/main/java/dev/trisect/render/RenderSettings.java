@@ -8,17 +8,23 @@ import dev.trisect.texture.TextureFilter;
  * How a frame is drawn.
  *
  * @param mode         texturing path
- * @param tessellation split policy and caps, used by {@link RenderMode#TESSELLATED}; its max error also
- *                     spaces the knots of {@link RenderMode#SPANS}
+ * @param tessellation split policy and caps, used by {@link RenderMode#TESSELLATED}
  * @param cull         back-face culling
  * @param background   background colour, 0xRRGGBB
  * @param borders      draw the yellow outline of every piece filled
  * @param filter       texture filter, in every path
  * @param borderStyle  how the outlines are coloured and whether they fade where pieces are dense
+ * @param knotError    the span path's knot spacing ({@link RenderMode#SPANS}): the largest displacement
+ *                     from true perspective allowed between two knots of a row, screen pixels, &gt; 0. A
+ *                     value of its own, apart from the error policy's {@link TessellationSettings#maxError}
+ *                     (the command line's {@code --max-error} sets both)
  */
 public record RenderSettings(RenderMode mode, TessellationSettings tessellation, CullMode cull,
                              int background, boolean borders, TextureFilter filter,
-                             BorderStyle borderStyle) {
+                             BorderStyle borderStyle, double knotError) {
+
+    /** Default knot spacing of the span path, pixels: the same half pixel as the error policy's default. */
+    public static final double DEFAULT_KNOT_ERROR = TessellationSettings.DEFAULT_MAX_ERROR;
 
     /**
      * Checks that every part is given.
@@ -30,13 +36,33 @@ public record RenderSettings(RenderMode mode, TessellationSettings tessellation,
      * @param borders      draw the outline of every piece filled
      * @param filter       texture filter
      * @param borderStyle  how the outlines are coloured
-     * @throws IllegalArgumentException when one is null
+     * @param knotError    the span path's knot spacing, screen pixels
+     * @throws IllegalArgumentException when one is null, or the knot spacing is not a positive number
      */
     public RenderSettings {
         if (mode == null || tessellation == null || cull == null || filter == null || borderStyle == null) {
             throw new IllegalArgumentException(
                     "render settings need a mode, tessellation settings, a cull mode and a texture filter");
         }
+        if (!(knotError > 0) || Double.isInfinite(knotError)) {
+            throw new IllegalArgumentException("knot error must be a positive number of pixels, got " + knotError);
+        }
+    }
+
+    /**
+     * Settings with the default knot spacing ({@link #DEFAULT_KNOT_ERROR}).
+     *
+     * @param mode         texturing path
+     * @param tessellation split policy and caps
+     * @param cull         back-face culling
+     * @param background   background colour, 0xRRGGBB
+     * @param borders      draw the outline of every piece filled
+     * @param filter       texture filter
+     * @param borderStyle  how the outlines are coloured
+     */
+    public RenderSettings(RenderMode mode, TessellationSettings tessellation, CullMode cull, int background,
+                          boolean borders, TextureFilter filter, BorderStyle borderStyle) {
+        this(mode, tessellation, cull, background, borders, filter, borderStyle, DEFAULT_KNOT_ERROR);
     }
 
     /**
@@ -84,7 +110,7 @@ public record RenderSettings(RenderMode mode, TessellationSettings tessellation,
      * @return a copy with that path
      */
     public RenderSettings withMode(RenderMode m) {
-        return new RenderSettings(m, tessellation, cull, background, borders, filter, borderStyle);
+        return new RenderSettings(m, tessellation, cull, background, borders, filter, borderStyle, knotError);
     }
 
     /**
@@ -94,7 +120,7 @@ public record RenderSettings(RenderMode mode, TessellationSettings tessellation,
      * @return a copy with those
      */
     public RenderSettings withTessellation(TessellationSettings t) {
-        return new RenderSettings(mode, t, cull, background, borders, filter, borderStyle);
+        return new RenderSettings(mode, t, cull, background, borders, filter, borderStyle, knotError);
     }
 
     /**
@@ -104,7 +130,7 @@ public record RenderSettings(RenderMode mode, TessellationSettings tessellation,
      * @return a copy with that culling
      */
     public RenderSettings withCull(CullMode c) {
-        return new RenderSettings(mode, tessellation, c, background, borders, filter, borderStyle);
+        return new RenderSettings(mode, tessellation, c, background, borders, filter, borderStyle, knotError);
     }
 
     /**
@@ -114,7 +140,7 @@ public record RenderSettings(RenderMode mode, TessellationSettings tessellation,
      * @return a copy with that background
      */
     public RenderSettings withBackground(int rgb) {
-        return new RenderSettings(mode, tessellation, cull, rgb, borders, filter, borderStyle);
+        return new RenderSettings(mode, tessellation, cull, rgb, borders, filter, borderStyle, knotError);
     }
 
     /**
@@ -124,7 +150,7 @@ public record RenderSettings(RenderMode mode, TessellationSettings tessellation,
      * @return a copy with the borders on or off
      */
     public RenderSettings withBorders(boolean on) {
-        return new RenderSettings(mode, tessellation, cull, background, on, filter, borderStyle);
+        return new RenderSettings(mode, tessellation, cull, background, on, filter, borderStyle, knotError);
     }
 
     /**
@@ -134,7 +160,17 @@ public record RenderSettings(RenderMode mode, TessellationSettings tessellation,
      * @return a copy with that filter
      */
     public RenderSettings withFilter(TextureFilter f) {
-        return new RenderSettings(mode, tessellation, cull, background, borders, f, borderStyle);
+        return new RenderSettings(mode, tessellation, cull, background, borders, f, borderStyle, knotError);
+    }
+
+    /**
+     * A copy with another knot spacing for the span path.
+     *
+     * @param px the largest displacement between two knots, screen pixels, &gt; 0
+     * @return a copy with that knot spacing
+     */
+    public RenderSettings withKnotError(double px) {
+        return new RenderSettings(mode, tessellation, cull, background, borders, filter, borderStyle, px);
     }
 
     /**
@@ -144,6 +180,6 @@ public record RenderSettings(RenderMode mode, TessellationSettings tessellation,
      * @return a copy with that style
      */
     public RenderSettings withBorderStyle(BorderStyle b) {
-        return new RenderSettings(mode, tessellation, cull, background, borders, filter, b);
+        return new RenderSettings(mode, tessellation, cull, background, borders, filter, b, knotError);
     }
 }

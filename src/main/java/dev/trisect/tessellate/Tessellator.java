@@ -1,7 +1,6 @@
 package dev.trisect.tessellate;
 
 import dev.trisect.render.SplitPoint;
-import dev.trisect.render.SplitPolicy;
 import dev.trisect.render.TessellationSettings;
 import static dev.trisect.tessellate.VertexLayout.CLIP_STRIDE;
 import static dev.trisect.tessellate.VertexLayout.PROJECTED_STRIDE;
@@ -85,10 +84,11 @@ public final class Tessellator {
         this.width = viewport.width();
         this.height = viewport.height();
         this.settings = settings;
-        this.errorPolicy = settings.policy() == SplitPolicy.ERROR;
+        this.errorPolicy = settings.policy().measuresError();
         this.splitPoint = settings.splitPoint();
+        double px = settings.policy().threshold(settings);
         // The edge policy compares squared lengths, sparing a square root per edge.
-        this.threshold = errorPolicy ? settings.maxError() : settings.maxEdge() * settings.maxEdge();
+        this.threshold = errorPolicy ? px : px * px;
     }
 
     /**

@@ -180,7 +180,7 @@ class GoldenFramesTest {
         paths.put("error0.5", v.base().withMode(RenderMode.TESSELLATED)
                 .withTessellation(TessellationSettings.defaults().withPolicy(SplitPolicy.ERROR).withMaxError(0.5)));
         paths.put("spans0.5", v.base().withMode(RenderMode.SPANS)
-                .withTessellation(TessellationSettings.defaults().withMaxError(0.5)));
+                .withTessellation(TessellationSettings.defaults()).withKnotError(0.5));
         for (Map.Entry<String, RenderSettings> p : paths.entrySet()) {
             String path = p.getKey();
             RenderSettings s = p.getValue();

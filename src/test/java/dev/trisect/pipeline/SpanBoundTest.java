@@ -45,7 +45,7 @@ class SpanBoundTest {
 
     private static RenderSettings spans(double maxError) {
         return RenderSettings.defaults().withCull(CullMode.NONE).withMode(RenderMode.SPANS)
-                .withTessellation(TessellationSettings.defaults().withMaxError(maxError));
+                .withTessellation(TessellationSettings.defaults()).withKnotError(maxError);
     }
 
     /** Renders with the span path at each threshold and checks every covered pixel; returns the worst of each. */
@@ -125,6 +125,24 @@ class SpanBoundTest {
         FrameStats st = RENDERER.render(mesh, TEX, DisplacementBoundTest.nearPlaneCamera()
                 .viewProjection(new Viewport(320, 240)), spans(0.5), fb);
         assertEquals(3, st.clipped(), "all three are cut by the near plane: " + st.toJson());
+    }
+
+    /**
+     * The knots follow the span path's own knot error and nothing of the split policy: changing the
+     * error policy's max error leaves the frame bit for bit, changing the knot error does not.
+     */
+    @Test
+    void theKnotsFollowTheKnotErrorAndNotTheSplitPolicysMaxError() {
+        Mat4 vp = rolledPlaneCamera(30).viewProjection(new Viewport(320, 180));
+        Mesh mesh = DisplacementBoundTest.plane(10_000, 1);
+        Framebuffer a = new Framebuffer(320, 180);
+        RENDERER.render(mesh, TEX, vp, spans(0.5), a);
+        Framebuffer b = new Framebuffer(320, 180);
+        RENDERER.render(mesh, TEX, vp, spans(0.5).withTessellation(TessellationSettings.defaults().withMaxError(8)), b);
+        assertArrayEquals(a.color(), b.color(), "max error is the error policy's, not the knots'");
+        Framebuffer c = new Framebuffer(320, 180);
+        RENDERER.render(mesh, TEX, vp, spans(8), c);
+        assertTrue(!java.util.Arrays.equals(a.color(), c.color()), "the knot error spaces the knots");
     }
 
     /**

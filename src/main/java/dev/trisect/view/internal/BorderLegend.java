@@ -41,10 +41,10 @@ record BorderLegend(DoubleToIntFunction ramp, String left, String right, List<Sw
         int maxLevel = r.tessellation().maxDepth();
         if (r.borderStyle().onlyFallback()) {
             // Only the fallback pieces are outlined, and only the tessellated path has any.
-            return new BorderLegend(null, null, null, r.mode() == RenderMode.TESSELLATED
+            return new BorderLegend(null, null, null, r.mode().splits()
                     ? List.of(new Swatch(OverlayColours.FALLBACK, fallbackNote(fallback))) : List.of());
         }
-        if (r.mode() == RenderMode.SPANS) {
+        if (r.mode().knots()) {
             return switch (colouring) {
                 case YELLOW -> new BorderLegend(null, null, null, List.of(new Swatch(OverlayColours.PIECE,
                         "triangle outline; ticks: its knots, on one row in 16")));
@@ -56,7 +56,7 @@ record BorderLegend(DoubleToIntFunction ramp, String left, String right, List<Sw
                         List.of(new Swatch(OverlayColours.PIECE, "triangle outline")));
             };
         }
-        if (r.mode() != RenderMode.TESSELLATED) {
+        if (!r.mode().splits()) {
             // The per-pixel and affine paths split nothing and have no fallback: whole triangles, level 0.
             String filled = r.mode() == RenderMode.AFFINE ? "filled affinely" : "filled per pixel, perspective-correct";
             return switch (colouring) {

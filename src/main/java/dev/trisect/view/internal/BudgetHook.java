@@ -2,7 +2,6 @@ package dev.trisect.view.internal;
 
 import dev.trisect.perf.BudgetController;
 import dev.trisect.render.FrameStats;
-import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.render.SplitPolicy;
 import dev.trisect.render.TessellationSettings;
@@ -22,13 +21,12 @@ public final class BudgetHook {
 
     /** The settings to render this frame with. */
     RenderSettings apply(RenderSettings user, ViewState.Budget budget) {
-        if (!budget.on() || user.mode() != RenderMode.TESSELLATED) {
+        if (!budget.on() || !user.mode().splits()) {
             controller = null;
             return user;
         }
         TessellationSettings t = user.tessellation();
-        boolean edge = t.policy() == SplitPolicy.EDGE;
-        double ceiling = edge ? t.maxEdge() : t.maxError();
+        double ceiling = t.policy().threshold(t);
         if (controller == null || policy != t.policy() || controller.ceiling() != ceiling
                 || controller.targetMs() != budget.targetMs()) {
             controller = new BudgetController(budget.targetMs(), ceiling, BudgetController.floorFor(t.policy(), ceiling),
@@ -37,7 +35,7 @@ public final class BudgetHook {
             targetMs = budget.targetMs();
         }
         double chosen = controller.threshold();
-        return user.withTessellation(edge ? t.withMaxEdge(chosen) : t.withMaxError(chosen));
+        return user.withTessellation(t.policy().withThreshold(t, chosen));
     }
 
     /**

@@ -287,8 +287,7 @@ public final class RenderLoop implements Runnable {
             if (ix < fw && iy < fh) {
                 back.inspection = PixelInspector.inspect(renderer, fb, reference,
                         new TexelToScreen(draws, viewport), drawn, settings.render().filter(),
-                        settings.render().mode() == RenderMode.PERSPECTIVE
-                                || settings.render().mode() == RenderMode.SPANS,
+                        settings.render().mode().divides(),
                         settings.render().borders() && settings.view() != ViewKind.DIFFERENCE, ix, iy);
             }
             back.inspectNanos = System.nanoTime() - t0;

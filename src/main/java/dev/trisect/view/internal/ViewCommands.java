@@ -154,6 +154,6 @@ public final class ViewCommands {
         orbit.show(state.input.orbit());
         filter.putValue(Action.NAME, "Texture filter: " + r.filter().id());
         borderColour.putValue(Action.NAME, "Border colour: " + r.borderStyle().colouring().id());
-        splitPolicy.putValue(Action.NAME, "Split policy: " + r.tessellation().policy().name().toLowerCase(Locale.ROOT));
+        splitPolicy.putValue(Action.NAME, "Split policy: " + r.tessellation().policy().id());
     }
 }

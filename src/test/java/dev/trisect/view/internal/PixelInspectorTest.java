@@ -114,7 +114,7 @@ class PixelInspectorTest {
         SceneAsset demo = DemoScenes.byName("demo").orElseThrow();
         ViewState state = new ViewState(demo);
         ViewSettings v = ViewSettings.defaults().withRender(ViewSettings.defaults().render().withMode(RenderMode.SPANS)
-                .withTessellation(ViewSettings.defaults().render().tessellation().withMaxError(0.5)));
+                .withKnotError(0.5));
         state.settings(v);
         // A pixel of the brick wall, whose depth changes along the rows.
         int x = 130;
