@@ -13,7 +13,9 @@ import java.util.List;
 /**
  * Writes a mesh as Wavefront OBJ with an MTL file and one binary PPM texture per material, so that
  * other renderers (OpenGL through tools/glref, say) can draw exactly the same triangles.
- * Triangles are written in order as {@code f v/vt}, so triangle indices are preserved.
+ * Triangles are written in order, so triangle indices are preserved, each corner as {@code v},
+ * {@code v/vt}, {@code v/vt/vn} or {@code v//vn} after what it has; the mesh's normals as {@code vn}
+ * (a corner without one is written without, and a reader takes the face normal there, as Trisect does).
  */
 public final class ObjWriter {
     private ObjWriter() {
@@ -21,7 +23,7 @@ public final class ObjWriter {
 
     /**
      * @param obj      the OBJ file to write; the MTL and textures go beside it, named after it
-     * @param mesh     positions and UVs, written as floats exactly (shortest round-trip decimal)
+     * @param mesh     positions, UVs and normals, written as floats exactly (shortest round-trip decimal)
      * @param textures one per material
      * @return the texture files written, by material
      * @throws dev.trisect.base.InputException when a file cannot be written; then none of them is
@@ -62,8 +64,13 @@ public final class ObjWriter {
             for (int i = 0; i < uv.length; i += 2) {
                 w.write("vt " + uv[i] + " " + uv[i + 1] + "\n");
             }
+            float[] n = mesh.normals();
+            for (int i = 0; i < n.length; i += 3) {
+                w.write("vn " + n[i] + " " + n[i + 1] + " " + n[i + 2] + "\n");
+            }
             int[] cp = mesh.cornerPositions();
             int[] cu = mesh.cornerUvs();
+            int[] cn = mesh.cornerNormals();
             int[] mat = mesh.triangleMaterials();
             int current = -1;
             StringBuilder line = new StringBuilder(64);
@@ -74,10 +81,16 @@ public final class ObjWriter {
                 }
                 line.setLength(0);
                 line.append('f');
-                for (int k = 0; k < 3; k++) {
-                    line.append(' ').append(cp[3 * t + k] + 1);
-                    if (cu[3 * t + k] >= 0) {
-                        line.append('/').append(cu[3 * t + k] + 1);
+                for (int k = 3 * t; k < 3 * t + 3; k++) {
+                    line.append(' ').append(cp[k] + 1);
+                    if (cu[k] >= 0 || cn[k] >= 0) {
+                        line.append('/');
+                    }
+                    if (cu[k] >= 0) {
+                        line.append(cu[k] + 1);
+                    }
+                    if (cn[k] >= 0) {
+                        line.append('/').append(cn[k] + 1);
                     }
                 }
                 w.write(line.append('\n').toString());

@@ -176,6 +176,61 @@ public final class Mat4 {
     }
 
     /**
+     * The normal matrix of this model matrix: the inverse transpose of its upper-left 3x3 (in the
+     * upper-left 3x3 of the result, with no translation and a last row 0 0 0 1), which carries a
+     * surface's normals to the transformed surface's (OpenGL 2.1 specification, section 2.11.3,
+     * "Normal Transformation": the normal as a row vector times the inverse of the upper leftmost 3x3
+     * of the model-view matrix). Under a rotation with uniform scale it is the same direction as the
+     * matrix itself; under a non-uniform scale it is not, and only it keeps the normal perpendicular to
+     * the surface.
+     * It does not keep length: make the transformed normal unit length before lighting with it
+     * (OpenGL's {@code GL_NORMALIZE}). Computed as the cofactor matrix over the determinant.
+     *
+     * @return the normal matrix; apply it with {@link #transformDirection}
+     * @throws IllegalArgumentException when the 3x3 is singular or not finite (its determinant is zero,
+     *                                  or the result is not finite, in double precision)
+     */
+    public Mat4 normalMatrix() {
+        // Columns a, b, c of the 3x3; the columns of its inverse transpose are (b x c, c x a, a x b) / det.
+        double ax = m[0], ay = m[1], az = m[2];
+        double bx = m[4], by = m[5], bz = m[6];
+        double cx = m[8], cy = m[9], cz = m[10];
+        double[] r = {
+            by * cz - bz * cy, bz * cx - bx * cz, bx * cy - by * cx, 0,
+            cy * az - cz * ay, cz * ax - cx * az, cx * ay - cy * ax, 0,
+            ay * bz - az * by, az * bx - ax * bz, ax * by - ay * bx, 0,
+            0, 0, 0, 1};
+        double det = ax * r[0] + ay * r[1] + az * r[2];
+        for (int i = 0; i < 11; i++) {
+            r[i] = i % 4 == 3 ? 0 : r[i] / det; // the zeros stay +0, whatever det's sign
+        }
+        for (double v : r) {
+            if (!Double.isFinite(v)) {
+                throw new IllegalArgumentException("no normal matrix: the upper-left 3x3 is singular or not finite"
+                        + " (determinant " + det + ")");
+            }
+        }
+        return new Mat4(r);
+    }
+
+    /**
+     * Transforms the direction (x, y, z, 0) by the upper-left 3x3 alone (no translation) and writes
+     * (x', y', z') to {@code out[offset..offset+2]}. Allocation-free, for the per-vertex stage; with
+     * {@link #normalMatrix()} it carries normals.
+     *
+     * @param x      the direction's x
+     * @param y      the direction's y
+     * @param z      the direction's z
+     * @param out    receives x', y', z'
+     * @param offset where in {@code out}
+     */
+    public void transformDirection(double x, double y, double z, double[] out, int offset) {
+        out[offset] = m[0] * x + m[4] * y + m[8] * z;
+        out[offset + 1] = m[1] * x + m[5] * y + m[9] * z;
+        out[offset + 2] = m[2] * x + m[6] * y + m[10] * z;
+    }
+
+    /**
      * The point (x, y, z, 1) transformed and divided by w; meant for tests and setup, not hot loops.
      *
      * @param p the point

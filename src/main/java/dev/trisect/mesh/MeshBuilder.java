@@ -7,18 +7,22 @@ import java.util.List;
 import java.util.Objects;
 
 /**
- * Builds a {@link Mesh} by appending positions, texture coordinates and triangles.
+ * Builds a {@link Mesh} by appending positions, texture coordinates, normals and triangles.
  *
  * <p>Triangles are front-facing when their corners run counter-clockwise as seen from the side they
- * face (OpenGL's default), and get the current material (see {@link #material(String)}).
+ * face (OpenGL's default), and get the current material (see {@link #material(String)}). Normals are
+ * optional: a corner given none (-1) takes its triangle's face normal ({@link Mesh#cornerNormal}).
  */
 public final class MeshBuilder {
     private float[] positions = new float[3 * 64];
     private int positionCount;
     private float[] uvs = new float[2 * 64];
     private int uvCount;
+    private float[] normals = new float[0];
+    private int normalCount;
     private int[] cornerPositions = new int[3 * 64];
     private int[] cornerUvs = new int[3 * 64];
+    private int[] cornerNormals = new int[3 * 64];
     private int[] materials = new int[64];
     private int triangleCount;
     private final List<String> materialNames = new ArrayList<>();
@@ -40,6 +44,15 @@ public final class MeshBuilder {
      */
     public int uvCount() {
         return uvCount;
+    }
+
+    /**
+     * Number of normals added so far.
+     *
+     * @return normals added so far
+     */
+    public int normalCount() {
+        return normalCount;
     }
 
     /**
@@ -115,8 +128,46 @@ public final class MeshBuilder {
     }
 
     /**
-     * Adds a triangle from position indices and texture-coordinate indices (-1 for none).
-     * Indices must already exist; this is checked.
+     * Adds a normal in object space and returns its index. Only its direction matters: the mesh keeps
+     * it as given, and lighting makes it unit length.
+     *
+     * @param x object space
+     * @param y object space
+     * @param z object space
+     * @return the new normal's index
+     * @throws IllegalArgumentException when a component is not finite or all three are zero (no
+     *                                  direction)
+     */
+    public int normal(double x, double y, double z) {
+        float fx = (float) x;
+        float fy = (float) y;
+        float fz = (float) z;
+        if (!Float.isFinite(fx) || !Float.isFinite(fy) || !Float.isFinite(fz) || (fx == 0 && fy == 0 && fz == 0)) {
+            throw new IllegalArgumentException("normal (" + x + ", " + y + ", " + z
+                    + ") has no direction: it must be finite and not zero (as a float)");
+        }
+        if (3 * normalCount + 3 > normals.length) {
+            normals = Arrays.copyOf(normals, Math.max(3 * 64, normals.length * 2));
+        }
+        normals[3 * normalCount] = fx;
+        normals[3 * normalCount + 1] = fy;
+        normals[3 * normalCount + 2] = fz;
+        return normalCount++;
+    }
+
+    /**
+     * Adds a normal in object space and returns its index; see {@link #normal(double, double, double)}.
+     *
+     * @param n the normal, object space
+     * @return the new normal's index
+     */
+    public int normal(Vec3 n) {
+        return normal(n.x(), n.y(), n.z());
+    }
+
+    /**
+     * Adds a triangle from position indices and texture-coordinate indices (-1 for none), without
+     * normals (its corners take its face normal). Indices must already exist; this is checked.
      *
      * @param p0 first corner's position index
      * @param p1 second corner's position index
@@ -127,12 +178,34 @@ public final class MeshBuilder {
      * @return the new triangle's index
      */
     public int triangle(int p0, int p1, int p2, int t0, int t1, int t2) {
+        return triangle(p0, p1, p2, t0, t1, t2, -1, -1, -1);
+    }
+
+    /**
+     * Adds a triangle from position, texture-coordinate (-1 for none) and normal indices (-1 for
+     * none: that corner takes the face normal). Indices must already exist; this is checked.
+     *
+     * @param p0 first corner's position index
+     * @param p1 second corner's position index
+     * @param p2 third corner's position index (counter-clockwise from the front)
+     * @param t0 first corner's texture-coordinate index, or -1
+     * @param t1 second corner's texture-coordinate index, or -1
+     * @param t2 third corner's texture-coordinate index, or -1
+     * @param n0 first corner's normal index, or -1
+     * @param n1 second corner's normal index, or -1
+     * @param n2 third corner's normal index, or -1
+     * @return the new triangle's index
+     */
+    public int triangle(int p0, int p1, int p2, int t0, int t1, int t2, int n0, int n1, int n2) {
         checkPosition(p0);
         checkPosition(p1);
         checkPosition(p2);
-        checkUv(t0);
-        checkUv(t1);
-        checkUv(t2);
+        checkOptional(t0, uvCount, "uv");
+        checkOptional(t1, uvCount, "uv");
+        checkOptional(t2, uvCount, "uv");
+        checkOptional(n0, normalCount, "normal");
+        checkOptional(n1, normalCount, "normal");
+        checkOptional(n2, normalCount, "normal");
         if (currentMaterial < 0) {
             material("default");
         }
@@ -141,6 +214,7 @@ public final class MeshBuilder {
             materials = Arrays.copyOf(materials, n);
             cornerPositions = Arrays.copyOf(cornerPositions, 3 * n);
             cornerUvs = Arrays.copyOf(cornerUvs, 3 * n);
+            cornerNormals = Arrays.copyOf(cornerNormals, 3 * n);
         }
         int c = 3 * triangleCount;
         cornerPositions[c] = p0;
@@ -149,6 +223,9 @@ public final class MeshBuilder {
         cornerUvs[c] = t0;
         cornerUvs[c + 1] = t1;
         cornerUvs[c + 2] = t2;
+        cornerNormals[c] = n0;
+        cornerNormals[c + 1] = n1;
+        cornerNormals[c + 2] = n2;
         materials[triangleCount] = currentMaterial;
         return triangleCount++;
     }
@@ -191,9 +268,9 @@ public final class MeshBuilder {
         }
     }
 
-    private void checkUv(int t) {
-        if (t < -1 || t >= uvCount) {
-            throw new IndexOutOfBoundsException("uv index " + t + " not in -1.." + (uvCount - 1));
+    private static void checkOptional(int i, int count, String what) {
+        if (i < -1 || i >= count) {
+            throw new IndexOutOfBoundsException(what + " index " + i + " not in -1.." + (count - 1));
         }
     }
 
@@ -207,8 +284,10 @@ public final class MeshBuilder {
         return new Mesh(
                 Arrays.copyOf(positions, 3 * positionCount),
                 Arrays.copyOf(uvs, 2 * uvCount),
+                Arrays.copyOf(normals, 3 * normalCount),
                 Arrays.copyOf(cornerPositions, 3 * triangleCount),
                 Arrays.copyOf(cornerUvs, 3 * triangleCount),
+                Arrays.copyOf(cornerNormals, 3 * triangleCount),
                 Arrays.copyOf(materials, triangleCount),
                 names);
     }

@@ -22,9 +22,10 @@ final class ObjFaces {
     private final ObjMeshArrays mesh;
     private final ForwardIndices[] forward = {new ForwardIndices(), new ForwardIndices(), new ForwardIndices()};
 
-    /** The corner being parsed: position index and UV index (0-based, UV -1 for none). */
+    /** The corner being parsed: position, UV and normal index (0-based, UV and normal -1 for none). */
     private int cornerPosition;
     private int cornerUv;
+    private int cornerNormal;
 
     ObjFaces(LineScanner lines, ObjMeshArrays mesh) {
         this.lines = lines;
@@ -43,28 +44,34 @@ final class ObjFaces {
         }
         int firstPosition = 0;
         int firstUv = 0;
+        int firstNormal = 0;
         int previousPosition = 0;
         int previousUv = 0;
+        int previousNormal = 0;
         for (int i = 1; i <= corners; i++) {
             corner(i);
             if (i == 1) {
                 firstPosition = cornerPosition;
                 firstUv = cornerUv;
+                firstNormal = cornerNormal;
             } else if (i >= 3) {
-                mesh.triangle(firstPosition, previousPosition, cornerPosition, firstUv, previousUv, cornerUv);
+                mesh.triangle(firstPosition, previousPosition, cornerPosition, firstUv, previousUv, cornerUv,
+                        firstNormal, previousNormal, cornerNormal);
             }
             previousPosition = cornerPosition;
             previousUv = cornerUv;
+            previousNormal = cornerNormal;
         }
     }
 
-    /** Parses corner token {@code i} into {@link #cornerPosition} and {@link #cornerUv}. */
+    /** Parses corner token {@code i} into {@link #cornerPosition}, {@link #cornerUv} and {@link #cornerNormal}. */
     private void corner(int i) {
         int start = lines.start(i);
         int end = lines.end(i);
         int slash = slash(start, end);
         cornerPosition = index(V, start, slash, i);
         cornerUv = -1;
+        cornerNormal = -1;
         if (slash == end) {
             return;
         }
@@ -76,7 +83,7 @@ final class ObjFaces {
             if (slash(second + 1, end) < end) {
                 throw malformedCorner(i);
             }
-            index(VN, second + 1, end, i);
+            cornerNormal = index(VN, second + 1, end, i);
         }
     }
 

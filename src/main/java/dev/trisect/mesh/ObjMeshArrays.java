@@ -8,7 +8,7 @@ import java.util.Map;
 
 /**
  * The mesh an {@link ObjReader} is building: flat arrays of object-space positions (the file's units),
- * texel coordinates as written, the corners and material of each triangle in file order, and the
+ * texel coordinates and normals as written, the corners and material of each triangle in file order, and the
  * material names in order of first use. It owns their growth, and with it the limit of
  * docs/reading-limits.md ("too much data" past the largest array the JVM allocates), the counts of
  * what is defined so far that negative indices count back from, and the texel-coordinate transforms
@@ -27,9 +27,11 @@ final class ObjMeshArrays {
 
     private float[] positions = new float[3 * 256];
     private float[] uvs = new float[2 * 256];
+    private float[] normals = new float[0];
     private final int[] counts = new int[3];
     private int[] cornerPositions = new int[3 * 256];
     private int[] cornerUvs = new int[3 * 256];
+    private int[] cornerNormals = new int[3 * 256];
     private int[] triangleMaterials = new int[256];
     private int triangleCount;
 
@@ -56,23 +58,31 @@ final class ObjMeshArrays {
     }
 
     /**
-     * Makes room for one more position before its numbers are parsed, so that on a line with both
-     * problems "too much data" is reported first, as it always was.
+     * Makes room for one more position ({@link #V}) or normal ({@link #VN}) before its numbers are
+     * parsed, so that on a line with both problems "too much data" is reported first, as it always was.
      */
-    void roomForPosition() {
-        positions = room(positions, 3L * counts[V] + 3);
+    void roomForTriple(int kind) {
+        if (kind == V) {
+            positions = room(positions, 3L * counts[V] + 3);
+        } else {
+            normals = room(normals, 3L * counts[VN] + 3);
+        }
     }
 
-    /** Appends a position (object space, the file's units); {@link #roomForPosition} came first. */
-    void addPosition(float x, float y, float z) {
-        int at = 3 * counts[V];
-        positions[at] = x;
-        positions[at + 1] = y;
-        positions[at + 2] = z;
-        counts[V]++;
+    /**
+     * Appends a position ({@link #V}: object space, the file's units) or a normal ({@link #VN}: object
+     * space, as written); {@link #roomForTriple} came first.
+     */
+    void addTriple(int kind, float x, float y, float z) {
+        float[] a = kind == V ? positions : normals;
+        int at = 3 * counts[kind];
+        a[at] = x;
+        a[at + 1] = y;
+        a[at + 2] = z;
+        counts[kind]++;
     }
 
-    /** As {@link #roomForPosition}, for a texel coordinate. */
+    /** As {@link #roomForTriple}, for a texel coordinate. */
     void roomForUv() {
         uvs = room(uvs, 2L * counts[VT] + 2);
     }
@@ -83,11 +93,6 @@ final class ObjMeshArrays {
         uvs[at] = u;
         uvs[at + 1] = v;
         counts[VT]++;
-    }
-
-    /** Counts a normal: normals are not kept, only their number, to check normal indices. */
-    void addNormal() {
-        counts[VN]++;
     }
 
     boolean hasMaterial() {
@@ -102,11 +107,15 @@ final class ObjMeshArrays {
         });
     }
 
-    /** Appends a triangle of the current material: 0-based position and UV indices (UV -1 for none). */
-    void triangle(int p0, int p1, int p2, int t0, int t1, int t2) {
+    /**
+     * Appends a triangle of the current material: 0-based position, UV and normal indices (UV and
+     * normal -1 for none).
+     */
+    void triangle(int p0, int p1, int p2, int t0, int t1, int t2, int n0, int n1, int n2) {
         triangleMaterials = room(triangleMaterials, triangleCount + 1L);
         cornerPositions = room(cornerPositions, 3L * triangleCount + 3);
         cornerUvs = room(cornerUvs, 3L * triangleCount + 3);
+        cornerNormals = room(cornerNormals, 3L * triangleCount + 3);
         int c = 3 * triangleCount;
         cornerPositions[c] = p0;
         cornerPositions[c + 1] = p1;
@@ -114,6 +123,9 @@ final class ObjMeshArrays {
         cornerUvs[c] = t0;
         cornerUvs[c + 1] = t1;
         cornerUvs[c + 2] = t2;
+        cornerNormals[c] = n0;
+        cornerNormals[c + 1] = n1;
+        cornerNormals[c + 2] = n2;
         triangleMaterials[triangleCount++] = currentMaterial;
     }
 
@@ -155,7 +167,8 @@ final class ObjMeshArrays {
     /** The mesh of what was read, in trimmed copies of the arrays. */
     Mesh toMesh() {
         return new Mesh(Arrays.copyOf(positions, 3 * counts[V]), Arrays.copyOf(uvs, 2 * counts[VT]),
-                Arrays.copyOf(cornerPositions, 3 * triangleCount), Arrays.copyOf(cornerUvs, 3 * triangleCount),
+                Arrays.copyOf(normals, 3 * counts[VN]), Arrays.copyOf(cornerPositions, 3 * triangleCount),
+                Arrays.copyOf(cornerUvs, 3 * triangleCount), Arrays.copyOf(cornerNormals, 3 * triangleCount),
                 Arrays.copyOf(triangleMaterials, triangleCount), materialNames);
     }
 

@@ -11,8 +11,8 @@ import java.util.List;
  *
  * <p>What is read: {@code v x y z [w]} (object-space positions in the file's units; w and any further
  * numbers, such as vertex colours, are checked but not used), {@code vt u [v [w]]} (v defaults to 0),
- * {@code vn} (only counted, to check normal indices), {@code f} with corners {@code v}, {@code v/vt},
- * {@code v/vt/vn} or {@code v//vn}, {@code usemtl} and {@code mtllib}. Everything else ({@code o},
+ * {@code vn x y z} (object-space normals, kept as written), {@code f} with corners {@code v},
+ * {@code v/vt}, {@code v/vt/vn} or {@code v//vn}, {@code usemtl} and {@code mtllib}. Everything else ({@code o},
  * {@code g}, {@code s}, {@code l}, {@code p}, unknown statements, comments) is skipped.
  *
  * <p>Numbers follow {@link Float#parseFloat}, plus C's {@code nan}, {@code inf} and {@code infinity}
@@ -20,7 +20,8 @@ import java.util.List;
  * are 1-based; negative ones count back from the last element defined before the face; positive ones
  * may refer forward and are checked against the totals at the end of the file. Polygons are
  * fan-triangulated as (v0, vi, vi+1) and triangles are numbered in file order. A corner without
- * {@code vt} gets UV index -1. Triangles before any {@code usemtl} get the material {@code default}.
+ * {@code vt} gets UV index -1, one without {@code vn} normal index -1 (it takes its triangle's face
+ * normal, {@link Mesh#cornerNormal}). Triangles before any {@code usemtl} get the material {@code default}.
  *
  * <p>Every problem with the input is an {@link InputException} whose message is one line,
  * {@code file:line: what is wrong}.
@@ -72,11 +73,11 @@ public final class ObjReader {
                 continue;
             }
             if (lines.is(0, "v")) {
-                vertex();
+                triple(ObjMeshArrays.V, "vertex");
             } else if (lines.is(0, "vt")) {
                 textureCoordinate();
             } else if (lines.is(0, "vn")) {
-                mesh.addNormal();
+                triple(ObjMeshArrays.VN, "normal");
             } else if (lines.is(0, "f")) {
                 faces.face();
             } else if (lines.is(0, "usemtl")) {
@@ -109,17 +110,18 @@ public final class ObjReader {
         return new ObjModel(built, materialTextures, sources, libraries.files());
     }
 
-    private void vertex() {
+    /** A {@code v} ({@link ObjMeshArrays#V}) or {@code vn} ({@link ObjMeshArrays#VN}): x y z, then any numbers. */
+    private void triple(int kind, String what) {
         int n = lines.count() - 1;
         if (n < 3) {
-            throw lines.error("vertex has " + n + (n == 1 ? " coordinate" : " coordinates") + "; needs x y z");
+            throw lines.error(what + " has " + n + (n == 1 ? " coordinate" : " coordinates") + "; needs x y z");
         }
-        mesh.roomForPosition();
-        float x = number(1, "vertex");
-        float y = number(2, "vertex");
-        float z = number(3, "vertex");
-        checkNumbers(4, "vertex");
-        mesh.addPosition(x, y, z);
+        mesh.roomForTriple(kind);
+        float x = number(1, what);
+        float y = number(2, what);
+        float z = number(3, what);
+        checkNumbers(4, what);
+        mesh.addTriple(kind, x, y, z);
     }
 
     private void textureCoordinate() {

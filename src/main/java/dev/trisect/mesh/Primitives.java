@@ -3,7 +3,9 @@ package dev.trisect.mesh;
 import dev.trisect.math.Vec3;
 
 /**
- * Built-in shapes, front faces outward (counter-clockwise seen from outside).
+ * Built-in shapes, front faces outward (counter-clockwise seen from outside), with texture
+ * coordinates and outward unit normals: one per face on flat faces (a box's sides, a plane), one per
+ * position on curved surfaces (a sphere's, smooth).
  *
  * <p>Two forms: {@link #box(double, double, double)}, {@link #plane(double, double, int, int)} and
  * {@link #sphere(double, int, int)} return a finished {@link Mesh} centred on the origin of its object
@@ -92,6 +94,7 @@ public final class Primitives {
         }
         int firstPos = b.positionCount();
         int firstUv = b.uvCount();
+        int normal = b.normal(right.cross(up).normalize());
         for (int j = 0; j <= cellsV; j++) {
             for (int i = 0; i <= cellsU; i++) {
                 double s = (double) i / cellsU;
@@ -107,8 +110,10 @@ public final class Primitives {
                 int c = a + 1;
                 int d = a + 1 + row;
                 int e = a + row;
-                b.triangle(firstPos + a, firstPos + c, firstPos + d, firstUv + a, firstUv + c, firstUv + d);
-                b.triangle(firstPos + a, firstPos + d, firstPos + e, firstUv + a, firstUv + d, firstUv + e);
+                b.triangle(firstPos + a, firstPos + c, firstPos + d, firstUv + a, firstUv + c, firstUv + d,
+                        normal, normal, normal);
+                b.triangle(firstPos + a, firstPos + d, firstPos + e, firstUv + a, firstUv + d, firstUv + e,
+                        normal, normal, normal);
             }
         }
     }
@@ -161,14 +166,25 @@ public final class Primitives {
         face(b, center.sub(y), x, z);              // -y
     }
 
+    /** A face of a box: the quad c ± r ± u with UVs (0, 0) to (1, 1) and the normal r x u. */
     private static void face(MeshBuilder b, Vec3 c, Vec3 r, Vec3 u) {
-        b.quad(c.sub(r).sub(u), c.add(r).sub(u), c.add(r).add(u), c.sub(r).add(u),
-                0, 0, 1, 0, 1, 1, 0, 1);
+        int p = b.position(c.sub(r).sub(u));
+        b.position(c.add(r).sub(u));
+        b.position(c.add(r).add(u));
+        b.position(c.sub(r).add(u));
+        int t = b.uv(0, 0);
+        b.uv(1, 0);
+        b.uv(1, 1);
+        b.uv(0, 1);
+        int n = b.normal(r.cross(u).normalize());
+        b.triangle(p, p + 1, p + 2, t, t + 1, t + 2, n, n, n);
+        b.triangle(p, p + 2, p + 3, t, t + 2, t + 3, n, n, n);
     }
 
     /**
      * A UV sphere: u runs once around (longitude), v from 0 at the bottom pole to 1 at the top.
-     * The pole rows are single triangles, so no triangle is degenerate.
+     * The pole rows are single triangles, so no triangle is degenerate. Normals are smooth: each
+     * position's own direction from the centre.
      *
      * @param b      the builder the triangles are added to
      * @param center centre, world space
@@ -182,6 +198,7 @@ public final class Primitives {
         }
         int firstPos = b.positionCount();
         int firstUv = b.uvCount();
+        int firstNormal = b.normalCount();
         int row = slices + 1;
         for (int j = 0; j <= stacks; j++) {
             double theta = Math.PI * j / stacks - Math.PI / 2;
@@ -189,10 +206,15 @@ public final class Primitives {
                 // Longitude grows toward -z at phi = 0 so that (east, north) x gives the outward normal.
                 double phi = 2 * Math.PI * i / slices;
                 double cy = Math.cos(theta);
+                double nx = cy * Math.cos(phi);
+                double ny = Math.sin(theta);
+                double nz = -cy * Math.sin(phi);
+                // The positions' expressions as before normals existed, so that they stay bit for bit.
                 b.position(center.x() + radius * cy * Math.cos(phi),
                         center.y() + radius * Math.sin(theta),
                         center.z() - radius * cy * Math.sin(phi));
                 b.uv((double) i / slices, (double) j / stacks);
+                b.normal(nx, ny, nz);
             }
         }
         for (int j = 0; j < stacks; j++) {
@@ -202,10 +224,12 @@ public final class Primitives {
                 int d = a + 1 + row;
                 int e = a + row;
                 if (j > 0) {
-                    b.triangle(firstPos + a, firstPos + c, firstPos + d, firstUv + a, firstUv + c, firstUv + d);
+                    b.triangle(firstPos + a, firstPos + c, firstPos + d, firstUv + a, firstUv + c, firstUv + d,
+                            firstNormal + a, firstNormal + c, firstNormal + d);
                 }
                 if (j < stacks - 1) {
-                    b.triangle(firstPos + a, firstPos + d, firstPos + e, firstUv + a, firstUv + d, firstUv + e);
+                    b.triangle(firstPos + a, firstPos + d, firstPos + e, firstUv + a, firstUv + d, firstUv + e,
+                            firstNormal + a, firstNormal + d, firstNormal + e);
                 }
             }
         }

@@ -1,9 +1,11 @@
 package dev.trisect.io;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import dev.trisect.mesh.Mesh;
 import dev.trisect.mesh.MeshBuilder;
+import dev.trisect.mesh.ObjReader;
 import dev.trisect.texture.Texture;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -32,5 +34,45 @@ class ObjWriterTest {
                 maps.stream().map(p -> p.getFileName().toString()).toList());
         assertEquals("newmtl a.b\nmap_Kd e-a_b.ppm\nnewmtl a_b\nmap_Kd e-a_b-2.ppm\nnewmtl A_B\nmap_Kd e-A_B-3.ppm\n",
                 Files.readString(dir.resolve("e.mtl")));
+    }
+
+    /**
+     * Normals are written as {@code vn} and each corner names what it has ({@code v}, {@code v/vt},
+     * {@code v//vn}, {@code v/vt/vn}), so reading the file back gives the same mesh, array for array.
+     */
+    @Test
+    void normalsAreWrittenAndReadBackAsTheyWere() throws IOException {
+        MeshBuilder b = new MeshBuilder();
+        b.position(0, 0, 0);
+        b.position(1, 0, 0);
+        b.position(0, 1, 0);
+        b.uv(0.25, 0.5);
+        b.normal(0, 0, 1);
+        b.normal(0.1f, -2, 3e-7);
+        b.triangle(0, 1, 2, -1, 0, -1, -1, -1, 1);
+        b.triangle(2, 1, 0, 0, 0, 0, 0, 1, 0);
+        Mesh mesh = b.build();
+        Path obj = dir.resolve("n.obj");
+        ObjWriter.write(obj, mesh, List.of(Texture.solid("w", 0xFFFFFFFF)));
+        List<String> lines = Files.readAllLines(obj);
+        assertEquals(List.of("vn 0.0 0.0 1.0", "vn 0.1 -2.0 3.0E-7", "f 1 2/1 3//2", "f 3/1/1 2/1/2 1/1/1"),
+                lines.stream().filter(l -> l.startsWith("vn") || l.startsWith("f")).toList());
+        Mesh back = ObjReader.read(obj, false).mesh();
+        assertArrayEquals(mesh.positions(), back.positions());
+        assertArrayEquals(mesh.uvs(), back.uvs());
+        assertArrayEquals(mesh.normals(), back.normals());
+        assertArrayEquals(mesh.cornerPositions(), back.cornerPositions());
+        assertArrayEquals(mesh.cornerUvs(), back.cornerUvs());
+        assertArrayEquals(mesh.cornerNormals(), back.cornerNormals());
+    }
+
+    @Test
+    void aMeshWithoutNormalsIsWrittenWithoutVn() throws IOException {
+        MeshBuilder b = new MeshBuilder();
+        b.triangle(b.position(0, 0, 0), b.position(1, 0, 0), b.position(0, 1, 0), -1, -1, -1);
+        Path obj = dir.resolve("plain.obj");
+        ObjWriter.write(obj, b.build(), List.of(Texture.solid("w", 0xFFFFFFFF)));
+        assertEquals("# written by Trisect\nmtllib plain.mtl\nv 0.0 0.0 0.0\nv 1.0 0.0 0.0\nv 0.0 1.0 0.0\n"
+                + "usemtl default\nf 1 2 3\n", Files.readString(obj));
     }
 }

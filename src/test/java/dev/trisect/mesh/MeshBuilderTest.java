@@ -3,6 +3,7 @@ package dev.trisect.mesh;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.math.Vec3;
 import java.util.Arrays;
@@ -118,5 +119,55 @@ class MeshBuilderTest {
         assertEquals("material name is null", assertThrows(NullPointerException.class, () -> b.material(null)).getMessage());
         b.triangle(0, 1, 2, 0, 0, 0);
         assertEquals(List.of("default"), b.build().materialNames());
+    }
+
+    @Test
+    void normalsAreKeptAsGivenAndIndexedPerCorner() {
+        MeshBuilder b = withTriangleCorners();
+        assertEquals(0, b.normal(0, 0, 2));
+        assertEquals(1, b.normal(new Vec3(1, 0, 0)));
+        b.triangle(0, 1, 2, 0, -1, 0, 1, -1, 0);
+        b.triangle(0, 1, 2, -1, -1, -1);
+        Mesh m = b.build();
+        assertEquals(2, m.normalCount());
+        assertArrayEquals(new float[] {0, 0, 2, 1, 0, 0}, m.normals());
+        assertArrayEquals(new int[] {1, -1, 0, -1, -1, -1}, m.cornerNormals());
+        double[] n = new double[3];
+        m.cornerNormal(2, n, 0);
+        assertArrayEquals(new double[] {0, 0, 1}, n);
+        m.cornerNormal(1, n, 0);
+        assertArrayEquals(new double[] {0, 0, 1}, n, 0, "the face normal of a counter-clockwise triangle");
+    }
+
+    @Test
+    void aNormalWithoutDirectionIsRefusedWhereItIsGiven() {
+        MeshBuilder b = withTriangleCorners();
+        for (double[] bad : new double[][] {{0, 0, 0}, {Double.NaN, 0, 1}, {0, Double.POSITIVE_INFINITY, 0},
+            {1e300, 0, 0}, {1e-50, 0, 0}}) {
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                    () -> b.normal(bad[0], bad[1], bad[2]));
+            assertTrue(e.getMessage().contains("has no direction"), e.getMessage());
+        }
+        assertEquals(0, b.normalCount());
+        assertThrows(IndexOutOfBoundsException.class, () -> b.triangle(0, 1, 2, -1, -1, -1, 0, -1, -1));
+        b.normal(0, 0, 1);
+        assertThrows(IndexOutOfBoundsException.class, () -> b.triangle(0, 1, 2, -1, -1, -1, 0, 1, -1));
+        assertThrows(IndexOutOfBoundsException.class, () -> b.triangle(0, 1, 2, -1, -1, -1, -2, 0, 0));
+        assertEquals(0, b.triangleCount());
+    }
+
+    /** Face normals of the largest and smallest float triangles are unit: nothing overflows or vanishes. */
+    @Test
+    void faceNormalsOfHugeAndTinyTrianglesAreUnit() {
+        for (double scale : new double[] {1e38, 1e-38, Float.MIN_VALUE, 1}) {
+            MeshBuilder b = new MeshBuilder();
+            b.position(0, 0, 0);
+            b.position(0, 0, -scale);
+            b.position(0, 2 * scale, 0);
+            b.triangle(0, 1, 2, -1, -1, -1);
+            double[] n = new double[4];
+            b.build().faceNormal(0, n, 1);
+            assertArrayEquals(new double[] {0, 1, 0, 0}, n, 1e-15, "scale " + scale);
+        }
     }
 }

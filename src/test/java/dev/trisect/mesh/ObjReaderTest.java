@@ -103,6 +103,36 @@ class ObjReaderTest {
         assertArrayEquals(new int[] {-1, 0, 1, -1, 1, -1}, mesh.cornerUvs());
     }
 
+    @Test
+    void readsNormalsAndTheNormalIndexOfEachCorner() throws IOException {
+        Mesh mesh = read(TRIANGLE_VERTICES + "v 1 1 0\nvt 0 0\nvn 0 0 1\nvn 0.5 -2 1e1\n"
+                + "f 1/1/2 2//1 3/1/1 4//-2\nf 3 2 1\n").mesh();
+        assertEquals(2, mesh.normalCount());
+        assertArrayEquals(new float[] {0, 0, 1, 0.5f, -2, 10}, mesh.normals());
+        assertArrayEquals(new int[] {0, 1, 2, 0, 2, 3, 2, 1, 0}, mesh.cornerPositions());
+        assertArrayEquals(new int[] {1, 0, 0, 1, 0, 0, -1, -1, -1}, mesh.cornerNormals());
+        assertArrayEquals(new int[] {0, -1, 0, 0, 0, -1, -1, -1, -1}, mesh.cornerUvs());
+    }
+
+    /**
+     * A corner with a normal has it made unit length; one without has its triangle's face normal, the
+     * side from which the corners run counter-clockwise (the second face is wound clockwise seen from
+     * +z, so it faces -z), corner by corner within one face.
+     */
+    @Test
+    void cornersWithoutANormalTakeTheirTrianglesFaceNormal() throws IOException {
+        Mesh mesh = read("v 0 0 0\nv 2 0 0\nv 0 3 0\nvn 0 3 4\n"
+                + "f 1//1 2 3\nf 1 3 2\nv 5 5 5\nf 1 1 4\n").mesh();
+        double[] n = new double[9 * 3];
+        for (int c = 0; c < 9; c++) {
+            mesh.cornerNormal(c, n, 3 * c);
+        }
+        assertArrayEquals(new double[] {
+            0, 0.6, 0.8, 0, 0, 1, 0, 0, 1,
+            0, 0, -1, 0, 0, -1, 0, 0, -1,
+            0, 0, 0, 0, 0, 0, 0, 0, 0}, n, 1e-15);
+    }
+
     @ParameterizedTest
     @CsvSource({
         "1, 1",
@@ -376,6 +406,12 @@ class ObjReaderTest {
             Arguments.of("vt\n", "scene.obj:1: texture coordinate without u"),
             Arguments.of("vt 0.5 zz\n", "scene.obj:1: malformed number 'zz' in texture coordinate"),
             Arguments.of("vt 0.5 0.5 nix\n", "scene.obj:1: malformed number 'nix' in texture coordinate"),
+            Arguments.of(TRIANGLE_VERTICES + "vn 0 1\nf 1//1 2//1 3//1\n", "scene.obj:4: normal has 2 coordinates; needs x y z"),
+            Arguments.of("vn\n", "scene.obj:1: normal has 0 coordinates; needs x y z"),
+            Arguments.of("vn 0 1 up\n", "scene.obj:1: malformed number 'up' in normal"),
+            Arguments.of("vn 0 1 0 x\n", "scene.obj:1: malformed number 'x' in normal"),
+            Arguments.of(TRIANGLE_VERTICES + "vn 0 0 1\nf 1//1 2//1 3//1/\n", "scene.obj:5: malformed face corner '3//1/'"),
+            Arguments.of(TRIANGLE_VERTICES + "vn 0 0 1\nf 1//1 2//1 3//x\n", "scene.obj:5: malformed face corner '3//x'"),
             Arguments.of("v 0 0 0\nusemtl\n", "scene.obj:2: usemtl without a material name"),
             // Errors name the line a continued statement starts on, and later lines keep their numbers.
             Arguments.of("v 0 0 0\nv 1 \\\n 0 0\nv 0 1 0\nf 1 2 \\\n 3 \\\n 0\n",

@@ -1,5 +1,6 @@
 package dev.trisect.mesh;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -32,6 +33,26 @@ class PrimitivesTest {
     static Vec3 normal(Mesh m, int t) {
         Vec3 a = corner(m, t, 0);
         return corner(m, t, 1).sub(a).cross(corner(m, t, 2).sub(a));
+    }
+
+    /** The normal a corner has of its own, as given; fails when it has none. */
+    static Vec3 givenNormal(Mesh m, int t, int k) {
+        int n = m.cornerNormals()[3 * t + k];
+        assertTrue(n >= 0, "triangle " + t + " corner " + k + " has no normal");
+        float[] xyz = m.normals();
+        return new Vec3(xyz[3 * n], xyz[3 * n + 1], xyz[3 * n + 2]);
+    }
+
+    /** Checks that every corner has a normal of its own, of unit length, within 1e-6 of {@code expected}. */
+    static void assertNormals(Mesh m, java.util.function.BiFunction<Integer, Integer, Vec3> expected) {
+        for (int t = 0; t < m.triangleCount(); t++) {
+            for (int k = 0; k < 3; k++) {
+                Vec3 n = givenNormal(m, t, k);
+                assertEquals(1, n.length(), 1e-6, "triangle " + t + " corner " + k + " normal length");
+                assertEquals(0, n.sub(expected.apply(t, k)).length(), 1e-6,
+                        "triangle " + t + " corner " + k + ": " + n + " vs " + expected.apply(t, k));
+            }
+        }
     }
 
     static Vec3 centroid(Mesh m, int t) {
@@ -107,6 +128,8 @@ class PrimitivesTest {
         assertEquals(m.positionCount(), m.uvCount());
         assertNonDegenerateAndUnmirrored(m, size);
         assertEquals((x1 - x0) * (z1 - z0), area(m), EPS * size * size);
+        assertNormals(m, (t, k) -> Vec3.UP);
+        assertEquals(1, m.normalCount());
         for (int t = 0; t < m.triangleCount(); t++) {
             Vec3 n = normal(m, t).normalize();
             assertEquals(1, n.y(), 1e-9, "triangle " + t + " does not face +y");
@@ -168,6 +191,9 @@ class PrimitivesTest {
         }
         assertEquals(6, trianglesPerFace.size());
         trianglesPerFace.values().forEach(n -> assertEquals(2, n));
+        // One normal per face, outward: the face's own geometric normal.
+        assertEquals(6, m.normalCount());
+        assertNormals(m, (t, k) -> normal(m, t).normalize());
     }
 
     // ---- sphere ----
@@ -203,6 +229,10 @@ class PrimitivesTest {
                 assertEquals(latitude / Math.PI + 0.5, uv(m, t, k)[1], 1e-5);
             }
         }
+        // Smooth: each corner's normal is its position's direction from the centre, shared by its triangles.
+        assertEquals(m.positionCount(), m.normalCount());
+        assertNormals(m, (t, k) -> corner(m, t, k).sub(centre).normalize());
+        assertArrayEquals(m.cornerPositions(), m.cornerNormals());
     }
 
     // ---- grid and arguments ----
@@ -218,6 +248,7 @@ class PrimitivesTest {
         assertEquals(12, m.triangleCount());
         assertNonDegenerateAndUnmirrored(m, 4);
         Vec3 facing = right.cross(up).normalize();
+        assertNormals(m, (t, k) -> facing);
         for (int t = 0; t < m.triangleCount(); t++) {
             assertEquals(1, normal(m, t).normalize().dot(facing), 1e-9);
             for (int k = 0; k < 3; k++) {
