@@ -3,6 +3,7 @@ package dev.trisect.pipeline;
 import dev.trisect.raster.BandBins;
 import dev.trisect.raster.ScreenTriangles;
 import dev.trisect.raster.SplitTrees;
+import dev.trisect.tessellate.VertexLayout;
 
 /**
  * One contiguous range of input triangles as the geometry stage leaves it for the fill: its screen
@@ -50,10 +51,18 @@ final class Chunk {
     long tessellateNanos;
     private int oversizedFrames;
 
-    /** Empties the screen triangles and zeroes the counters, for a new attempt at the geometry. */
+    /** Empties the screen triangles and zeroes the counters, keeping the vertex layout. */
     void clear() {
-        out.clear();
-        trees.clear();
+        clear(out.layout());
+    }
+
+    /**
+     * Empties the screen triangles and zeroes the counters, for a new attempt at the geometry whose
+     * vertices are in {@code layout}.
+     */
+    void clear(VertexLayout layout) {
+        out.layout(layout);
+        trees.layout(layout);
         culledBack = culledFrustum = culledDegenerate = invalid = clipped = 0;
         clipNanos = tessellateNanos = 0;
     }

@@ -2,10 +2,6 @@ package dev.trisect.pipeline;
 
 import dev.trisect.render.CullMode;
 import dev.trisect.render.RenderSettings;
-import static dev.trisect.tessellate.VertexLayout.CLIP_STRIDE;
-import static dev.trisect.tessellate.VertexLayout.PROJECTED_STRIDE;
-import static dev.trisect.tessellate.VertexLayout.SCREEN_X;
-import static dev.trisect.tessellate.VertexLayout.SCREEN_Y;
 import static dev.trisect.tessellate.VertexLayout.S;
 import static dev.trisect.tessellate.VertexLayout.T;
 import static dev.trisect.tessellate.VertexLayout.W;
@@ -17,6 +13,7 @@ import dev.trisect.math.Viewport;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.tessellate.PieceBudget;
 import dev.trisect.tessellate.Tessellator;
+import dev.trisect.tessellate.VertexLayout;
 import dev.trisect.texture.Texture;
 import dev.trisect.texture.TextureFilter;
 import java.util.Arrays;
@@ -32,8 +29,9 @@ import java.util.Arrays;
  * a plane of the view volume is culled. Facing comes from the sign of the homogeneous determinant of
  * the corners' (x, y, w), right even for triangles that cross the eye plane; zero is degenerate.
  * Triangles that cross the near or far plane, or the guard band {@link #GUARD_PIXELS} beyond the
- * screen's sides, are clipped ({@link Clipper}) and fanned. Vertices are in {@link
- * dev.trisect.tessellate.VertexLayout}. Each thread has its own scratch; any thread may take any chunk.
+ * screen's sides, are clipped ({@link Clipper}) and fanned. Vertices are in the frame's {@link
+ * VertexLayout} ({@link Input#layout()}): {@link #loadCorner} writes each corner's varyings, and every
+ * later stage carries them on slot by slot. Each thread has its own scratch; any thread may take any chunk.
  */
 final class ChunkGeometry {
     /** Guard band beyond each side of the viewport, pixels. */
@@ -43,6 +41,8 @@ final class ChunkGeometry {
      * skipped as unrepresentable rather than called degenerate or given a facing: 2<sup>26</sup>.
      */
     static final double LARGE = 0x1p26;
+    /** Doubles between the corners of the triangle being culled: room for the largest layout's clip vertex. */
+    private static final int CORNER = VertexLayout.FIRST_VARYING + VertexLayout.MAX_VARYINGS;
     /** Triangles per timing batch inside a chunk. */
     private static final int BATCH = 1024;
 
@@ -56,9 +56,11 @@ final class ChunkGeometry {
      * @param guardY          likewise of its half-height
      * @param split           tessellate (else pass triangles whole)
      * @param budget          the frame's piece budget, shared by all threads' tessellators
+     * @param layout          the vertices' varyings (s, t first), carried on to the pixel loops
      */
     record Input(Draws draws, double[] clip, boolean[] invalidPosition, RenderSettings settings,
-                 Viewport viewport, double guardX, double guardY, boolean split, PieceBudget budget) {
+                 Viewport viewport, double guardX, double guardY, boolean split, PieceBudget budget,
+                 VertexLayout layout) {
     }
 
     /** Per-thread scratch. */
@@ -66,10 +68,12 @@ final class ChunkGeometry {
         final Clipper clipper = new Clipper();
         final Tessellator tessellator = new Tessellator();
         final ScreenPieceSink sink = new ScreenPieceSink();
-        /** The three corners of the triangle being culled and clipped. */
-        final double[] corners = new double[3 * CLIP_STRIDE];
-        /** Clipped triangles of the current batch: 3 vertices of CLIP_STRIDE doubles each. */
-        double[] batch = new double[3 * CLIP_STRIDE * BATCH];
+        /** The three corners of the triangle being culled and clipped, {@link #CORNER} doubles apart. */
+        final double[] corners = new double[3 * CORNER];
+        /** Doubles per clipped vertex in {@link #batch}: the layout's clip stride. */
+        int clipStride = VertexLayout.CLIP_STRIDE;
+        /** Clipped triangles of the current batch: 3 vertices of the layout's clip stride each. */
+        double[] batch = new double[3 * VertexLayout.CLIP_STRIDE * BATCH];
         int[] batchIds = new int[BATCH];
         int[] batchMaterials = new int[BATCH];
     }
@@ -91,9 +95,14 @@ final class ChunkGeometry {
      */
     void run(int thread, Chunk chunk, Input in, int from, int to) {
         Scratch w = scratch[thread];
-        chunk.clear();
+        VertexLayout layout = in.layout();
+        chunk.clear(layout);
         chunk.split = in.split();
         Tessellator tess = w.tessellator;
+        tess.layout(layout);
+        w.clipper.layout(layout);
+        int clipStride = layout.clipStride();
+        w.clipStride = clipStride;
         PieceBudget budget = in.budget();
         tess.configure(in.viewport(), in.settings().tessellation());
         tess.budget(budget);
@@ -122,19 +131,21 @@ final class ChunkGeometry {
             }
             long t1 = System.nanoTime();
             double[] b = w.batch;
-            int stride = 3 * CLIP_STRIDE;
+            int stride = 3 * clipStride;
             for (int i = 0; i < n; i++) {
                 w.sink.triangle(w.batchIds[i], w.batchMaterials[i]);
                 int o = i * stride;
                 int firstPiece = chunk.out.count();
-                tess.process(b, o, o + CLIP_STRIDE, o + 2 * CLIP_STRIDE, split, w.sink);
+                tess.process(b, o, o + clipStride, o + 2 * clipStride, split, w.sink);
                 if (split && tess.splitTree().complete() && tess.splitTree().leaves() > 0) {
                     if (tess.splitTree().nodes() == 0) {
                         chunk.trees.addSingle(firstPiece);
                     } else {
                         int material = w.batchMaterials[i];
                         int maxLevel = trilinear ? draws.textures()[material].mipChain().maxLevel() : 0;
-                        addTree(chunk, tess, w.batchIds[i], material, firstPiece, maxLevel);
+                        int ps = layout.projectedStride();
+                        chunk.trees.add(tess.vertices(), 0, ps, 2 * ps, w.batchIds[i], material, tess.splitTree(),
+                                chunk.out, firstPiece, maxLevel);
                     }
                 }
             }
@@ -148,21 +159,6 @@ final class ChunkGeometry {
         chunk.deepest = tess.deepestLevel();
         chunk.caps = tess.capsReached();
         chunk.fallback = tess.fallbackPieces();
-    }
-
-    /**
-     * Adds the input triangle the tessellator just split to the chunk's split trees, with its tree,
-     * whose pieces are the chunk's screen triangles from {@code firstPiece} on.
-     */
-    private static void addTree(Chunk chunk, Tessellator tess, int id, int material, int firstPiece, int maxLevel) {
-        double[] v = tess.vertices();
-        int a = 0;
-        int b = PROJECTED_STRIDE;
-        int c = 2 * PROJECTED_STRIDE;
-        chunk.trees.add(v[a + SCREEN_X], v[a + SCREEN_Y], 1 / v[a + W], v[a + S], v[a + T],
-                v[b + SCREEN_X], v[b + SCREEN_Y], 1 / v[b + W], v[b + S], v[b + T],
-                v[c + SCREEN_X], v[c + SCREEN_Y], 1 / v[c + W], v[c + S], v[c + T], id, material,
-                tess.splitTree(), chunk.out, firstPiece, maxLevel);
     }
 
     /**
@@ -186,8 +182,8 @@ final class ChunkGeometry {
         float[] uvs = mesh.uvs();
         Clipper clipper = w.clipper;
         double[] corner = w.corners;
-        int c1 = CLIP_STRIDE;
-        int c2 = 2 * CLIP_STRIDE;
+        int c1 = CORNER;
+        int c2 = 2 * CORNER;
         for (int t = from; t < to; t++) {
             int c = 3 * t;
             int p0 = positionBase + corners[c];
@@ -252,13 +248,17 @@ final class ChunkGeometry {
             }
             double[] poly = clipper.vertices();
             for (int k = 1; k + 1 < n; k++) {
-                count = append(w, count, poly, 0, k * CLIP_STRIDE, (k + 1) * CLIP_STRIDE, id, material);
+                count = append(w, count, poly, 0, k * w.clipStride, (k + 1) * w.clipStride, id, material);
             }
         }
         return count;
     }
 
-    /** Loads corner {@code o} from clip-space position {@code p} and its UV; false if a texel coordinate is not finite. */
+    /**
+     * Loads corner {@code o} from clip-space position {@code p} and its UV (varyings s, t); false if a
+     * texel coordinate is not finite. A layout's further varyings are written here beside them, by
+     * whatever produces them per corner.
+     */
     private static boolean loadCorner(double[] dst, int o, double[] clip, int p, float[] uvs, int uvIndex,
                                       Texture tex) {
         System.arraycopy(clip, 4 * p, dst, o + X, 4);
@@ -275,8 +275,8 @@ final class ChunkGeometry {
 
     /** The determinant of the three corners' clip-space (x, y, w). */
     private static double determinant(double[] c) {
-        int c1 = CLIP_STRIDE;
-        int c2 = 2 * CLIP_STRIDE;
+        int c1 = CORNER;
+        int c2 = 2 * CORNER;
         double x0 = c[X];
         double y0 = c[Y];
         double w0 = c[W];
@@ -295,8 +295,8 @@ final class ChunkGeometry {
      * the sum of the magnitudes of its six products (Higham, section 3.1); 8 units are taken.
      */
     private static double determinantError(double[] c) {
-        int c1 = CLIP_STRIDE;
-        int c2 = 2 * CLIP_STRIDE;
+        int c1 = CORNER;
+        int c2 = 2 * CORNER;
         double sum = Math.abs(c[X]) * (Math.abs(c[c1 + Y] * c[c2 + W]) + Math.abs(c[c2 + Y] * c[c1 + W]))
                 + Math.abs(c[Y]) * (Math.abs(c[c1 + X] * c[c2 + W]) + Math.abs(c[c2 + X] * c[c1 + W]))
                 + Math.abs(c[W]) * (Math.abs(c[c1 + X] * c[c2 + Y]) + Math.abs(c[c2 + X] * c[c1 + Y]));
@@ -321,7 +321,7 @@ final class ChunkGeometry {
     private static double largest(double[] c) {
         double m = 0;
         for (int k = 0; k < 3; k++) {
-            int o = k * CLIP_STRIDE;
+            int o = k * CORNER;
             m = Math.max(m, Math.max(Math.max(Math.abs(c[o + X]), Math.abs(c[o + Y])),
                     Math.max(Math.abs(c[o + Z]), Math.abs(c[o + W]))));
         }
@@ -329,16 +329,17 @@ final class ChunkGeometry {
     }
 
     private static int append(Scratch w, int count, double[] src, int a, int b, int c, int id, int material) {
-        int stride = 3 * CLIP_STRIDE;
+        int cs = w.clipStride;
+        int stride = 3 * cs;
         if ((count + 1) * stride > w.batch.length) {
             w.batch = Arrays.copyOf(w.batch, w.batch.length * 2);
             w.batchIds = Arrays.copyOf(w.batchIds, w.batchIds.length * 2);
             w.batchMaterials = Arrays.copyOf(w.batchMaterials, w.batchMaterials.length * 2);
         }
         int o = count * stride;
-        System.arraycopy(src, a, w.batch, o, CLIP_STRIDE);
-        System.arraycopy(src, b, w.batch, o + CLIP_STRIDE, CLIP_STRIDE);
-        System.arraycopy(src, c, w.batch, o + 2 * CLIP_STRIDE, CLIP_STRIDE);
+        System.arraycopy(src, a, w.batch, o, cs);
+        System.arraycopy(src, b, w.batch, o + cs, cs);
+        System.arraycopy(src, c, w.batch, o + 2 * cs, cs);
         w.batchIds[count] = id;
         w.batchMaterials[count] = material;
         return count + 1;

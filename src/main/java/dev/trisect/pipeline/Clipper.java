@@ -1,6 +1,5 @@
 package dev.trisect.pipeline;
 
-import static dev.trisect.tessellate.VertexLayout.CLIP_STRIDE;
 import static dev.trisect.tessellate.VertexLayout.W;
 import static dev.trisect.tessellate.VertexLayout.X;
 import static dev.trisect.tessellate.VertexLayout.Y;
@@ -19,8 +18,8 @@ import dev.trisect.tessellate.VertexLayout;
  *
  * <p>An intersection is always computed from the edge's inside end toward its outside end, so the two
  * triangles that share an edge get bit-identical new vertices and the clipped mesh keeps no cracks.
- * Vertices are {@link VertexLayout#CLIP_STRIDE} doubles in {@link VertexLayout}: clip x, y, z, w and
- * texel s, t, the tessellator's input.
+ * Vertices are {@link VertexLayout#clipStride()} doubles of the layout set ({@link #layout}): clip x, y, z, w and
+ * the varyings (texel s, t first), the tessellator's input; every slot is interpolated alike.
  *
  * <p>An intersection {@code in + t (out - in)} of an edge whose ends are far larger than the new
  * vertex cancels: with corners at 1e17 units and a near plane at 0.1 the new vertex is made of
@@ -49,10 +48,20 @@ final class Clipper {
     /** Units of 2<sup>-53</sup> M taken as a clipped vertex's error: the rounding of the transform and of each plane's intersection. */
     static final double ROUNDING_UNITS = 8;
 
-    private double[] current = new double[CLIP_STRIDE * MAX_VERTICES];
-    private double[] next = new double[CLIP_STRIDE * MAX_VERTICES];
+    /** Room for the vertices of the largest layout. */
+    private static final int ROOM = (VertexLayout.FIRST_VARYING + VertexLayout.MAX_VARYINGS) * MAX_VERTICES;
+
+    private double[] current = new double[ROOM];
+    private double[] next = new double[ROOM];
+    /** Doubles per vertex: the layout's {@link VertexLayout#clipStride()}. */
+    private int stride = VertexLayout.CLIP_STRIDE;
     private double guardX = 1;
     private double guardY = 1;
+
+    /** Sets the layout of the vertices that follow ({@link VertexLayout#TEXTURED} until set). */
+    void layout(VertexLayout layout) {
+        stride = layout.clipStride();
+    }
 
     /** Sets the guard band, as multiples of the view volume's half-width and half-height. */
     void guardBand(double gx, double gy) {
@@ -118,9 +127,9 @@ final class Clipper {
      */
     int clip(double[] src, int a, int b, int c, int planes) {
         double[] in = current;
-        System.arraycopy(src, a, in, 0, CLIP_STRIDE);
-        System.arraycopy(src, b, in, CLIP_STRIDE, CLIP_STRIDE);
-        System.arraycopy(src, c, in, 2 * CLIP_STRIDE, CLIP_STRIDE);
+        System.arraycopy(src, a, in, 0, stride);
+        System.arraycopy(src, b, in, stride, stride);
+        System.arraycopy(src, c, in, 2 * stride, stride);
         int n = 3;
         for (int plane = NEAR; plane <= TOP && n > 0; plane <<= 1) {
             if ((planes & plane) != 0) {
@@ -144,7 +153,7 @@ final class Clipper {
     boolean representable(int n, double largest) {
         double error = ROUNDING_UNITS * 0x1p-53 * largest;
         for (int i = 0; i < n; i++) {
-            if (!(error <= MAX_RELATIVE_ERROR * Math.abs(current[i * CLIP_STRIDE + W]))) {
+            if (!(error <= MAX_RELATIVE_ERROR * Math.abs(current[i * stride + W]))) {
                 return false;
             }
         }
@@ -156,13 +165,13 @@ final class Clipper {
         double[] out = next;
         int m = 0;
         for (int i = 0; i < n; i++) {
-            int p = i * CLIP_STRIDE;
-            int q = ((i + 1) % n) * CLIP_STRIDE;
+            int p = i * stride;
+            int q = ((i + 1) % n) * stride;
             double dp = distance(in, p, plane);
             double dq = distance(in, q, plane);
             boolean pInside = dp >= 0;
             if (pInside) {
-                System.arraycopy(in, p, out, m * CLIP_STRIDE, CLIP_STRIDE);
+                System.arraycopy(in, p, out, m * stride, stride);
                 m++;
             }
             if (pInside != (dq >= 0)) {
@@ -171,8 +180,8 @@ final class Clipper {
                 double dIn = pInside ? dp : dq;
                 double dOut = pInside ? dq : dp;
                 double t = dIn / (dIn - dOut);
-                int o = m * CLIP_STRIDE;
-                for (int k = 0; k < CLIP_STRIDE; k++) {
+                int o = m * stride;
+                for (int k = 0; k < stride; k++) {
                     out[o + k] = in[inside + k] + t * (in[outside + k] - in[inside + k]);
                 }
                 m++;

@@ -5,6 +5,7 @@ import dev.trisect.raster.BandBins;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.render.TessellationSettings;
 import dev.trisect.tessellate.PieceBudget;
+import dev.trisect.tessellate.VertexLayout;
 
 /**
  * The geometry half of a frame, up to what the fill reads: transform the positions
@@ -65,7 +66,7 @@ final class FrameGeometry {
             pieceBudget.reset(pieces);
             RenderSettings s = depth == t.maxDepth() ? settings : settings.withTessellation(t.withMaxDepth(depth));
             ChunkGeometry.Input in = new ChunkGeometry.Input(draws, clipSpace.positions(),
-                    clipSpace.invalid(), s, viewport, gx, gy, split, pieceBudget);
+                    clipSpace.invalid(), s, viewport, gx, gy, split, pieceBudget, VertexLayout.TEXTURED);
             pool.run(chunkCount, (thread, c) -> {
                 int from = Math.min(triangles, c * perChunk);
                 int to = Math.min(triangles, from + perChunk);

@@ -38,10 +38,15 @@ final class PieceLookup {
         }
         ScreenTriangles t = chunks.get(c).out;
         int s = i * ScreenTriangles.SCREEN_STRIDE;
-        int a = i * ScreenTriangles.ATTRIBUTE_STRIDE;
+        int a = i * t.attributeStride();
+        int cs = t.cornerStride();
+        // Per corner 1/w, s, t, whatever further varyings the layout carries.
+        double[] qst = new double[9];
+        for (int k = 0; k < 3; k++) {
+            System.arraycopy(t.attributes(), a + k * cs, qst, 3 * k, 3);
+        }
         return new PieceInfo(index, t.ids()[i], t.levels()[i], t.perPixel()[i],
-                Arrays.copyOfRange(t.screen(), s, s + ScreenTriangles.SCREEN_STRIDE),
-                Arrays.copyOfRange(t.attributes(), a, a + ScreenTriangles.ATTRIBUTE_STRIDE));
+                Arrays.copyOfRange(t.screen(), s, s + ScreenTriangles.SCREEN_STRIDE), qst);
     }
 
     /**
@@ -96,8 +101,9 @@ final class PieceLookup {
     private static double depthAt(ScreenTriangles t, int i, double x, double y) {
         double[] w = weights(t.screen(), i * ScreenTriangles.SCREEN_STRIDE, x, y);
         double[] at = t.attributes();
-        int a = i * ScreenTriangles.ATTRIBUTE_STRIDE;
-        return w == null ? Double.NaN : w[0] * at[a] + w[1] * at[a + 3] + w[2] * at[a + 6];
+        int a = i * t.attributeStride();
+        int cs = t.cornerStride();
+        return w == null ? Double.NaN : w[0] * at[a] + w[1] * at[a + cs] + w[2] * at[a + 2 * cs];
     }
 
     /** Where {@link #find}'s triangle is: its chunk in the high 32 bits, its index there in the low; -1 for none. */
@@ -118,8 +124,9 @@ final class PieceLookup {
                 if (w == null) {
                     continue;
                 }
-                int a = i * ScreenTriangles.ATTRIBUTE_STRIDE;
-                double q = w[0] * at[a] + w[1] * at[a + 3] + w[2] * at[a + 6];
+                int a = i * t.attributeStride();
+                int cs = t.cornerStride();
+                double q = w[0] * at[a] + w[1] * at[a + cs] + w[2] * at[a + 2 * cs];
                 double gap = Math.abs(q - depth);
                 if (gap < bestGap) {
                     bestGap = gap;

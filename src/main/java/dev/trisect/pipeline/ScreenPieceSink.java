@@ -1,17 +1,12 @@
 package dev.trisect.pipeline;
 
-import static dev.trisect.tessellate.VertexLayout.S;
-import static dev.trisect.tessellate.VertexLayout.SCREEN_X;
-import static dev.trisect.tessellate.VertexLayout.SCREEN_Y;
-import static dev.trisect.tessellate.VertexLayout.T;
-import static dev.trisect.tessellate.VertexLayout.W;
-
 import dev.trisect.raster.ScreenTriangles;
 import dev.trisect.tessellate.PieceSink;
 
 /**
  * Where the geometry stage's pieces go: each piece the tessellator hands on is appended to a chunk's
- * screen triangles, with its corners' screen positions, {@code 1/w} and texel coordinates, tagged
+ * screen triangles, with its corners' screen positions, {@code 1/w} and varyings (in the layout the
+ * screen triangles were set to, the tessellator's), tagged
  * with the input triangle it came from, that triangle's material, its split level and whether it is
  * a per-pixel fallback, and its edges' links (which earlier piece of the chunk shares each). One per
  * thread; pointed at a chunk, then at each input triangle in turn.
@@ -35,10 +30,7 @@ final class ScreenPieceSink implements PieceSink {
     @Override
     public void piece(double[] v, int a, int b, int c, int level, boolean fallback, int[] links) {
         int index = out.count();
-        out.add(v[a + SCREEN_X], v[a + SCREEN_Y], 1 / v[a + W], v[a + S], v[a + T],
-                v[b + SCREEN_X], v[b + SCREEN_Y], 1 / v[b + W], v[b + S], v[b + T],
-                v[c + SCREEN_X], v[c + SCREEN_Y], 1 / v[c + W], v[c + S], v[c + T],
-                id, material, fallback, level, ScreenTriangles.link(links[0], index),
+        out.add(v, a, b, c, id, material, fallback, level, ScreenTriangles.link(links[0], index),
                 ScreenTriangles.link(links[1], index), ScreenTriangles.link(links[2], index));
     }
 }

@@ -119,15 +119,16 @@ public final class OutlinePlan {
             if (det == 0 || !Double.isFinite(det)) {
                 continue;
             }
-            int a = tri * ScreenTriangles.ATTRIBUTE_STRIDE;
-            depth.fit(x0, y0, ex1, ey1, ex2, ey2, 1 / det, at[a], at[a + 3], at[a + 6]);
+            int a = tri * triangles.attributeStride();
+            int cs = triangles.cornerStride();
+            depth.fit(x0, y0, ex1, ey1, ex2, ey2, 1 / det, at[a], at[a + cs], at[a + 2 * cs]);
             int l = LOOK * tri;
             looks[l] = depth.base;
             looks[l + 1] = depth.dx;
             looks[l + 2] = depth.dy;
             boolean held = perPixel[tri];
-            looks[l + 3] = held ? Math.min(at[a], Math.min(at[a + 3], at[a + 6])) : Double.NEGATIVE_INFINITY;
-            looks[l + 4] = held ? Math.max(at[a], Math.max(at[a + 3], at[a + 6])) : Double.POSITIVE_INFINITY;
+            looks[l + 3] = held ? Math.min(at[a], Math.min(at[a + cs], at[a + 2 * cs])) : Double.NEGATIVE_INFINITY;
+            looks[l + 4] = held ? Math.max(at[a], Math.max(at[a + cs], at[a + 2 * cs])) : Double.POSITIVE_INFINITY;
             looks[l + 5] = style.fade() ? BorderOverlay.fadeAlpha(Math.abs(det) / 2, perimeter(sc, s)) : 1;
             colours[tri] = style.colouring() == BorderStyle.Colouring.YELLOW ? OverlayColours.of(triangles, tri)
                     : OverlayColours.of(triangles, tri, style.colouring(), maxLevel, maxError);

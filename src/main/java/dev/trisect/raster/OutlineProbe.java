@@ -59,7 +59,8 @@ public final class OutlineProbe {
         double[] sc = t.screen();
         double[] at = t.attributes();
         int s = tri * ScreenTriangles.SCREEN_STRIDE;
-        int a = tri * ScreenTriangles.ATTRIBUTE_STRIDE;
+        int a = tri * t.attributeStride();
+        int cs = t.cornerStride();
         double x0 = sc[s];
         double y0 = sc[s + 1];
         double ex1 = sc[s + 2] - x0;
@@ -71,11 +72,11 @@ public final class OutlineProbe {
             return Double.NEGATIVE_INFINITY;
         }
         Plane plane = new Plane();
-        plane.fit(x0, y0, ex1, ey1, ex2, ey2, 1 / det, at[a], at[a + 3], at[a + 6]);
+        plane.fit(x0, y0, ex1, ey1, ex2, ey2, 1 / det, at[a], at[a + cs], at[a + 2 * cs]);
         double q = plane.base + plane.dx * x + plane.dy * y;
         if (t.perPixel()[tri]) {
-            q = Math.max(Math.min(at[a], Math.min(at[a + 3], at[a + 6])),
-                    Math.min(Math.max(at[a], Math.max(at[a + 3], at[a + 6])), q));
+            q = Math.max(Math.min(at[a], Math.min(at[a + cs], at[a + 2 * cs])),
+                    Math.min(Math.max(at[a], Math.max(at[a + cs], at[a + 2 * cs])), q));
         }
         return q;
     }

@@ -69,12 +69,13 @@ public final class OverlayColours {
         double[] sc = triangles.screen();
         double[] at = triangles.attributes();
         int s = tri * ScreenTriangles.SCREEN_STRIDE;
-        int a = tri * ScreenTriangles.ATTRIBUTE_STRIDE;
+        int a = tri * triangles.attributeStride();
+        int cs = triangles.cornerStride();
         double worst = 0;
         for (int e = 0; e < 3; e++) {
             int f = (e + 1) % 3;
             double length = Math.hypot(sc[s + 2 * e] - sc[s + 2 * f], sc[s + 2 * e + 1] - sc[s + 2 * f + 1]);
-            worst = Math.max(worst, EdgeBound.affineError(length, 1 / at[a + 3 * e], 1 / at[a + 3 * f]));
+            worst = Math.max(worst, EdgeBound.affineError(length, 1 / at[a + cs * e], 1 / at[a + cs * f]));
         }
         return worst;
     }

@@ -1,6 +1,7 @@
 package dev.trisect.raster;
 
 import dev.trisect.tessellate.PieceSink;
+import dev.trisect.tessellate.VertexLayout;
 import java.util.Arrays;
 
 /**
@@ -8,7 +9,8 @@ import java.util.Arrays;
  *
  * <p>Per triangle: corners snapped to the {@link FixedPoint} grid (for coverage), the same corners
  * unsnapped in pixels (for attribute planes, so snapping never bends the texture mapping), and per
- * corner {@code 1/w} (view-space units^-1) and texel coordinates s, t. Plus the input triangle's index
+ * corner {@code 1/w} (view-space units^-1) and the varyings of its {@link VertexLayout} (texel
+ * coordinates s, t first; {@link #layout}). Plus the input triangle's index
  * (for the UV output), its material (the texture to sample), and whether it must be filled per pixel
  * (a tessellated piece a cap stopped short of its policy, see {@link #perPixel()}). The arrays grow as needed and are
  * reused from frame to frame; {@link #shrinkTo} gives storage back after a spike.
@@ -18,8 +20,6 @@ public final class ScreenTriangles {
     public static final int FIXED_STRIDE = 6;
     /** Doubles per triangle in {@link #screen()}: x0, y0, x1, y1, x2, y2 in pixels. */
     public static final int SCREEN_STRIDE = 6;
-    /** Doubles per triangle in {@link #attributes()}: q0, s0, t0, q1, s1, t1, q2, s2, t2. */
-    public static final int ATTRIBUTE_STRIDE = 9;
     /**
      * {@link #links()} of an edge on its input triangle's own boundary (every edge of a triangle not
      * split): it may have the same corners as an edge of another triangle, which only comparing
@@ -30,9 +30,12 @@ public final class ScreenTriangles {
     public static final int INNER = -2;
 
     private int count;
+    private VertexLayout layout = VertexLayout.TEXTURED;
+    /** Doubles per corner in {@link #attributes}: 1/w and the varyings. */
+    private int cornerStride = 1 + VertexLayout.TEXTURED.varyings();
     private int[] fixed = new int[FIXED_STRIDE * 1024];
     private double[] screen = new double[SCREEN_STRIDE * 1024];
-    private double[] attributes = new double[ATTRIBUTE_STRIDE * 1024];
+    private double[] attributes = new double[3 * cornerStride * 1024];
     private int[] ids = new int[1024];
     private int[] materials = new int[1024];
     private boolean[] perPixel = new boolean[1024];
@@ -47,6 +50,34 @@ public final class ScreenTriangles {
     /** Removes all triangles, keeping the storage. */
     public void clear() {
         count = 0;
+    }
+
+    /**
+     * Removes all triangles and sets the vertex layout of those that follow ({@link
+     * VertexLayout#TEXTURED} until set): which varyings each corner carries.
+     */
+    public void layout(VertexLayout vertexLayout) {
+        count = 0;
+        if (vertexLayout != layout) {
+            layout = vertexLayout;
+            cornerStride = 1 + vertexLayout.varyings();
+            attributes = new double[3 * cornerStride * ids.length];
+        }
+    }
+
+    /** The vertex layout of the triangles' varyings. */
+    public VertexLayout layout() {
+        return layout;
+    }
+
+    /** Doubles per corner in {@link #attributes()}: 1/w, then the layout's varyings. */
+    public int cornerStride() {
+        return cornerStride;
+    }
+
+    /** Doubles per triangle in {@link #attributes()}: three corners of {@link #cornerStride()}. */
+    public int attributeStride() {
+        return 3 * cornerStride;
     }
 
     /** How many triangles fit before the storage must grow. */
@@ -65,7 +96,7 @@ public final class ScreenTriangles {
         }
         fixed = Arrays.copyOf(fixed, n * FIXED_STRIDE);
         screen = Arrays.copyOf(screen, n * SCREEN_STRIDE);
-        attributes = Arrays.copyOf(attributes, n * ATTRIBUTE_STRIDE);
+        attributes = Arrays.copyOf(attributes, n * 3 * cornerStride);
         ids = Arrays.copyOf(ids, n);
         materials = Arrays.copyOf(materials, n);
         perPixel = Arrays.copyOf(perPixel, n);
@@ -83,7 +114,10 @@ public final class ScreenTriangles {
         return screen;
     }
 
-    /** Per-corner 1/w, s, t. */
+    /**
+     * Per corner, {@link #cornerStride()} doubles: 1/w, then the varyings of the {@link #layout()} (s, t
+     * first); corner k of triangle i at {@code i * attributeStride() + k * cornerStride()}.
+     */
     public double[] attributes() {
         return attributes;
     }
@@ -163,7 +197,7 @@ public final class ScreenTriangles {
     }
 
     /**
-     * Appends a triangle.
+     * Appends a triangle of the {@link VertexLayout#TEXTURED} layout from its values.
      *
      * @param x0 screen x of corner 0, pixels (snapped here)
      * @param q0 1/w of corner 0, w the view depth &gt; 0
@@ -172,11 +206,55 @@ public final class ScreenTriangles {
      * @param fallback fill this triangle per pixel (perspective-correct) whatever the frame's path
      * @param level    its split level (see {@link #levels()}), stored clamped to 0..127
      * @param link0    the link of edge 0 (see {@link #links()}): an earlier triangle's edge, OUTER or INNER
+     * @throws IllegalStateException when the triangles' {@link #layout()} has more varyings
      */
     public void add(double x0, double y0, double q0, double s0, double t0,
                     double x1, double y1, double q1, double s1, double t1,
                     double x2, double y2, double q2, double s2, double t2,
                     int id, int material, boolean fallback, int level, int link0, int link1, int link2) {
+        if (layout != VertexLayout.TEXTURED) {
+            throw new IllegalStateException("these triangles carry " + layout.varyings()
+                    + " varyings; add them from vertices");
+        }
+        int a = append(x0, y0, x1, y1, x2, y2, id, material, fallback, level, link0, link1, link2);
+        attributes[a] = q0;
+        attributes[a + 1] = s0;
+        attributes[a + 2] = t0;
+        attributes[a + 3] = q1;
+        attributes[a + 4] = s1;
+        attributes[a + 5] = t1;
+        attributes[a + 6] = q2;
+        attributes[a + 7] = s2;
+        attributes[a + 8] = t2;
+    }
+
+    /**
+     * Appends a triangle from three projected vertices in the triangles' {@link #layout()} (as a
+     * {@link dev.trisect.tessellate.Tessellator} hands them to a {@link PieceSink}): their screen
+     * positions, 1/w and varyings. Other parameters as in the other form.
+     *
+     * @param v       vertices, {@link VertexLayout#projectedStride()} doubles each
+     * @param a       offset of corner 0 in {@code v}; {@code b}, {@code c} of corners 1 and 2
+     */
+    public void add(double[] v, int a, int b, int c, int id, int material, boolean fallback, int level,
+                    int link0, int link1, int link2) {
+        int sx = layout.screenX();
+        int o = append(v[a + sx], v[a + sx + 1], v[b + sx], v[b + sx + 1], v[c + sx], v[c + sx + 1], id, material,
+                fallback, level, link0, link1, link2);
+        corner(v, a, o);
+        corner(v, b, o + cornerStride);
+        corner(v, c, o + 2 * cornerStride);
+    }
+
+    /** Corner attributes from the vertex at {@code v[from..]}: 1/w, then the varyings. */
+    private void corner(double[] v, int from, int to) {
+        attributes[to] = 1 / v[from + VertexLayout.W];
+        System.arraycopy(v, from + VertexLayout.FIRST_VARYING, attributes, to + 1, cornerStride - 1);
+    }
+
+    /** Appends everything of a triangle but its attributes; returns where they go in {@link #attributes}. */
+    private int append(double x0, double y0, double x1, double y1, double x2, double y2, int id, int material,
+                       boolean fallback, int level, int link0, int link1, int link2) {
         if (count == ids.length) {
             grow();
         }
@@ -194,16 +272,6 @@ public final class ScreenTriangles {
         screen[s + 3] = y1;
         screen[s + 4] = x2;
         screen[s + 5] = y2;
-        int a = count * ATTRIBUTE_STRIDE;
-        attributes[a] = q0;
-        attributes[a + 1] = s0;
-        attributes[a + 2] = t0;
-        attributes[a + 3] = q1;
-        attributes[a + 4] = s1;
-        attributes[a + 5] = t1;
-        attributes[a + 6] = q2;
-        attributes[a + 7] = s2;
-        attributes[a + 8] = t2;
         ids[count] = id;
         materials[count] = material;
         perPixel[count] = fallback;
@@ -212,14 +280,14 @@ public final class ScreenTriangles {
         links[l] = link0;
         links[l + 1] = link1;
         links[l + 2] = link2;
-        count++;
+        return 3 * cornerStride * count++;
     }
 
     private void grow() {
         int n = ids.length * 2;
         fixed = Arrays.copyOf(fixed, n * FIXED_STRIDE);
         screen = Arrays.copyOf(screen, n * SCREEN_STRIDE);
-        attributes = Arrays.copyOf(attributes, n * ATTRIBUTE_STRIDE);
+        attributes = Arrays.copyOf(attributes, n * 3 * cornerStride);
         ids = Arrays.copyOf(ids, n);
         materials = Arrays.copyOf(materials, n);
         perPixel = Arrays.copyOf(perPixel, n);

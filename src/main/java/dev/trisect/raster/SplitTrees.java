@@ -1,6 +1,7 @@
 package dev.trisect.raster;
 
 import dev.trisect.tessellate.SplitTree;
+import dev.trisect.tessellate.VertexLayout;
 import dev.trisect.texture.internal.Lod;
 import java.util.Arrays;
 
@@ -18,8 +19,9 @@ import java.util.Arrays;
  * the side of smaller x, then right), each a node ({@code >= 0}), a piece ({@code -1 - p}, p the
  * piece's index in the chunk's pieces) or {@link #NO_PIECE} (dropped off screen).
  *
- * <p>Per piece, set up in bulk when its group is added (the geometry pass, not the fill): its affine
- * texel planes over pixel centres ({@link #planes()}: s base, dx, dy, then t), fitted exactly as
+ * <p>Per piece, set up in bulk when its group is added (the geometry pass, not the fill): the affine
+ * planes of its varyings over pixel centres ({@link #planes()}: s base, dx, dy, then t, then any
+ * further varying of the {@link VertexLayout}: each is affine per piece), fitted exactly as
  * {@link TriangleSetup} fits a piece's, their steps per column in 32.32 fixed point and the piece's
  * first column where its rows are anchored ({@link #fixedSteps()}, {@link #firstColumns()}), how it is
  * filled ({@link #kinds()}) and, for trilinear filtering, its one level of detail ({@link #selections()}).
@@ -31,8 +33,8 @@ public final class SplitTrees {
     public static final int NO_PIECE = SplitTree.NO_PIECE;
     /** Doubles per node in {@link #lines()}: k, m (see the class comment). */
     public static final int LINE = 2;
-    /** Doubles per piece in {@link #planes()}: s base, s dx, s dy, t base, t dx, t dy. */
-    public static final int PLANE = 6;
+    /** Doubles per varying in {@link #planes()}: base, dx, dy. */
+    public static final int PLANE = 3;
     /** Longs per piece in {@link #fixedSteps()}: the steps of s and of t per column, 32.32 fixed point. */
     public static final int FIXED_STEP = 2;
     /** {@link #kinds()}: affine, stepped in 32.32 fixed point. */
@@ -57,7 +59,9 @@ public final class SplitTrees {
     private int[] rows = new int[2 * 4096];
     private int[] rowKids = new int[2 * 4096];
     private int pieces;
-    private double[] planes = new double[PLANE * 4096];
+    /** Doubles per piece in {@link #planes}: a {@link #PLANE} per varying. */
+    private int planeStride = PLANE * VertexLayout.TEXTURED.varyings();
+    private double[] planes = new double[planeStride * 4096];
     private long[] fixedSteps = new long[FIXED_STEP * 4096];
     private int[] firstColumns = new int[4096];
     private byte[] kinds = new byte[4096];
@@ -71,6 +75,25 @@ public final class SplitTrees {
         groups = 0;
         nodes = 0;
         pieces = 0;
+    }
+
+    /**
+     * Removes every group and sets the vertex layout of the input triangles and pieces that follow
+     * ({@link VertexLayout#TEXTURED} until set).
+     */
+    public void layout(VertexLayout layout) {
+        clear();
+        inputs.layout(layout);
+        int stride = PLANE * layout.varyings();
+        if (stride != planeStride) {
+            planeStride = stride;
+            planes = new double[stride * kinds.length];
+        }
+    }
+
+    /** Doubles per piece in {@link #planes()}: {@link #PLANE} per varying of the layout. */
+    public int planeStride() {
+        return planeStride;
     }
 
     /** Number of groups (input triangles, split or not), in the order they were added. */
@@ -112,7 +135,10 @@ public final class SplitTrees {
         return lines;
     }
 
-    /** Per piece of the chunk: its texel planes over pixel centres, {@link #PLANE} doubles. */
+    /**
+     * Per piece of the chunk, {@link #planeStride()} doubles: the planes over pixel centres of its
+     * varyings, {@link #PLANE} doubles each (base, dx, dy), s first, then t, then the others.
+     */
     public double[] planes() {
         return planes;
     }
@@ -179,30 +205,48 @@ public final class SplitTrees {
     }
 
     /**
-     * Adds a group that was split: the input triangle (screen pixels, {@code 1/w}, texel coordinates per
-     * corner), and its split tree as a tessellator recorded it, whose leaf k is piece {@code firstPiece + k} of
-     * {@code pieces} (already appended there, {@code tree.leaves()} of them).
-     *
-     * @param maxLevel the last level of the material's mip chain when the frame filters trilinearly
-     *                 (each piece's level of detail is set up with it), else 0
+     * Adds a group that was split, of the {@link VertexLayout#TEXTURED} layout: the input triangle
+     * (screen pixels, {@code 1/w}, texel coordinates per corner); otherwise as the other form.
      */
     public void add(double x0, double y0, double q0, double s0, double t0,
                     double x1, double y1, double q1, double s1, double t1,
                     double x2, double y2, double q2, double s2, double t2, int id, int material,
                     SplitTree tree, ScreenTriangles pieceTriangles, int firstPiece, int maxLevel) {
+        inputs.add(x0, y0, q0, s0, t0, x1, y1, q1, s1, t1, x2, y2, q2, s2, t2, id, material);
+        addTree(tree, pieceTriangles, firstPiece, maxLevel);
+    }
+
+    /**
+     * Adds a group that was split: the input triangle, from its three projected vertices in the
+     * layout set ({@link #layout}; at offsets {@code a}, {@code b}, {@code c} of {@code v}, as a
+     * {@link dev.trisect.tessellate.Tessellator} holds them), and its split tree as the tessellator
+     * recorded it, whose leaf k is piece {@code firstPiece + k} of {@code pieceTriangles} (already
+     * appended there, {@code tree.leaves()} of them).
+     *
+     * @param maxLevel the last level of the material's mip chain when the frame filters trilinearly
+     *                 (each piece's level of detail is set up with it), else 0
+     */
+    public void add(double[] v, int a, int b, int c, int id, int material, SplitTree tree,
+                    ScreenTriangles pieceTriangles, int firstPiece, int maxLevel) {
+        inputs.add(v, a, b, c, id, material, false, 0, ScreenTriangles.OUTER, ScreenTriangles.OUTER,
+                ScreenTriangles.OUTER);
+        addTree(tree, pieceTriangles, firstPiece, maxLevel);
+    }
+
+    /** The group of the input triangle just appended to {@link #inputs}: its tree and pieces. */
+    private void addTree(SplitTree tree, ScreenTriangles pieceTriangles, int firstPiece, int maxLevel) {
         int root = tree.root();
         int[] treeKids = tree.kids();
         double[] treeLines = tree.lines();
         int[] treeRows = tree.rows();
         int treeNodes = tree.nodes();
         int leaves = tree.leaves();
-        int g = inputs.count();
+        int g = inputs.count() - 1;
         refs[group()] = g;
         if (g == roots.length) {
             roots = Arrays.copyOf(roots, 2 * g);
             nodeCounts = Arrays.copyOf(nodeCounts, 2 * g);
         }
-        inputs.add(x0, y0, q0, s0, t0, x1, y1, q1, s1, t1, x2, y2, q2, s2, t2, id, material);
         int base = nodes;
         if (2 * (base + treeNodes) > kids.length) {
             int n = Math.max(2 * (base + treeNodes), 2 * kids.length);
@@ -240,7 +284,7 @@ public final class SplitTrees {
     private void fitPieces(ScreenTriangles t, int from, int to, int maxLevel) {
         if (to > kinds.length) {
             int n = Math.max(to, 2 * kinds.length);
-            planes = Arrays.copyOf(planes, PLANE * n);
+            planes = Arrays.copyOf(planes, planeStride * n);
             fixedSteps = Arrays.copyOf(fixedSteps, FIXED_STEP * n);
             firstColumns = Arrays.copyOf(firstColumns, n);
             kinds = Arrays.copyOf(kinds, n);
@@ -258,13 +302,13 @@ public final class SplitTrees {
             // snapped corners enclose no area (which that fill gave no pixel) has none: a pixel centre
             // its region holds takes the input triangle's perspective-correct mapping.
             boolean flat = !setup.affinePlanes(t, p);
-            int po = PLANE * p;
-            planes[po] = setup.sPlane.base;
-            planes[po + 1] = setup.sPlane.dx;
-            planes[po + 2] = setup.sPlane.dy;
-            planes[po + 3] = setup.tPlane.base;
-            planes[po + 4] = setup.tPlane.dx;
-            planes[po + 5] = setup.tPlane.dy;
+            int po = planeStride * p;
+            for (int k = 0, o2 = po; o2 < po + planeStride; k++, o2 += PLANE) {
+                Plane plane = setup.planes[1 + k];
+                planes[o2] = plane.base;
+                planes[o2 + 1] = plane.dx;
+                planes[o2 + 2] = plane.dy;
+            }
             fixedSteps[FIXED_STEP * p] = (long) Math.floor(planes[po + 1] * FIXED_SCALE);
             fixedSteps[FIXED_STEP * p + 1] = (long) Math.floor(planes[po + 4] * FIXED_SCALE);
             kinds[p] = perPixel[p] || flat ? PER_PIXEL : setup.fixedPointSafe ? AFFINE : AFFINE_WIDE;
@@ -287,7 +331,7 @@ public final class SplitTrees {
         inputs.shrinkTo(Math.max(keep, inputs.count()));
         int p = Math.max(keep, pieces);
         if (kinds.length > p) {
-            planes = Arrays.copyOf(planes, PLANE * p);
+            planes = Arrays.copyOf(planes, planeStride * p);
             fixedSteps = Arrays.copyOf(fixedSteps, FIXED_STEP * p);
             firstColumns = Arrays.copyOf(firstColumns, p);
             kinds = Arrays.copyOf(kinds, p);

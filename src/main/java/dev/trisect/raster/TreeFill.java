@@ -123,6 +123,7 @@ final class TreeFill {
         int[] st = stackFor(nodes);
         int[] segs = segments;
         double[] planes = trees.planes();
+        int ps = trees.planeStride();
         long[] steps = trees.fixedSteps();
         int[] firstColumns = trees.firstColumns();
         byte[] kinds = trees.kinds();
@@ -163,12 +164,12 @@ final class TreeFill {
                 // planes where the row crosses into it.
                 int runEnd = segs[affineRun(segs, g, n, kinds) - 2];
                 int end = segs[g + 1];
-                int po = SplitTrees.PLANE * piece;
+                int po = ps * piece;
                 int fc = firstColumns[piece];
                 long ds = steps[SplitTrees.FIXED_STEP * piece];
                 long dt = steps[SplitTrees.FIXED_STEP * piece + 1];
                 long s = start(planes, po, y, fc, ds, segs[g]);
-                long t = start(planes, po + 3, y, fc, dt, segs[g]);
+                long t = start(planes, po + SplitTrees.PLANE, y, fc, dt, segs[g]);
                 // The column as a double counter, not (double) x: see NearestSpans.perPixel.
                 double xd = segs[g];
                 for (int x = segs[g]; x < runEnd; x++, xd++, s += ds, t += dt) {
@@ -176,12 +177,12 @@ final class TreeFill {
                         g += 3;
                         end = segs[g + 1];
                         piece = segs[g + 2];
-                        po = SplitTrees.PLANE * piece;
+                        po = ps * piece;
                         fc = firstColumns[piece];
                         ds = steps[SplitTrees.FIXED_STEP * piece];
                         dt = steps[SplitTrees.FIXED_STEP * piece + 1];
                         s = start(planes, po, y, fc, ds, x);
-                        t = start(planes, po + 3, y, fc, dt, x);
+                        t = start(planes, po + SplitTrees.PLANE, y, fc, dt, x);
                     }
                     float qf = (float) (qRow + qDx * xd);
                     int i = rowOffset + x;
@@ -247,19 +248,21 @@ final class TreeFill {
     TriangleSetup oneRow(TriangleSetup input, SplitTrees trees, int piece, int y, int a, int b) {
         TriangleSetup one = segment;
         copy(input.qPlane, one.qPlane);
+        int varyings = input.planeCount - 1;
         if (trees.kinds()[piece] == SplitTrees.PER_PIXEL) {
-            copy(input.sPlane, one.sPlane);
-            copy(input.tPlane, one.tPlane);
+            for (int k = 1; k <= varyings; k++) {
+                copy(input.planes[k], one.planes[k]);
+            }
         } else {
             double[] planes = trees.planes();
-            int po = SplitTrees.PLANE * piece;
-            one.sPlane.base = planes[po];
-            one.sPlane.dx = planes[po + 1];
-            one.sPlane.dy = planes[po + 2];
-            one.tPlane.base = planes[po + 3];
-            one.tPlane.dx = planes[po + 4];
-            one.tPlane.dy = planes[po + 5];
+            for (int k = 1, po = trees.planeStride() * piece; k <= varyings; k++, po += SplitTrees.PLANE) {
+                Plane p = one.planes[k];
+                p.base = planes[po];
+                p.dx = planes[po + 1];
+                p.dy = planes[po + 2];
+            }
         }
+        one.planeCount = input.planeCount;
         one.firstColumn = trees.firstColumns()[piece];
         one.fixedPointSafe = false;
         one.rowStart = y;

@@ -39,6 +39,7 @@ final class TreeFilteredFill {
         int[] st = descent.stackFor(nodes);
         int[] segs = descent.segments();
         double[] planes = trees.planes();
+        int ps = trees.planeStride();
         int[] firstColumns = trees.firstColumns();
         long[] steps = trees.fixedSteps();
         int[] selections = trees.selections();
@@ -124,7 +125,7 @@ final class TreeFilteredFill {
                             kt2 = mips.scaleT(level2) * FIXED_SCALE;
                         }
                         // As FilteredSpans.levelFixed fills this row of the piece: anchored at its first column.
-                        int po = SplitTrees.PLANE * piece;
+                        int po = ps * piece;
                         double sDx = planes[po + 1];
                         double tDx = planes[po + 4];
                         int fc = firstColumns[piece];

@@ -1,5 +1,7 @@
 package dev.trisect.raster;
 
+import dev.trisect.tessellate.VertexLayout;
+
 /**
  * One screen triangle set up for filling within a rectangle of the frame: what the span solver and
  * the pixel loops read. {@link #prepare} fills it from a triangle of a {@link ScreenTriangles}; the
@@ -30,13 +32,20 @@ final class TriangleSetup {
      */
     final long[] corners = new long[6];
     /**
-     * Attribute planes over pixel centres, from the unsnapped corners: {@code 1/w} (view-space
-     * units^-1), and the texel coordinates s and t (level-0 texels) — divided by w, that is s/w and
-     * t/w, when set up for a perspective fill.
+     * Attribute planes over pixel centres, from the unsnapped corners: {@code planes[0]} is {@code 1/w}
+     * (view-space units^-1), {@code planes[1 + k]} varying slot k of the triangles' {@link
+     * VertexLayout} — divided by w when set up for a perspective fill (s/w, not
+     * s: the pixel divides by the interpolated 1/w). The first {@link #planeCount} are set up.
      */
-    final Plane qPlane = new Plane();
-    final Plane sPlane = new Plane();
-    final Plane tPlane = new Plane();
+    final Plane[] planes = newPlanes();
+    /** How many of {@link #planes} the last setup fitted: 1 + the layout's varyings. */
+    int planeCount;
+    /** {@code planes[0]}: 1/w. */
+    final Plane qPlane = planes[0];
+    /** {@code planes[1]}: varying 0, texel s (level-0 texels), or s/w. */
+    final Plane sPlane = planes[1];
+    /** {@code planes[2]}: varying 1, texel t, or t/w. */
+    final Plane tPlane = planes[2];
     /** Whether the texel coordinates are small enough for 32.32 fixed point (|s|, |t| &lt; 2^30). */
     boolean fixedPointSafe;
 
@@ -96,7 +105,7 @@ final class TriangleSetup {
     }
 
     /**
-     * Sets up only the affine attribute planes of triangle {@code tri} ({@code s}, {@code t}; and
+     * Sets up only the affine attribute planes of triangle {@code tri} (its varyings, and
      * {@link #fixedPointSafe}), exactly as {@link #prepare} with {@code perspective} false sets them,
      * for fills that set up pieces in bulk ({@link SplitTrees}).
      *
@@ -121,7 +130,7 @@ final class TriangleSetup {
         double[] sc = triangles.screen();
         double[] at = triangles.attributes();
         int s = tri * ScreenTriangles.SCREEN_STRIDE;
-        int a = tri * ScreenTriangles.ATTRIBUTE_STRIDE;
+        int a = tri * triangles.attributeStride();
         double x0 = sc[s];
         double y0 = sc[s + 1];
         double ex1 = sc[s + 2 * i1] - x0;
@@ -142,32 +151,37 @@ final class TriangleSetup {
             det = ex1 * ey2 - ex2 * ey1;
         }
         double inv = 1.0 / det;
+        int cs = triangles.cornerStride();
         int c0 = a;
-        int c1 = a + 3 * i1;
-        int c2 = a + 3 * i2;
+        int c1 = a + cs * i1;
+        int c2 = a + cs * i2;
         double q0 = at[c0];
         double q1 = at[c1];
         double q2 = at[c2];
-        double s0 = at[c0 + 1];
-        double s1 = at[c1 + 1];
-        double s2 = at[c2 + 1];
-        double t0 = at[c0 + 2];
-        double t1 = at[c1 + 2];
-        double t2 = at[c2 + 2];
         double limit = FIXED_POINT_LIMIT;
-        fixedPointSafe = Math.abs(s0) < limit && Math.abs(s1) < limit && Math.abs(s2) < limit
-                && Math.abs(t0) < limit && Math.abs(t1) < limit && Math.abs(t2) < limit;
-        if (perspective) {
-            // Interpolate s/w and t/w; the pixel divides by the interpolated 1/w.
-            s0 *= q0;
-            s1 *= q1;
-            s2 *= q2;
-            t0 *= q0;
-            t1 *= q1;
-            t2 *= q2;
-        }
+        fixedPointSafe = Math.abs(at[c0 + 1]) < limit && Math.abs(at[c1 + 1]) < limit && Math.abs(at[c2 + 1]) < limit
+                && Math.abs(at[c0 + 2]) < limit && Math.abs(at[c1 + 2]) < limit && Math.abs(at[c2 + 2]) < limit;
         qPlane.fit(x0, y0, ex1, ey1, ex2, ey2, inv, q0, q1, q2);
-        sPlane.fit(x0, y0, ex1, ey1, ex2, ey2, inv, s0, s1, s2);
-        tPlane.fit(x0, y0, ex1, ey1, ex2, ey2, inv, t0, t1, t2);
+        for (int k = 1; k < cs; k++) {
+            double v0 = at[c0 + k];
+            double v1 = at[c1 + k];
+            double v2 = at[c2 + k];
+            if (perspective) {
+                // Interpolate v/w; the pixel divides by the interpolated 1/w.
+                v0 *= q0;
+                v1 *= q1;
+                v2 *= q2;
+            }
+            planes[k].fit(x0, y0, ex1, ey1, ex2, ey2, inv, v0, v1, v2);
+        }
+        planeCount = cs;
+    }
+
+    private static Plane[] newPlanes() {
+        Plane[] p = new Plane[1 + VertexLayout.MAX_VARYINGS];
+        for (int k = 0; k < p.length; k++) {
+            p[k] = new Plane();
+        }
+        return p;
     }
 }

@@ -1,7 +1,5 @@
 package dev.trisect.tessellate;
 
-import static dev.trisect.tessellate.VertexLayout.SCREEN_X;
-import static dev.trisect.tessellate.VertexLayout.SCREEN_Y;
 
 import java.util.Arrays;
 
@@ -142,7 +140,8 @@ public final class SplitTree {
 
     /**
      * A new node for the split of a piece along the line from cut point {@code m} to corner {@code r}
-     * (vertex offsets into {@code v}, {@link VertexLayout}) with p the split edge's other end beside m,
+     * (offsets into {@code v} of each vertex's screen x, followed by its screen y: {@link
+     * VertexLayout#screenX()}) with p the split edge's other end beside m,
      * referred to from {@code slot}; its children are referred to as they are decided.
      *
      * @return which child slot of the node takes the piece with corner p: {@code 2n} or {@code 2n + 1}
@@ -154,10 +153,10 @@ public final class SplitTree {
             lines = Arrays.copyOf(lines, lines.length * 2);
             rows = Arrays.copyOf(rows, rows.length * 2);
         }
-        double mx = v[m + SCREEN_X];
-        double my = v[m + SCREEN_Y];
-        double dy = v[r + SCREEN_Y] - my;
-        double k = dy == 0 ? -STEEPEST : Math.max(-STEEPEST, Math.min(STEEPEST, (v[r + SCREEN_X] - mx) / dy));
+        double mx = v[m];
+        double my = v[m + 1];
+        double dy = v[r + 1] - my;
+        double k = dy == 0 ? -STEEPEST : Math.max(-STEEPEST, Math.min(STEEPEST, (v[r] - mx) / dy));
         int o = LINE * n;
         // x = mx + k (y + 0.5 - my) on the row of centres y + 0.5, as k y + m + 0.5.
         lines[o] = k;
@@ -165,10 +164,10 @@ public final class SplitTree {
         refer(slot, n);
         // Which side of the line the piece with corner p lies on.
         // (For a horizontal line the left child is the one above it.)
-        int pSide = dy == 0 ? (v[p + SCREEN_Y] < my ? 0 : 1)
-                : v[p + SCREEN_X] - 0.5 < lines[o] * (v[p + SCREEN_Y] - 0.5) + lines[o + 1] ? 0 : 1;
-        double top = Math.min(my, v[r + SCREEN_Y]);
-        double bottom = Math.max(my, v[r + SCREEN_Y]);
+        int pSide = dy == 0 ? (v[p + 1] < my ? 0 : 1)
+                : v[p] - 0.5 < lines[o] * (v[p + 1] - 0.5) + lines[o + 1] ? 0 : 1;
+        double top = Math.min(my, v[r + 1]);
+        double bottom = Math.max(my, v[r + 1]);
         int ro = 3 * n;
         // Row y's centre is above top when y < ceil(top - 1/2), below bottom when y > bottom - 1/2;
         // more than END_MARGIN above or below likewise (see rows()). Rows above both ends
@@ -181,7 +180,7 @@ public final class SplitTree {
             rows[ro] = (int) Math.ceil(top - 0.5);
             rows[ro + 1] = rows[ro];
         }
-        rows[ro + 2] = v[p + SCREEN_Y] < my ? pSide : 1 - pSide;
+        rows[ro + 2] = v[p + 1] < my ? pSide : 1 - pSide;
         return 2 * n + pSide;
     }
 }

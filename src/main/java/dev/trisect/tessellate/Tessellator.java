@@ -2,10 +2,6 @@ package dev.trisect.tessellate;
 
 import dev.trisect.render.SplitPoint;
 import dev.trisect.render.TessellationSettings;
-import static dev.trisect.tessellate.VertexLayout.CLIP_STRIDE;
-import static dev.trisect.tessellate.VertexLayout.PROJECTED_STRIDE;
-import static dev.trisect.tessellate.VertexLayout.SCREEN_X;
-import static dev.trisect.tessellate.VertexLayout.SCREEN_Y;
 import static dev.trisect.tessellate.VertexLayout.W;
 import static dev.trisect.tessellate.VertexLayout.X;
 import static dev.trisect.tessellate.VertexLayout.Y;
@@ -48,8 +44,13 @@ public final class Tessellator {
      */
     private static final int PIECE = 10;
 
-    /** Vertices in {@link VertexLayout}, {@link VertexLayout#PROJECTED_STRIDE} doubles each. */
-    private double[] vertices = new double[PROJECTED_STRIDE * 256];
+    /** Vertices in the layout last set ({@link #layout}), its {@link VertexLayout#projectedStride()} doubles each. */
+    private double[] vertices = new double[VertexLayout.PROJECTED_STRIDE * 256];
+    /** The layout's clip stride, projected stride and screen offsets. */
+    private int clipStride = VertexLayout.CLIP_STRIDE;
+    private int stride = VertexLayout.PROJECTED_STRIDE;
+    private int screenX = VertexLayout.SCREEN_X;
+    private int screenY = VertexLayout.SCREEN_Y;
     private int vertexCount;
     private int[] stack = new int[PIECE * 64];
     /** The split tree of the last triangle split. */
@@ -89,6 +90,14 @@ public final class Tessellator {
         double px = settings.policy().threshold(settings);
         // The edge policy compares squared lengths, sparing a square root per edge.
         this.threshold = errorPolicy ? px : px * px;
+    }
+
+    /** Sets the layout of the vertices that follow ({@link VertexLayout#TEXTURED} until set). */
+    public void layout(VertexLayout vertexLayout) {
+        clipStride = vertexLayout.clipStride();
+        stride = vertexLayout.projectedStride();
+        screenX = vertexLayout.screenX();
+        screenY = vertexLayout.screenY();
     }
 
     /**
@@ -153,9 +162,9 @@ public final class Tessellator {
     }
 
     /**
-     * The vertices of the last triangle processed, in {@link VertexLayout} ({@link
-     * VertexLayout#PROJECTED_STRIDE} doubles each): its three corners, screen positions included, at
-     * offsets 0, {@code PROJECTED_STRIDE} and {@code 2 * PROJECTED_STRIDE}. Scratch: read it before the
+     * The vertices of the last triangle processed, in the {@link #layout} set ({@link
+     * VertexLayout#projectedStride()} doubles each): its three corners, screen positions included, at
+     * offsets 0, {@code projectedStride} and {@code 2 * projectedStride}. Scratch: read it before the
      * next {@link #process}.
      */
     public double[] vertices() {
@@ -170,8 +179,8 @@ public final class Tessellator {
     /**
      * Processes one triangle.
      *
-     * @param input  input vertices, {@link VertexLayout#CLIP_STRIDE} doubles each in {@link VertexLayout}
-     *               (clip x, y, z, w with w &gt; 0, texel s, t)
+     * @param input  input vertices, {@link VertexLayout#clipStride()} doubles each in the {@link #layout} set
+     *               (clip x, y, z, w with w &gt; 0, texel s, t, further varyings)
      * @param i0     offset of the first corner in {@code input}
      * @param i1     offset of the second corner
      * @param i2     offset of the third corner
@@ -327,7 +336,7 @@ public final class Tessellator {
             }
             int inner = tracking ? pe.add(m) : PieceEdges.OUTER;
             int half = lpq + 1;
-            int pSlot = tree.split(vertices, slot, m, vr, vp);
+            int pSlot = tree.split(vertices, slot, m + screenX, vr + screenX, vp + screenX);
             // The new inner edge m-r also gets level lpq + 1: every split then lowers the sum of
             // 2^(maxLevel - level) over a piece's edges, so splitting ends even without the piece cap.
             top = push(top, m, vq, vr, half, lqr, half, halfQ, eqr, inner, pSlot ^ 1);
@@ -345,19 +354,19 @@ public final class Tessellator {
     /** Whether the piece is a sliver ({@link Slivers#sliver}), by its corners' screen positions. */
     private boolean thin(int a, int b, int c) {
         double[] v = vertices;
-        return Slivers.sliver(v[a + SCREEN_X], v[a + SCREEN_Y], v[b + SCREEN_X], v[b + SCREEN_Y], v[c + SCREEN_X],
-                v[c + SCREEN_Y]);
+        return Slivers.sliver(v[a + screenX], v[a + screenY], v[b + screenX], v[b + screenY], v[c + screenX],
+                v[c + screenY]);
     }
 
     /** Whether the piece's screen bounding box misses the viewport entirely. */
     private boolean offScreen(int a, int b, int c) {
         double[] v = vertices;
-        double xa = v[a + SCREEN_X];
-        double xb = v[b + SCREEN_X];
-        double xc = v[c + SCREEN_X];
-        double ya = v[a + SCREEN_Y];
-        double yb = v[b + SCREEN_Y];
-        double yc = v[c + SCREEN_Y];
+        double xa = v[a + screenX];
+        double xb = v[b + screenX];
+        double xc = v[c + screenX];
+        double ya = v[a + screenY];
+        double yb = v[b + screenY];
+        double yc = v[c + screenY];
         return (xa < 0 && xb < 0 && xc < 0) || (ya < 0 && yb < 0 && yc < 0)
                 || (xa > width && xb > width && xc > width) || (ya > height && yb > height && yc > height);
     }
@@ -365,8 +374,8 @@ public final class Tessellator {
     /** Edge measure: squared screen length (edge policy) or the affine error bound in pixels. */
     private double measure(int a, int b) {
         double[] v = vertices;
-        double dx = v[a + SCREEN_X] - v[b + SCREEN_X];
-        double dy = v[a + SCREEN_Y] - v[b + SCREEN_Y];
+        double dx = v[a + screenX] - v[b + screenX];
+        double dy = v[a + screenY] - v[b + screenY];
         double lengthSquared = dx * dx + dy * dy;
         if (!errorPolicy) {
             return lengthSquared;
@@ -377,7 +386,7 @@ public final class Tessellator {
     private int load(double[] input, int offset) {
         int o = reserveVertex();
         double[] v = vertices;
-        System.arraycopy(input, offset, v, o, CLIP_STRIDE);
+        System.arraycopy(input, offset, v, o, clipStride);
         project(o);
         return o;
     }
@@ -407,7 +416,7 @@ public final class Tessellator {
             }
         }
         double sum = ka + kb;
-        for (int k = 0; k < CLIP_STRIDE; k++) {
+        for (int k = 0; k < clipStride; k++) {
             v[o + k] = (v[a + k] * ka + v[b + k] * kb) / sum;
         }
         project(o);
@@ -416,13 +425,13 @@ public final class Tessellator {
 
     private void project(int o) {
         double[] v = vertices;
-        v[o + SCREEN_X] = viewport.screenX(v[o + X], v[o + W]);
-        v[o + SCREEN_Y] = viewport.screenY(v[o + Y], v[o + W]);
+        v[o + screenX] = viewport.screenX(v[o + X], v[o + W]);
+        v[o + screenY] = viewport.screenY(v[o + Y], v[o + W]);
     }
 
     private int reserveVertex() {
-        int o = vertexCount * PROJECTED_STRIDE;
-        if (o + PROJECTED_STRIDE > vertices.length) {
+        int o = vertexCount * stride;
+        if (o + stride > vertices.length) {
             vertices = Arrays.copyOf(vertices, vertices.length * 2);
         }
         vertexCount++;

@@ -1,10 +1,22 @@
 package dev.trisect.tessellate;
 
 /**
- * The one vertex layout of the geometry stages: doubles per vertex in a primitive array, at these
- * offsets from the vertex's start. The clipper's vertices and the tessellator's input are
- * {@link #CLIP_STRIDE} doubles (clip space and texel coordinates); the tessellator's vertices, which a
- * {@link PieceSink} reads, are {@link #PROJECTED_STRIDE} doubles, the same followed by the screen position.
+ * The one description of a vertex in the geometry and pixel stages: doubles per vertex in a primitive
+ * array, clip-space position first, then the <em>varyings</em> (values interpolated across a
+ * triangle: slots 0 and 1 the texel coordinates s, t; any further slot is free, such as a lit colour's
+ * r, g, b), then, once projected, the screen position. Clip space and screen space are linear in
+ * each other per slot, so the clipper and the tessellator interpolate every slot alike without
+ * knowing what it holds; the raster stage carries the same slots on as planes ({@code
+ * raster.ScreenTriangles}, {@code raster.TriangleSetup}, {@code raster.SplitTrees}).
+ *
+ * <pre>
+ * clip vertex:       x y z w | v0 .. v(n-1)            {@link #clipStride()}      = 4 + n
+ * projected vertex:  x y z w | v0 .. v(n-1) | sx sy    {@link #projectedStride()} = 6 + n
+ * </pre>
+ *
+ * <p>{@link #TEXTURED} is the layout of a textured frame (the varyings s, t alone); its offsets are
+ * also the static constants below, {@link #CLIP_STRIDE}, {@link #SCREEN_X}, {@link #SCREEN_Y},
+ * {@link #PROJECTED_STRIDE}, for code that knows it works in that layout.
  */
 public final class VertexLayout {
     /** Clip-space x, y, z, w (OpenGL's clip coordinates; w is the view depth, &gt; 0 once clipped). */
@@ -12,17 +24,85 @@ public final class VertexLayout {
     public static final int Y = 1;
     public static final int Z = 2;
     public static final int W = 3;
-    /** Texel coordinates s = u * width, t = v * height of the material's texture, level-0 texels. */
-    public static final int S = 4;
-    public static final int T = 5;
-    /** Doubles per vertex in clip space with texel coordinates: x, y, z, w, s, t. */
+    /** Offset of varying slot 0: the varyings follow the clip-space position. */
+    public static final int FIRST_VARYING = 4;
+    /** Texel coordinates s = u * width, t = v * height of the material's texture, level-0 texels: varyings 0 and 1. */
+    public static final int S = FIRST_VARYING;
+    public static final int T = FIRST_VARYING + 1;
+    /** The varying slot of s; t is the next one. */
+    public static final int SLOT_S = 0;
+    /** The most varyings a layout may have. */
+    public static final int MAX_VARYINGS = 16;
+    /** The layout of a textured frame: the varyings s and t alone. */
+    public static final VertexLayout TEXTURED = new VertexLayout(2);
+    /** One instance per size, so that layouts compare by identity. */
+    private static final VertexLayout[] LAYOUTS = new VertexLayout[MAX_VARYINGS + 1];
+    /** {@link #TEXTURED}'s doubles per clip vertex: x, y, z, w, s, t. */
     public static final int CLIP_STRIDE = 6;
-    /** Screen position in pixels, x right and y down (see {@link dev.trisect.math.Viewport}). */
+    /** {@link #TEXTURED}'s screen position in pixels, x right and y down (see {@link dev.trisect.math.Viewport}). */
     public static final int SCREEN_X = 6;
     public static final int SCREEN_Y = 7;
-    /** Doubles per projected vertex: x, y, z, w, s, t, screen x, screen y. */
+    /** {@link #TEXTURED}'s doubles per projected vertex: x, y, z, w, s, t, screen x, screen y. */
     public static final int PROJECTED_STRIDE = 8;
 
-    private VertexLayout() {
+    private final int varyings;
+
+    static {
+        LAYOUTS[2] = TEXTURED;
+        for (int n = 3; n <= MAX_VARYINGS; n++) {
+            LAYOUTS[n] = new VertexLayout(n);
+        }
+    }
+
+    private VertexLayout(int varyings) {
+        this.varyings = varyings;
+    }
+
+    /**
+     * The layout with {@code varyings} slots, s and t first.
+     *
+     * @throws IllegalArgumentException unless 2 &lt;= varyings &lt;= {@link #MAX_VARYINGS}
+     */
+    public static VertexLayout of(int varyings) {
+        if (varyings < 2 || varyings > MAX_VARYINGS) {
+            throw new IllegalArgumentException("a vertex layout has 2 to " + MAX_VARYINGS
+                    + " varyings (s and t first), got " + varyings);
+        }
+        return LAYOUTS[varyings];
+    }
+
+    /** Values interpolated across a triangle per vertex, s and t included. */
+    public int varyings() {
+        return varyings;
+    }
+
+    /** Offset of varying {@code slot} in a vertex. */
+    public static int varying(int slot) {
+        return FIRST_VARYING + slot;
+    }
+
+    /** Doubles per clip vertex: x, y, z, w and the varyings. */
+    public int clipStride() {
+        return FIRST_VARYING + varyings;
+    }
+
+    /** Offset of the screen x of a projected vertex, pixels; screen y follows. */
+    public int screenX() {
+        return FIRST_VARYING + varyings;
+    }
+
+    /** Offset of the screen y of a projected vertex, pixels. */
+    public int screenY() {
+        return FIRST_VARYING + varyings + 1;
+    }
+
+    /** Doubles per projected vertex: a clip vertex followed by its screen x and y. */
+    public int projectedStride() {
+        return FIRST_VARYING + varyings + 2;
+    }
+
+    @Override
+    public String toString() {
+        return "VertexLayout[" + varyings + " varyings]";
     }
 }
