@@ -11,15 +11,8 @@ import dev.trisect.tessellate.VertexLayout;
  * thread at a time ({@link ChunkGeometry}, then {@link #bin}), read by any number afterwards.
  */
 final class Chunk {
-    /**
-     * Scratch that has been more than this many times larger than a frame needed, for
-     * {@link FrameRenderer#TRIM_FRAMES} frames in a row, shrinks to twice the need: memory taken by one
-     * extreme frame goes back to the collector within about a second, while steady frames allocate
-     * nothing.
-     */
-    static final int TRIM_FACTOR = 4;
-    /** Storage below this many triangles is never worth trimming. */
-    static final int TRIM_FLOOR = 16384;
+    /** Storage for at most this many triangles is never worth giving back. */
+    static final int TRIM_FLOOR = 2048;
 
     final ScreenTriangles out = new ScreenTriangles();
     /**
@@ -49,7 +42,7 @@ final class Chunk {
     /** Processor time the last attempt spent culling and clipping, and tessellating or projecting. */
     long clipNanos;
     long tessellateNanos;
-    private int oversizedFrames;
+    private final Retention retention = new Retention(TRIM_FLOOR);
 
     /** Empties the screen triangles and zeroes the counters, keeping the vertex layout. */
     void clear() {
@@ -91,16 +84,18 @@ final class Chunk {
         bins.build(n, bands);
     }
 
-    /** Gives back storage that has long been far larger than frames need (see {@link #TRIM_FACTOR}). */
+    /**
+     * Tells the retention policy what this frame needed (its screen triangles, or its input triangles
+     * when more) and gives back what has become far larger than that (see {@link Retention}).
+     */
     void trimIfOversized() {
-        int need = Math.max(out.count(), TRIM_FLOOR / TRIM_FACTOR);
-        boolean oversized = out.capacity() > TRIM_FLOOR && out.capacity() > TRIM_FACTOR * need;
-        oversizedFrames = oversized ? oversizedFrames + 1 : 0;
-        if (oversizedFrames >= FrameRenderer.TRIM_FRAMES) {
-            oversizedFrames = 0;
-            out.shrinkTo(2 * need);
-            trees.shrinkTo(2 * need);
-            bins.shrink(2 * need, Math.max(2 * bins.entries(), 2 * need));
+        ScreenTriangles inputs = trees.inputs();
+        long keep = retention.keep(Math.max(out.count(), inputs.count()), Math.max(out.capacity(), inputs.capacity()));
+        if (keep >= 0) {
+            int n = (int) keep;
+            out.shrinkTo(n);
+            trees.shrinkTo(n);
+            bins.shrink(n, Math.max(2 * bins.entries(), n));
         }
     }
 }

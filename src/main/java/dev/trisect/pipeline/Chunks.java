@@ -28,6 +28,8 @@ final class Chunks {
     private static final int MAX_CHUNKS = 64;
 
     private Chunk[] chunks = new Chunk[0];
+    /** How many chunks to keep: those beyond recent frames' counts go, with all they hold. */
+    private final Retention retention = new Retention(1);
 
     /** Chunks a mesh of {@code triangles} triangles is cut into. */
     static int count(int triangles) {
@@ -47,6 +49,23 @@ final class Chunks {
                 grown[i] = new Chunk();
             }
             chunks = grown;
+        }
+    }
+
+    /**
+     * After a frame that used chunks 0..used-1: empties the chunks it did not use, gives back what
+     * each holds beyond the policy's floor, and drops those beyond what recent frames used (see
+     * {@link Retention}), so that one frame of a huge mesh does not keep 64 chunks' storage. Call on
+     * one thread, after the frame's geometry.
+     */
+    void retain(int used) {
+        for (int c = used; c < chunks.length; c++) {
+            chunks[c].clear();
+            chunks[c].trimIfOversized();
+        }
+        long keep = retention.keep(used, chunks.length);
+        if (keep >= 0) {
+            chunks = Arrays.copyOf(chunks, (int) Math.max(keep, used));
         }
     }
 

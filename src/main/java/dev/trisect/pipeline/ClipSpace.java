@@ -11,15 +11,22 @@ final class ClipSpace {
     /** Below this many positions the transform runs on one thread: sharing it out costs more. */
     private static final int PARALLEL_POSITIONS = 65536;
 
+    /** Positions below which the arrays are never given back: 2 MiB of them. */
+    private static final int TRIM_FLOOR = 65536;
+
     private double[] clip = new double[0];
     private boolean[] invalid = new boolean[0];
+    private final Retention retention = new Retention(TRIM_FLOOR);
 
     /** Transforms the positions of every draw by its model-view-projection (object to clip space). */
     void transform(Draws draws, WorkerPool pool) {
         int total = draws.positionCount();
-        if (clip.length < 4 * total) {
-            clip = new double[4 * total];
-            invalid = new boolean[total];
+        long keep = retention.keep(total, invalid.length);
+        if (invalid.length < total || keep >= 0) {
+            // Grown to the need, or given back to twice the recent need (see Retention).
+            int size = Math.max(total, (int) keep);
+            clip = new double[4 * size];
+            invalid = new boolean[size];
         }
         double[] out = clip;
         boolean[] flags = invalid;
@@ -40,6 +47,11 @@ final class ClipSpace {
                 }
             });
         }
+    }
+
+    /** Positions the arrays hold room for. */
+    int capacity() {
+        return invalid.length;
     }
 
     /** Clip-space x, y, z, w of each frame position last transformed, 4 doubles each. */

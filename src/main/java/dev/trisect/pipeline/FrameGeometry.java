@@ -37,6 +37,11 @@ final class FrameGeometry {
         chunkGeometry = new ChunkGeometry(threads);
     }
 
+    /** The clip-space positions of the last {@link #run}. */
+    ClipSpace clipSpace() {
+        return clipSpace;
+    }
+
     /** The chunks the last {@link #run} filled. */
     Chunks chunks() {
         return chunks;
@@ -77,9 +82,11 @@ final class FrameGeometry {
         int budgetDepth = DepthCapSearch.fit(attempt, t.maxDepth(), limit);
         pool.run(chunkCount, (thread, c) -> {
             Chunk chunk = chunks.get(c);
-            chunk.bin(bands, height);
+            // Trimmed before binning: giving back the bands' storage empties them.
             chunk.trimIfOversized();
+            chunk.bin(bands, height);
         });
+        chunks.retain(chunkCount);
         return new Result(chunkCount, transformNanos, limit == Long.MAX_VALUE ? 0 : limit, budgetDepth);
     }
 }

@@ -39,10 +39,11 @@ public final class FrameRenderer implements AutoCloseable {
     /** Rows per band: small enough to balance threads, large enough to amortize per-band setup. */
     static final int BAND_ROWS = 16;
     /**
-     * Frames in a row that scratch must have been far larger than needed before it is given back
-     * (see {@link Chunk#TRIM_FACTOR}).
+     * Frames (render calls) in a row that working storage must have been far larger than they needed
+     * before it is given back (see {@link Retention}): the memory of one huge frame goes back after this
+     * many ordinary ones.
      */
-    public static final int TRIM_FRAMES = 60;
+    public static final int TRIM_FRAMES = Retention.FRAMES;
 
     private final WorkerPool pool;
     private final FrameGeometry geometry;
@@ -131,6 +132,7 @@ public final class FrameRenderer implements AutoCloseable {
         checkOpen();
         long start = System.nanoTime();
         drawn = null;
+        outlines.retain();
         FrameGeometry.Result g = geometry.run(draws, settings, frame.width(), frame.height(), pool);
         long geometryDone = System.nanoTime();
         BandPass.Result b = bands.draw(frame, geometry.chunks(), g.chunkCount(), draws.textures(), settings, outlines,
@@ -238,6 +240,16 @@ public final class FrameRenderer implements AutoCloseable {
     /** Triangles the chunks' screen-triangle storage holds room for, for tests of trimming. */
     long retainedTriangleCapacity() {
         return geometry.chunks().retainedTriangleCapacity();
+    }
+
+    /** Positions the clip-space arrays hold room for, for tests of trimming. */
+    long retainedPositionCapacity() {
+        return geometry.clipSpace().capacity();
+    }
+
+    /** Outline plans kept (one per chunk outlined lately), for tests of trimming. */
+    int retainedOutlinePlans() {
+        return outlines.plans();
     }
 
     /** Stops the renderer's threads; every later call throws {@link IllegalStateException}. */

@@ -37,6 +37,9 @@ final class Outlines {
     private final Lane[] lanes;
     private OutlinePlan[] plans = new OutlinePlan[0];
     private int count;
+    /** The most chunks a pass outlined since the last {@link #retain}. */
+    private int used;
+    private final Retention retention = new Retention(0);
     /** Preparations of the current pass that are done (or failed). */
     private final AtomicInteger prepared = new AtomicInteger();
     /** The chunks whose knots the pass ticks, with the knots' max error, or null for no ticks. */
@@ -62,8 +65,27 @@ final class Outlines {
             plans = grown;
         }
         count = chunks;
+        used = Math.max(used, chunks);
         prepared.set(0);
         tickChunks = null;
+    }
+
+    /**
+     * Closes one frame's account of the plans (the passes since the last call, none when the borders
+     * were off) and drops the plans, with all their storage, that recent frames did not use (see
+     * {@link Retention}). Call on one thread, before a frame's passes.
+     */
+    void retain() {
+        long keep = retention.keep(used, plans.length);
+        if (keep >= 0) {
+            plans = Arrays.copyOf(plans, (int) keep);
+        }
+        used = 0;
+    }
+
+    /** Plans kept, one per chunk outlined lately. */
+    int plans() {
+        return plans.length;
     }
 
     /**

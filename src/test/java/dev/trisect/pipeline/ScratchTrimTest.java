@@ -9,7 +9,12 @@ import dev.trisect.math.Viewport;
 import dev.trisect.render.Framebuffer;
 import dev.trisect.content.DemoScenes;
 import dev.trisect.content.SceneAsset;
+import dev.trisect.mesh.Mesh;
+import dev.trisect.mesh.Primitives;
+import dev.trisect.render.BorderStyle;
 import dev.trisect.render.TessellationSettings;
+import dev.trisect.texture.ProceduralTextures;
+import dev.trisect.texture.Texture;
 import org.junit.jupiter.api.Test;
 
 /** Memory taken by one extreme frame goes back once frames are ordinary again. */
@@ -43,6 +48,43 @@ class ScratchTrimTest {
                 r.render(scene.mesh(), scene.textureArray(), vp, normal, fb);
             }
             assertEquals(steady, r.retainedTriangleCapacity(), "steady frames neither grow nor shrink it");
+        }
+    }
+
+    /**
+     * A frame of a mesh large enough for every chunk, with its borders outlined, then only small frames:
+     * after {@link FrameRenderer#TRIM_FRAMES} of them every chunk beyond those in use is gone, the
+     * clip-space arrays too, and one frame later the outline plans (drawn after the render), whatever the single chunk left held.
+     */
+    @Test
+    void aLargeMeshsChunksPositionsAndOutlinesGoBackAfterAFewSmallFrames() {
+        Mesh large = Primitives.plane(20, 20, 300, 300);
+        Mesh box = Primitives.box(1, 1, 1);
+        Texture[] textures = {ProceduralTextures.uvGrid(64)};
+        Framebuffer fb = new Framebuffer(320, 200);
+        Mat4 vp = dev.trisect.scene.Camera.looking(new dev.trisect.math.Vec3(0, 3, 6), dev.trisect.math.Vec3.ZERO)
+                .viewProjection(new Viewport(320, 200));
+        RenderSettings normal = RenderSettings.defaults();
+        try (FrameRenderer r = new FrameRenderer(2)) {
+            r.render(box, textures, vp, normal, fb);
+            long boxTriangles = r.retainedTriangleCapacity();
+            r.render(large, textures, vp, normal, fb);
+            r.drawBorders(fb, BorderStyle.plain(), normal.tessellation());
+            assertTrue(r.retainedPositionCapacity() >= large.positionCount());
+            assertEquals(64, r.retainedOutlinePlans());
+            long afterLarge = r.retainedTriangleCapacity();
+            assertTrue(afterLarge >= large.triangleCount(), afterLarge + " triangles of room");
+            for (int i = 0; i < FrameRenderer.TRIM_FRAMES; i++) {
+                r.render(box, textures, vp, normal, fb);
+            }
+            assertTrue(r.retainedTriangleCapacity() <= Math.max(boxTriangles, Chunk.TRIM_FLOOR) * 2,
+                    "chunks keep room for " + r.retainedTriangleCapacity() + " triangles, " + boxTriangles
+                            + " before the large frame");
+            assertTrue(r.retainedPositionCapacity() < large.positionCount(),
+                    "clip space keeps room for " + r.retainedPositionCapacity() + " positions");
+            // drawBorders comes after its frame's render: its plans are counted with the next frame.
+            r.render(box, textures, vp, normal, fb);
+            assertEquals(0, r.retainedOutlinePlans(), "no frame outlined lately");
         }
     }
 }

@@ -19,7 +19,7 @@ class SplitTreesTrimTest {
         trees.clear();
         trees.addSingle(7);
         trees.addSingle(9);
-        // The least Chunk.trimIfOversized asks for: twice TRIM_FLOOR / TRIM_FACTOR.
+        // About what Chunk.trimIfOversized asks for after such a spike.
         trees.shrinkTo(8192);
         assertTrue(trees.refs().length <= 8192, "references kept for " + trees.refs().length + " groups");
         assertEquals(2, trees.count());
