@@ -79,9 +79,12 @@ final class ExportCommand implements Callable<Integer> {
                 camera.eye(), camera.target(), camera.up(), camera.fovY(), camera.near(), camera.far());
         List<Path> maps = new ArrayList<>();
         // The camera is printed even when the files fail: it is what was computed.
-        Results.deliver(common.out(), batch, b -> maps.addAll(ObjWriter.write(b, to, scene.mesh(), scene.textures())),
-                written -> written ? List.of(String.format("wrote %s (%s, %s: %s)", to,
-                        Counts.of(scene.mesh().triangleCount(), "triangle"), Counts.of(maps.size(), "material"), maps),
+        Results.deliver(common.out(), batch, b -> maps.addAll(ObjWriter.write(b, to, scene.mesh(), scene.textures(),
+                scene.lines())),
+                written -> written ? List.of(String.format("wrote %s (%s, %s%s: %s)", to,
+                        Counts.of(scene.mesh().triangleCount(), "triangle"),
+                        scene.lines().isEmpty() ? "" : Counts.of(scene.lines().segmentCount(), "line segment") + ", ",
+                        Counts.of(maps.size(), "material"), maps),
                         cameraLine) : List.of(cameraLine));
         return 0;
     }

@@ -73,6 +73,23 @@ final class FrameOptions {
                     + "000000 otherwise).")
     Integer background;
 
+    @Option(names = "--line-width", paramLabel = "PX", defaultValue = "1",
+            description = "Width of the OBJ's lines (l elements) in whole pixels, 1 to 255, as OpenGL's glLineWidth "
+                    + "(default: ${DEFAULT-VALUE}).")
+    int lineWidth;
+
+    /** The lines' width in pixels, checked. */
+    int lineWidth() {
+        if (lineWidth < 1 || lineWidth > MAX_LINE_WIDTH) {
+            throw InputException.usage("--line-width must be a whole number of pixels from 1 to " + MAX_LINE_WIDTH
+                    + ", got " + lineWidth);
+        }
+        return lineWidth;
+    }
+
+    /** Widest line accepted, pixels: llvmpipe's limit (GL_ALIASED_LINE_WIDTH_RANGE). */
+    static final int MAX_LINE_WIDTH = 255;
+
     /** The background colour, 0xRRGGBB: the one given, or the scene's own. */
     int background() {
         return background != null ? background : obj != null ? 0 : DemoScenes.background(scene);

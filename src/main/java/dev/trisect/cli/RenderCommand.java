@@ -4,6 +4,7 @@ import dev.trisect.content.SceneAsset;
 import dev.trisect.io.ImageFiles;
 import dev.trisect.io.OutputBatch;
 import dev.trisect.io.Pfm;
+import dev.trisect.pipeline.Draws;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.render.FrameStats;
 import dev.trisect.render.Framebuffer;
@@ -55,7 +56,7 @@ final class RenderCommand extends SceneCommand {
         fb.recordUv(uvOut != null);
         FrameStats s;
         try (FrameRenderer renderer = common.renderer()) {
-            s = renderer.render(scene.mesh(), scene.textureArray(), camera.viewProjection(frame.size.viewport()),
+            s = renderer.render(scene.draws(new Draws(), camera.viewProjection(frame.size.viewport()), frame.lineWidth()),
                     settings, fb);
         }
         Frames.noteSkipped(common, s);

@@ -1,6 +1,9 @@
 package dev.trisect.content;
 
+import dev.trisect.math.Mat4;
+import dev.trisect.mesh.Lines;
 import dev.trisect.mesh.Mesh;
+import dev.trisect.pipeline.Draws;
 import dev.trisect.scene.Camera;
 import dev.trisect.texture.Texture;
 import java.util.List;
@@ -17,9 +20,16 @@ import java.util.List;
  * @param source      the OBJ file it was read from, or null for a built-in scene
  * @param inputs      every file it was read from (the OBJ, the MTL files it names and read, and its
  *                    textures), absolute: what an output must not replace. Empty for a built-in scene.
+ * @param lines       line segments drawn after the triangles, world space ({@link Lines#EMPTY} for none)
  */
 public record SceneAsset(String name, String description, Mesh mesh, List<Texture> textures, Camera camera,
-                    java.nio.file.Path source, List<java.nio.file.Path> inputs) {
+                    java.nio.file.Path source, List<java.nio.file.Path> inputs, Lines lines) {
+
+    /** A scene without lines. */
+    public SceneAsset(String name, String description, Mesh mesh, List<Texture> textures, Camera camera,
+                      java.nio.file.Path source, List<java.nio.file.Path> inputs) {
+        this(name, description, mesh, textures, camera, source, inputs, Lines.EMPTY);
+    }
 
     /** A built-in scene (no source file). */
     public SceneAsset(String name, String description, Mesh mesh, List<Texture> textures, Camera camera) {
@@ -39,6 +49,34 @@ public record SceneAsset(String name, String description, Mesh mesh, List<Textur
             throw new IllegalArgumentException(name + ": " + mesh.materialCount() + " materials but "
                     + textures.size() + " textures");
         }
+    }
+
+    /**
+     * Sets {@code draws} to this scene seen through {@code viewProjection}: its mesh, then its lines (if
+     * any) {@code lineWidth} pixels wide.
+     *
+     * @param draws          cleared and filled
+     * @param viewProjection world space to clip space
+     * @param lineWidth      pixels, at least 1
+     * @return {@code draws}
+     */
+    public Draws draws(Draws draws, Mat4 viewProjection, int lineWidth) {
+        draws.clear();
+        draws.add(mesh, textureArray(), viewProjection);
+        if (!lines.isEmpty()) {
+            draws.addLines(lines, viewProjection, lineWidth);
+        }
+        return draws;
+    }
+
+    /**
+     * This scene with {@code lines} in place of its own.
+     *
+     * @param lines the segments, world space
+     * @return the scene with those lines
+     */
+    public SceneAsset withLines(Lines lines) {
+        return new SceneAsset(name, description, mesh, textures, camera, source, inputs, lines);
     }
 
     /** The textures as the array the renderer takes, indexed by material. */

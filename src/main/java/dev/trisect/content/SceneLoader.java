@@ -40,10 +40,13 @@ public final class SceneLoader {
      */
     public static SceneAsset load(Path obj, Path texture, Consumer<String> notes, boolean placeholders) {
         Mesh mesh;
+        dev.trisect.mesh.Lines lines;
         List<Texture> textures = new ArrayList<>();
         List<Path> inputs = new ArrayList<>(List.of(obj.toAbsolutePath()));
         if (texture != null) {
-            mesh = ObjReader.read(obj, false).mesh();
+            ObjModel model = ObjReader.read(obj, false);
+            mesh = model.mesh();
+            lines = model.lines();
             Texture t = TextureReader.read(texture);
             for (int i = 0; i < mesh.materialCount(); i++) {
                 textures.add(t);
@@ -53,6 +56,7 @@ public final class SceneLoader {
             ObjModel model = ObjReader.read(obj, true);
             SceneObject object = SceneObject.load(model, String.valueOf(obj.getFileName()), notes, placeholders);
             mesh = object.mesh();
+            lines = model.lines();
             for (Material m : object.materials()) {
                 textures.add(m.texture());
             }
@@ -60,7 +64,7 @@ public final class SceneLoader {
             model.materialTextures().stream().filter(Objects::nonNull).distinct().forEach(inputs::add);
         }
         return new SceneAsset(String.valueOf(obj.getFileName()), "OBJ file " + obj, mesh, textures, frame(mesh),
-                obj.toAbsolutePath(), inputs);
+                obj.toAbsolutePath(), inputs, lines);
     }
 
     /**

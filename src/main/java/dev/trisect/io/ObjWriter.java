@@ -1,5 +1,6 @@
 package dev.trisect.io;
 
+import dev.trisect.mesh.Lines;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.texture.Texture;
 import java.io.BufferedWriter;
@@ -16,6 +17,9 @@ import java.util.List;
  * Triangles are written in order, so triangle indices are preserved, each corner as {@code v},
  * {@code v/vt}, {@code v/vt/vn} or {@code v//vn} after what it has; the mesh's normals as {@code vn}
  * (a corner without one is written without, and a reader takes the face normal there, as Trisect does).
+ * Lines, if any, follow as {@code l} polylines (consecutive segments of one colour sharing an end
+ * joined), in order, their points after the mesh's positions, each colour a material
+ * {@code line-RRGGBB} with that {@code Kd} (reading the files back gives the same segments and colours).
  */
 public final class ObjWriter {
     private ObjWriter() {
@@ -42,6 +46,15 @@ public final class ObjWriter {
      * is committed.
      */
     public static List<Path> write(OutputBatch batch, Path obj, Mesh mesh, List<Texture> textures) {
+        return write(batch, obj, mesh, textures, Lines.EMPTY);
+    }
+
+    /**
+     * As {@link #write(OutputBatch, Path, Mesh, List)}, with lines after the triangles.
+     *
+     * @param lines the segments, in the mesh's space
+     */
+    public static List<Path> write(OutputBatch batch, Path obj, Mesh mesh, List<Texture> textures, Lines lines) {
         List<Path> files = files(obj, mesh);
         Path mtl = files.get(1);
         Path[] maps = files.subList(2, files.size()).toArray(Path[]::new);
@@ -52,6 +65,14 @@ public final class ObjWriter {
         writeText(batch, mtl, w -> {
             for (int m = 0; m < maps.length; m++) {
                 w.write("newmtl " + mesh.materialNames().get(m) + "\nmap_Kd " + maps[m].getFileName() + "\n");
+            }
+            java.util.Set<Integer> colours = new java.util.LinkedHashSet<>();
+            for (int c : lines.colours()) {
+                if (colours.add(c)) {
+                    // k/255 in floats reads back to the same byte: round(255 * k) == c's channel.
+                    w.write("newmtl " + lineMaterial(mesh, c) + "\nKd " + (c >> 16 & 255) / 255f + " "
+                            + (c >> 8 & 255) / 255f + " " + (c & 255) / 255f + "\n");
+                }
             }
         });
         writeText(batch, obj, w -> {
@@ -95,8 +116,47 @@ public final class ObjWriter {
                 }
                 w.write(line.append('\n').toString());
             }
+            writeLines(w, mesh, lines);
         });
         return List.of(maps);
+    }
+
+    /** The lines' points after the mesh's positions, then their segments as polylines. */
+    private static void writeLines(Writer w, Mesh mesh, Lines lines) throws IOException {
+        if (lines.isEmpty()) {
+            return;
+        }
+        float[] p = lines.points();
+        for (int i = 0; i < p.length; i += 3) {
+            w.write("v " + p[i] + " " + p[i + 1] + " " + p[i + 2] + "\n");
+        }
+        int base = mesh.positionCount() + 1;
+        int[] ends = lines.segments();
+        int[] colours = lines.colours();
+        int current = -1;
+        StringBuilder line = new StringBuilder(64);
+        for (int s = 0; s < colours.length; s++) {
+            boolean joined = s > 0 && colours[s] == colours[s - 1] && ends[2 * s] == ends[2 * s - 1];
+            if (!joined) {
+                if (line.length() > 0) {
+                    w.write(line.append('\n').toString());
+                    line.setLength(0);
+                }
+                if (colours[s] != current) {
+                    current = colours[s];
+                    w.write("usemtl " + lineMaterial(mesh, current) + "\n");
+                }
+                line.append("l ").append(ends[2 * s] + base);
+            }
+            line.append(' ').append(ends[2 * s + 1] + base);
+        }
+        w.write(line.append('\n').toString());
+    }
+
+    /** The material of lines of colour {@code rgb}: {@code line-RRGGBB}, unless the mesh has that name. */
+    private static String lineMaterial(Mesh mesh, int rgb) {
+        String name = String.format("line-%06X", rgb);
+        return mesh.materialNames().contains(name) ? "trisect-" + name : name;
     }
 
     /**

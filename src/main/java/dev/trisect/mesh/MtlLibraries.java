@@ -28,6 +28,8 @@ final class MtlLibraries {
     private final Map<String, String> textureSources = new HashMap<>();
     /** Each material's map_Kd {@code -s} and {@code -o}: {su, sv, ou, ov}; absent for none. */
     private final Map<String, float[]> uvTransforms = new HashMap<>();
+    /** Each material's {@code Kd} as 0xRRGGBB; absent for none. */
+    private final Map<String, Integer> diffuse = new HashMap<>();
     /** Absolute and normalized, in the order the OBJ names them. */
     private final Set<Path> librariesRead = new LinkedHashSet<>();
 
@@ -44,6 +46,14 @@ final class MtlLibraries {
     /** Where the texture of {@code material} was given, as {@code mtl-file:line}, or null. */
     String source(String material) {
         return textureSources.get(material);
+    }
+
+    /**
+     * The diffuse colour ({@code Kd}) of {@code material} as 0xRRGGBB, each channel
+     * {@code round(255 * clamp(k, 0, 1))}; white when no library read gives it one.
+     */
+    int diffuse(String material) {
+        return diffuse.getOrDefault(material, 0xFFFFFF);
     }
 
     /** The libraries read, absolute and normalized, in the order the OBJ named them. */
@@ -102,13 +112,46 @@ final class MtlLibraries {
                 textures.remove(material);
                 textureSources.remove(material);
                 uvTransforms.remove(material);
+                diffuse.remove(material);
             } else if (mtlLines.is(0, "map_Kd")) {
                 if (material == null) {
                     throw mtlLines.error("map_Kd before any newmtl");
                 }
                 mapKd(mtlLines, mtl, material);
+            } else if (mtlLines.is(0, "Kd")) {
+                if (material == null) {
+                    throw mtlLines.error("Kd before any newmtl");
+                }
+                diffuse.put(material, kd(mtlLines));
             }
         }
+    }
+
+    /**
+     * {@code Kd r [g b]}: the MTL specification's RGB form (g and b default to r). The {@code spectral}
+     * and {@code xyz} forms are refused rather than misread.
+     */
+    private static int kd(LineScanner mtlLines) {
+        int n = mtlLines.count() - 1;
+        if (n != 1 && n != 3) {
+            throw mtlLines.error("Kd needs r g b (or one grey level), got " + n + (n == 1 ? " value" : " values"));
+        }
+        int rgb = 0;
+        for (int i = 1; i <= 3; i++) {
+            String text = mtlLines.text(n == 1 ? 1 : i);
+            float k;
+            try {
+                k = Float.parseFloat(text);
+            } catch (NumberFormatException e) {
+                throw mtlLines.error("Kd: malformed number " + LineScanner.quote(text)
+                        + " (only the r g b form is supported)");
+            }
+            if (!Float.isFinite(k)) {
+                throw mtlLines.error("Kd needs finite numbers");
+            }
+            rgb = rgb << 8 | Math.round(255 * Math.max(0f, Math.min(1f, k)));
+        }
+        return rgb;
     }
 
     /**

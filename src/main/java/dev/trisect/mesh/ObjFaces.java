@@ -64,6 +64,25 @@ final class ObjFaces {
         }
     }
 
+    /**
+     * Reads the {@code l} statement on the current line (a polyline, corners {@code v} or {@code v/vt})
+     * into segments between consecutive corners, of the current material.
+     */
+    void line() {
+        int corners = lines.count() - 1;
+        if (corners < 2) {
+            throw lines.error("line has " + corners + (corners == 1 ? " point" : " points") + "; needs at least 2");
+        }
+        int previous = 0;
+        for (int i = 1; i <= corners; i++) {
+            corner(i);
+            if (i >= 2) {
+                mesh.segment(previous, cornerPosition);
+            }
+            previous = cornerPosition;
+        }
+    }
+
     /** Parses corner token {@code i} into {@link #cornerPosition}, {@link #cornerUv} and {@link #cornerNormal}. */
     private void corner(int i) {
         int start = lines.start(i);

@@ -34,6 +34,10 @@ final class ObjMeshArrays {
     private int[] cornerNormals = new int[3 * 256];
     private int[] triangleMaterials = new int[256];
     private int triangleCount;
+    /** The {@code l} elements' segments: two 0-based position indices each, and the material of each (-1 for none). */
+    private int[] segments = new int[0];
+    private int[] segmentMaterials = new int[0];
+    private int segmentCount;
 
     private final List<String> materialNames = new ArrayList<>();
     private final Map<String, Integer> materialIndex = new HashMap<>();
@@ -127,6 +131,32 @@ final class ObjMeshArrays {
         cornerNormals[c + 1] = n1;
         cornerNormals[c + 2] = n2;
         triangleMaterials[triangleCount++] = currentMaterial;
+    }
+
+    /** Appends a segment of an {@code l} element, of the current material (or none): 0-based position indices. */
+    void segment(int p0, int p1) {
+        segmentMaterials = room(segmentMaterials, segmentCount + 1L);
+        segments = room(segments, 2L * segmentCount + 2);
+        segments[2 * segmentCount] = p0;
+        segments[2 * segmentCount + 1] = p1;
+        segmentMaterials[segmentCount++] = currentMaterial;
+    }
+
+    int segmentCount() {
+        return segmentCount;
+    }
+
+    /**
+     * The segments read, sharing the mesh's positions, each coloured by its material's {@code Kd}
+     * ({@code colours.applyAsInt(name)}), white where it has none (as OpenGL's current colour starts).
+     */
+    Lines toLines(float[] meshPositions, java.util.function.ToIntFunction<String> colours) {
+        int[] rgb = new int[segmentCount];
+        for (int s = 0; s < segmentCount; s++) {
+            int m = segmentMaterials[s];
+            rgb[s] = m < 0 ? 0xFFFFFF : colours.applyAsInt(materialNames.get(m));
+        }
+        return segmentCount == 0 ? Lines.EMPTY : new Lines(meshPositions, Arrays.copyOf(segments, 2 * segmentCount), rgb);
     }
 
     /**

@@ -19,9 +19,11 @@ import java.util.Objects;
  *                         {@code mtl-file:line} for messages, or null where there is none. Unmodifiable.
  * @param materialLibraries the MTL files read for it ({@code mtllib}), absolute and normalized, in
  *                         the order the OBJ names them; empty when none was read. Unmodifiable.
+ * @param lines            the {@code l} elements, in the mesh's object space, each segment coloured by
+ *                         its material's {@code Kd} (white without one); {@link Lines#EMPTY} for none
  */
 public record ObjModel(Mesh mesh, List<Path> materialTextures, List<String> textureSources,
-                       List<Path> materialLibraries) {
+                       List<Path> materialLibraries, Lines lines) {
 
     /**
      * Checks that there is one entry per material in each list and keeps unmodifiable copies.
@@ -30,10 +32,12 @@ public record ObjModel(Mesh mesh, List<Path> materialTextures, List<String> text
      * @param materialTextures  each material's texture file, or null
      * @param textureSources    where each material's texture was named, or null
      * @param materialLibraries the MTL files read
+     * @param lines             the {@code l} elements
      * @throws IllegalArgumentException when a list's length is not the mesh's material count
      */
     public ObjModel {
         Objects.requireNonNull(mesh, "mesh");
+        Objects.requireNonNull(lines, "lines");
         materialLibraries = List.copyOf(materialLibraries);
         // List.copyOf rejects nulls, which mean "no texture" here.
         materialTextures = Collections.unmodifiableList(new ArrayList<>(materialTextures));
@@ -42,6 +46,19 @@ public record ObjModel(Mesh mesh, List<Path> materialTextures, List<String> text
             throw new IllegalArgumentException(materialTextures.size() + " material textures and "
                     + textureSources.size() + " sources for " + mesh.materialCount() + " materials");
         }
+    }
+
+    /**
+     * A model without lines.
+     *
+     * @param mesh              the triangles
+     * @param materialTextures  each material's texture file, or null
+     * @param textureSources    where each material's texture was named, or null
+     * @param materialLibraries the MTL files read
+     */
+    public ObjModel(Mesh mesh, List<Path> materialTextures, List<String> textureSources,
+                    List<Path> materialLibraries) {
+        this(mesh, materialTextures, textureSources, materialLibraries, Lines.EMPTY);
     }
 
     /**

@@ -12,8 +12,10 @@ import java.util.List;
  * <p>What is read: {@code v x y z [w]} (object-space positions in the file's units; w and any further
  * numbers, such as vertex colours, are checked but not used), {@code vt u [v [w]]} (v defaults to 0),
  * {@code vn x y z} (object-space normals, kept as written), {@code f} with corners {@code v},
- * {@code v/vt}, {@code v/vt/vn} or {@code v//vn}, {@code usemtl} and {@code mtllib}. Everything else ({@code o},
- * {@code g}, {@code s}, {@code l}, {@code p}, unknown statements, comments) is skipped.
+ * {@code v/vt}, {@code v/vt/vn} or {@code v//vn}, {@code l} (polylines, corners {@code v} or
+ * {@code v/vt}; each segment coloured by its material's {@code Kd}, white without one), {@code usemtl}
+ * and {@code mtllib}. Everything else ({@code o}, {@code g}, {@code s}, {@code p}, unknown statements,
+ * comments) is skipped.
  *
  * <p>Numbers follow {@link Float#parseFloat}, plus C's {@code nan}, {@code inf} and {@code infinity}
  * in any case; NaN and infinite coordinates are kept (the renderer skips such triangles). Indices
@@ -80,6 +82,8 @@ public final class ObjReader {
                 triple(ObjMeshArrays.VN, "normal");
             } else if (lines.is(0, "f")) {
                 faces.face();
+            } else if (lines.is(0, "l")) {
+                faces.line();
             } else if (lines.is(0, "usemtl")) {
                 String name = lines.rest(1);
                 if (name.isEmpty()) {
@@ -95,8 +99,8 @@ public final class ObjReader {
                 }
             }
         }
-        if (mesh.triangleCount() == 0) {
-            throw new InputException(lines.label() + ": no faces");
+        if (mesh.triangleCount() == 0 && mesh.segmentCount() == 0) {
+            throw new InputException(lines.label() + ": no faces or lines");
         }
         faces.checkForwardIndices();
         mesh.applyUvTransforms(libraries);
@@ -107,7 +111,8 @@ public final class ObjReader {
             materialTextures.add(libraries.texture(name));
             sources.add(libraries.source(name));
         }
-        return new ObjModel(built, materialTextures, sources, libraries.files());
+        return new ObjModel(built, materialTextures, sources, libraries.files(),
+                mesh.toLines(built.positions(), libraries::diffuse));
     }
 
     /** A {@code v} ({@link ObjMeshArrays#V}) or {@code vn} ({@link ObjMeshArrays#VN}): x y z, then any numbers. */

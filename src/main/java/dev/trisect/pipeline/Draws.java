@@ -1,6 +1,7 @@
 package dev.trisect.pipeline;
 
 import dev.trisect.math.Mat4;
+import dev.trisect.mesh.Lines;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.texture.Texture;
 import java.util.Arrays;
@@ -16,6 +17,9 @@ import java.util.Objects;
  * likewise its positions and materials follow those of the draws before it, so that the stages
  * after the transform see one list of triangles, positions and textures. One draw is exactly the
  * single-mesh frame: every base is 0.
+ *
+ * <p>Lines ({@link #addLines}) are a list of their own, drawn in their order after every mesh's
+ * triangles (see {@link LinePass}).
  */
 public final class Draws {
     private Mesh[] meshes = new Mesh[4];
@@ -27,9 +31,18 @@ public final class Draws {
     /** The textures of every draw's materials, concatenated: indexed by frame material. */
     private Texture[] textures = new Texture[4];
     private int count;
+    private Lines[] lines = new Lines[2];
+    private Mat4[] lineTransforms = new Mat4[2];
+    private int[] lineWidths = new int[2];
+    private int lineCount;
+    private long segmentCount;
 
     /** Removes every draw, keeping the storage. */
     public void clear() {
+        Arrays.fill(lines, 0, lineCount, null);
+        Arrays.fill(lineTransforms, 0, lineCount, null);
+        lineCount = 0;
+        segmentCount = 0;
         Arrays.fill(meshes, 0, count, null);
         Arrays.fill(transforms, 0, count, null);
         Arrays.fill(textures, 0, firstMaterial[count], null);
@@ -84,6 +97,56 @@ public final class Draws {
         firstPosition[count + 1] = (int) positions;
         firstMaterial[count + 1] = m0 + materials;
         count++;
+    }
+
+    /**
+     * Adds lines to draw after every mesh's triangles and the lines added before.
+     *
+     * @param lines               the segments, object space
+     * @param modelViewProjection object space to clip space, as OpenGL
+     * @param width               width in whole pixels, at least 1
+     * @throws IllegalArgumentException when the width is below 1
+     */
+    public void addLines(Lines lines, Mat4 modelViewProjection, int width) {
+        Objects.requireNonNull(lines, "lines is null");
+        Objects.requireNonNull(modelViewProjection, "model-view-projection matrix is null");
+        if (width < 1) {
+            throw new IllegalArgumentException("line width must be at least 1 pixel, got " + width);
+        }
+        if (lineCount == this.lines.length) {
+            this.lines = Arrays.copyOf(this.lines, 2 * lineCount);
+            lineTransforms = Arrays.copyOf(lineTransforms, 2 * lineCount);
+            lineWidths = Arrays.copyOf(lineWidths, 2 * lineCount);
+        }
+        this.lines[lineCount] = lines;
+        lineTransforms[lineCount] = modelViewProjection;
+        lineWidths[lineCount++] = width;
+        segmentCount += lines.segmentCount();
+    }
+
+    /** Number of line draws. */
+    public int lineDrawCount() {
+        return lineCount;
+    }
+
+    /** The lines of line draw {@code i}. */
+    public Lines lines(int i) {
+        return lines[i];
+    }
+
+    /** The model-view-projection of line draw {@code i}. */
+    public Mat4 lineTransform(int i) {
+        return lineTransforms[i];
+    }
+
+    /** The width of line draw {@code i}, pixels. */
+    public int lineWidth(int i) {
+        return lineWidths[i];
+    }
+
+    /** Segments of all line draws. */
+    public long segmentCount() {
+        return segmentCount;
     }
 
     /** Number of draws. */

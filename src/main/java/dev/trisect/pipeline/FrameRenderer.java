@@ -49,6 +49,7 @@ public final class FrameRenderer implements AutoCloseable {
     private final FrameGeometry geometry;
     private final BandPass bands;
     private final Outlines outlines;
+    private final LinePass lines;
     /**
      * The geometry of the frame last drawn by {@link #render}, which {@link #drawBorders} and
      * {@link #pieceAt} read; null before the first frame, after {@link #coverage} and after a failure.
@@ -86,6 +87,7 @@ public final class FrameRenderer implements AutoCloseable {
         this.geometry = new FrameGeometry(threads);
         this.bands = new BandPass(threads);
         this.outlines = new Outlines(threads);
+        this.lines = new LinePass(threads);
     }
 
     /**
@@ -123,7 +125,8 @@ public final class FrameRenderer implements AutoCloseable {
     /**
      * Draws every draw into {@code frame}, one depth buffer for all, after clearing it: each mesh's
      * positions go through that draw's own model-view-projection, so moving one object never touches
-     * another's data. Triangles are numbered across the draws (see {@link Draws}) in the UV output
+     * another's data. The draws' lines come after every triangle (and, with the borders on, after the
+     * overlay), depth-tested against them ({@link LinePass}); they leave the UV output as it is. Triangles are numbered across the draws (see {@link Draws}) in the UV output
      * and in {@link #pieceAt}.
      *
      * @return what the frame did ({@code trianglesIn} counts every draw's triangles)
@@ -137,6 +140,7 @@ public final class FrameRenderer implements AutoCloseable {
         long geometryDone = System.nanoTime();
         BandPass.Result b = bands.draw(frame, geometry.chunks(), g.chunkCount(), draws.textures(), settings, outlines,
                 pool);
+        lines.draw(draws, frame, pool);
         long end = System.nanoTime();
         drawn = g;
         drawnSpanError = settings.mode().knots() ? settings.knotError() : 0;

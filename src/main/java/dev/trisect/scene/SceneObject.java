@@ -210,6 +210,11 @@ public final class SceneObject extends Node {
         Map<Path, Material> loaded = new HashMap<>();
         Material grid = null;
         List<String> untextured = new ArrayList<>();
+        // A material only lines use (OBJ l elements take its Kd) needs no texture: no note for it.
+        boolean[] filled = new boolean[mesh.materialCount()];
+        for (int m : mesh.triangleMaterials()) {
+            filled[m] = true;
+        }
         for (int i = 0; i < mesh.materialCount(); i++) {
             Path map = model.materialTextures().get(i);
             if (map == null) {
@@ -217,7 +222,9 @@ public final class SceneObject extends Node {
                     grid = Material.of(ProceduralTextures.uvGrid(512));
                 }
                 materials.add(grid);
-                untextured.add(mesh.materialNames().get(i));
+                if (filled[i]) {
+                    untextured.add(mesh.materialNames().get(i));
+                }
             } else {
                 String source = model.textureSources().get(i);
                 materials.add(loaded.computeIfAbsent(map, file -> {

@@ -422,9 +422,9 @@ class ObjReaderTest {
                 "scene.obj:1: malformed number '" + "9".repeat(30) + "x" + "' in vertex"),
             Arguments.of("v 0 0 " + "7".repeat(50) + "x\n",
                 "scene.obj:1: malformed number '" + "7".repeat(40) + "...' in vertex"),
-            Arguments.of("", "scene.obj: no faces"),
-            Arguments.of("# nothing\n\n", "scene.obj: no faces"),
-            Arguments.of(TRIANGLE_VERTICES + "vt 0 0\n", "scene.obj: no faces"));
+            Arguments.of("", "scene.obj: no faces or lines"),
+            Arguments.of("# nothing\n\n", "scene.obj: no faces or lines"),
+            Arguments.of(TRIANGLE_VERTICES + "vt 0 0\n", "scene.obj: no faces or lines"));
     }
 
     @ParameterizedTest

@@ -1,0 +1,94 @@
+package dev.trisect.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trisect.texture.Texture;
+import dev.trisect.texture.TextureReader;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+
+/** {@code render --obj} with {@code l} elements and {@code --line-width}. */
+class LinesCommandTest {
+    @TempDir
+    Path dir;
+
+    private Path obj() throws IOException {
+        Files.writeString(dir.resolve("l.mtl"), "newmtl ink\nKd 0 1 0\n");
+        return Files.writeString(dir.resolve("l.obj"),
+                "mtllib l.mtl\nv -1 0 0\nv 1 0 0\nv 0 1 0\nusemtl ink\nl 1 2 3\n");
+    }
+
+    private int green(Path png) {
+        Texture t = TextureReader.read(png);
+        int n = 0;
+        for (int c : t.argb()) {
+            n += c == 0xFF00FF00 ? 1 : 0;
+        }
+        return n;
+    }
+
+    @Test
+    void theObjLinesAreDrawnInTheirKdAndWiderWithLineWidth() throws IOException {
+        Path obj = obj();
+        Path thin = dir.resolve("thin.png");
+        Path wide = dir.resolve("wide.png");
+        String[] camera = {"--eye", "0,0.5,3", "--target", "0,0.5,0", "--size", "160x120"};
+        CliRun r = CliRun.of(concat(new String[] {"render", "--obj", obj.toString(), "--out", thin.toString()}, camera));
+        assertEquals(0, r.status(), r.err());
+        CliRun r3 = CliRun.of(concat(new String[] {"render", "--obj", obj.toString(), "--line-width", "3",
+            "--out", wide.toString()}, camera));
+        assertEquals(0, r3.status(), r3.err());
+        int one = green(thin);
+        int three = green(wide);
+        assertTrue(one > 100, "drawn: " + one);
+        assertTrue(three > 2.5 * one && three < 3.5 * one, one + " pixels at width 1, " + three + " at width 3");
+    }
+
+    @Test
+    void exportWritesTheLinesSoThatReadingThemBackGivesTheSameSegmentsAndColours() throws IOException {
+        Files.writeString(dir.resolve("c.mtl"), "newmtl a\nKd 0.2 0.4 0.6\nnewmtl b\nKd 1 0.5 0\n");
+        Path obj = Files.writeString(dir.resolve("c.obj"), "mtllib c.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                + "vt 0 0\nf 1/1 2/1 3/1\nusemtl a\nl 1 2 3 4\nl 4 1\nusemtl b\nl 2 4\nl 4 3\n");
+        Path out = dir.resolve("out/x.obj");
+        CliRun r = CliRun.of("export", "--obj", obj.toString(), "--to", out.toString());
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.out().contains("6 line segments"), r.out());
+        dev.trisect.mesh.ObjModel before = dev.trisect.mesh.ObjReader.read(obj, true);
+        dev.trisect.mesh.ObjModel after = dev.trisect.mesh.ObjReader.read(out, true);
+        dev.trisect.mesh.Lines a = before.lines();
+        dev.trisect.mesh.Lines b = after.lines();
+        assertEquals(a.segmentCount(), b.segmentCount());
+        org.junit.jupiter.api.Assertions.assertArrayEquals(a.colours(), b.colours());
+        for (int s = 0; s < a.segmentCount(); s++) {
+            for (int end = 0; end < 2; end++) {
+                for (int k = 0; k < 3; k++) {
+                    assertEquals(a.points()[3 * a.segments()[2 * s + end] + k], b.points()[3 * b.segments()[2 * s + end] + k]);
+                }
+            }
+        }
+        assertEquals(before.mesh().triangleCount(), after.mesh().triangleCount());
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"0", "256", "-1"})
+    void aLineWidthOutOfRangeIsAUsageError(String width) throws IOException {
+        CliRun r = CliRun.of("render", "--obj", obj().toString(), "--line-width", width, "--out",
+                dir.resolve("x.png").toString());
+        assertEquals(2, r.status(), r.err());
+        assertTrue(r.err().contains("--line-width must be a whole number of pixels from 1 to 255, got " + width),
+                r.err());
+        assertTrue(!Files.exists(dir.resolve("x.png")));
+    }
+
+    private static String[] concat(String[] a, String[] b) {
+        String[] out = java.util.Arrays.copyOf(a, a.length + b.length);
+        System.arraycopy(b, 0, out, a.length, b.length);
+        return out;
+    }
+}
