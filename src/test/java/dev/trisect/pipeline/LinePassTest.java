@@ -10,11 +10,9 @@ import dev.trisect.math.Mat4;
 import dev.trisect.math.Vec3;
 import dev.trisect.math.Viewport;
 import dev.trisect.mesh.Lines;
-import dev.trisect.mesh.MeshBuilder;
 import dev.trisect.render.Framebuffer;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.scene.Camera;
-import dev.trisect.texture.Texture;
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
 
@@ -27,7 +25,6 @@ class LinePassTest {
 
     private int[] render(Lines lines, int threads) {
         Draws draws = new Draws();
-        draws.add(new MeshBuilder().build(), new Texture[0], vp);
         draws.addLines(lines, vp, 1);
         Framebuffer fb = new Framebuffer(W, H);
         try (FrameRenderer r = new FrameRenderer(threads)) {
