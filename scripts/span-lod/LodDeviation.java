@@ -6,7 +6,7 @@ import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.PieceInfo;
 import dev.trisect.raster.RowKnots;
 import dev.trisect.render.*;
-import dev.trisect.texture.Lod;
+import dev.trisect.texture.internal.Lod;
 import java.util.*;
 
 /**
