@@ -2,7 +2,7 @@
 # How far the span path's one level of detail per segment (and the tessellated path's one per piece,
 # --split error --max-error 0.5) is from OpenGL's exact per-pixel lambda, both clamped to the levels a
 # trilinear sample blends, on demo, floor, boxes and sphere: every 2nd pixel of every 2nd row, found
-# through FrameRenderer.pieceAt and knotsAt (one pixel at a time: slow at 1920x1080, a minute or two).
+# through FrameRecord.pieceAt and knotsAt (one pixel at a time: slow at 1920x1080, a minute or two).
 # Prints max, p99, p99.9 and mean, in levels. Needs target/classes (mvn -q compile).
 #
 #   scripts/span-lod.sh [W H]          (default 480 270)

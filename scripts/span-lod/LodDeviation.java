@@ -45,12 +45,12 @@ public class LodDeviation {
                         int i = y * w + x;
                         int id = (int) fb.uv()[3 * i + 2] - 1;
                         if (id < 0) continue;
-                        PieceInfo p = r.pieceAt(x, y, id, fb.depth()[i]);
+                        PieceInfo p = r.drawn().pieceAt(x, y, id, fb.depth()[i]);
                         if (p == null) continue;
                         double exact = lambda(p, x + 0.5, y + 0.5);
                         double used;
                         if (path.equals("spans")) {
-                            RowKnots k = r.knotsAt(x, y, id, fb.depth()[i]);
+                            RowKnots k = r.drawn().knotsAt(x, y, id, fb.depth()[i]);
                             int found = Arrays.binarySearch(k.columns(), x);
                             int seg = found >= 0 ? found : -found - 2;
                             int a = k.columns()[seg], b = k.columns()[Math.min(seg + 1, k.columns().length - 1)];

@@ -112,7 +112,7 @@ final class BandPass {
 
     /**
      * Counts, per pixel of a {@code width x height} frame, how many screen triangles of chunks
-     * 0..chunkCount-1 cover its centre, ignoring depth (see {@link FrameRenderer#coverage}).
+     * 0..chunkCount-1 cover its centre, ignoring depth (see {@link FrameRecord#coverage}).
      */
     int[] coverage(Chunks chunks, int chunkCount, int width, int height, WorkerPool pool) {
         int[] counts = new int[width * height];

@@ -13,7 +13,7 @@ import java.util.Objects;
  * then {@link #add} each draw.
  *
  * <p>The frame numbers triangles across the draws in order: draw d's triangle t is frame triangle
- * {@code firstTriangle(d) + t} (the id in the UV output and in {@link FrameRenderer#pieceAt}), and
+ * {@code firstTriangle(d) + t} (the id in the UV output and in {@link FrameRecord#pieceAt}), and
  * likewise its positions and materials follow those of the draws before it, so that the stages
  * after the transform see one list of triangles, positions and textures. One draw is exactly the
  * single-mesh frame: every base is 0.

@@ -2,21 +2,24 @@ package dev.trisect.pipeline;
 
 import dev.trisect.math.Mat4;
 import dev.trisect.mesh.Mesh;
-import dev.trisect.raster.RowKnots;
 import dev.trisect.render.BorderStyle;
 import dev.trisect.render.FrameStats;
 import dev.trisect.render.Framebuffer;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.render.TessellationSettings;
 import dev.trisect.texture.Texture;
+import java.util.List;
 
 /**
  * Draws one frame: transform, cull, clip, tessellate (or project), rasterize, overlay, statistics.
- * This class is the public entry and the order of the stages; each stage is a class of its own
- * (docs/architecture.md has the table): {@link FrameGeometry} (with {@link ClipSpace},
- * {@link ChunkGeometry}, {@link DepthCapSearch}) makes the chunks' screen triangles, {@link BandPass}
- * fills them band by band, {@link Outlines} draws the border overlay, {@link FrameStatsBuilder} makes
- * the statistics, all on the threads of one {@link WorkerPool}.
+ * This class is the public entry and the list of the frame's {@link FramePass passes}, run in order;
+ * each is a class of its own (docs/architecture.md has the table): {@link FrameGeometry} (with
+ * {@link ClipSpace}, {@link ChunkGeometry}, {@link DepthCapSearch}) makes the chunks' screen
+ * triangles, {@link BandPass} fills them band by band, and with the borders on {@link Outlines} draws
+ * the border overlay on each band as it is filled, {@link LinePass} draws the lines over the filled
+ * frame; {@link FrameStatsBuilder} makes the statistics, all
+ * on the threads of one {@link WorkerPool}. What the frame drew is kept as a {@link FrameRecord}
+ * ({@link #drawn()}), which answers the pixel inspector's questions until the next frame.
  *
  * <p>Work is shared out in two ways, neither of which changes a single pixel. Geometry runs over
  * contiguous chunks of the triangle list, each writing its own screen triangles in input order.
@@ -50,17 +53,14 @@ public final class FrameRenderer implements AutoCloseable {
     private final BandPass bands;
     private final Outlines outlines;
     private final LinePass lines;
+    /** The frame's passes, in the order they run: the geometry, the fill, the lines (see {@link FramePass}). */
+    private final List<FramePass> passes;
     /**
-     * The geometry of the frame last drawn by {@link #render}, which {@link #drawBorders} and
-     * {@link #pieceAt} read; null before the first frame, after {@link #coverage} and after a failure.
+     * What the frame last drawn by {@link #render} (or laid out by {@link #coverage}) drew, which
+     * {@link #drawBorders} and the inspector's questions read; null before the first frame and after
+     * a failure.
      */
-    private FrameGeometry.Result drawn;
-    /** The span path's max error of the frame last drawn by {@link #render}, 0 for the other paths. */
-    private double drawnSpanError;
-    /** The width of the frame last drawn by {@link #render}, pixels. */
-    private int drawnWidth;
-    /** The height of the frame last drawn by {@link #render}, pixels. */
-    private int drawnHeight;
+    private FrameRecord drawn;
     /** The one draw of {@link #render(Mesh, Texture[], Mat4, RenderSettings, Framebuffer)}, reused. */
     private final Draws single = new Draws();
     /** Set by {@link #close}: every later call throws instead of reading what the closed renderer kept. */
@@ -80,6 +80,14 @@ public final class FrameRenderer implements AutoCloseable {
 
     /** @param threads threads to render with, 1..{@link #MAX_THREADS} (the calling thread is one of them) */
     public FrameRenderer(int threads) {
+        this(threads, List.of());
+    }
+
+    /**
+     * A renderer whose frames run {@code later} after the fill, in order (a pass being tried out, or
+     * a test's probe): the list of passes with more entries.
+     */
+    FrameRenderer(int threads, List<FramePass> later) {
         if (threads < 1 || threads > MAX_THREADS) {
             throw new IllegalArgumentException("threads must be between 1 and " + MAX_THREADS + ", got " + threads);
         }
@@ -88,6 +96,9 @@ public final class FrameRenderer implements AutoCloseable {
         this.bands = new BandPass(threads);
         this.outlines = new Outlines(threads);
         this.lines = new LinePass(threads);
+        List<FramePass> all = new java.util.ArrayList<>(List.of(this::geometryPass, this::fillPass, this::linePass));
+        all.addAll(later);
+        this.passes = List.copyOf(all);
     }
 
     /**
@@ -126,8 +137,9 @@ public final class FrameRenderer implements AutoCloseable {
      * Draws every draw into {@code frame}, one depth buffer for all, after clearing it: each mesh's
      * positions go through that draw's own model-view-projection, so moving one object never touches
      * another's data. The draws' lines come after every triangle (and, with the borders on, after the
-     * overlay), depth-tested against them ({@link LinePass}); they leave the UV output as it is. Triangles are numbered across the draws (see {@link Draws}) in the UV output
-     * and in {@link #pieceAt}.
+     * overlay), depth-tested against them ({@link LinePass}); they leave the UV output as it is.
+     * Triangles are numbered across the draws (see {@link Draws}) in the UV output and in
+     * {@link FrameRecord#pieceAt}.
      *
      * @return what the frame did ({@code trianglesIn} counts every draw's triangles)
      */
@@ -136,59 +148,50 @@ public final class FrameRenderer implements AutoCloseable {
         long start = System.nanoTime();
         drawn = null;
         outlines.retain();
-        FrameGeometry.Result g = geometry.run(draws, settings, frame.width(), frame.height(), pool);
-        long geometryDone = System.nanoTime();
-        BandPass.Result b = bands.draw(frame, geometry.chunks(), g.chunkCount(), draws.textures(), settings, outlines,
-                pool);
-        lines.draw(draws, frame, pool);
-        long end = System.nanoTime();
-        drawn = g;
-        drawnSpanError = settings.mode().knots() ? settings.knotError() : 0;
-        drawnWidth = frame.width();
-        drawnHeight = frame.height();
-        return new FrameStatsBuilder(pool.threads(), start)
-                .geometry(draws.triangleCount(), geometry.chunks(), g, geometryDone)
-                .bands(b, end, settings.borders());
-    }
-
-    /**
-     * The filled triangle of the last frame drawn by {@link #render} that shows pixel (x, y), for the
-     * pixel inspector: see {@link PieceLookup#find}.
-     *
-     * @return the piece, or null when none holds the pixel
-     */
-    public PieceInfo pieceAt(int x, int y, int triangle, double depth) {
-        checkOpen();
-        return PieceLookup.find(geometry.chunks(), drawnChunks(), x, y, triangle, depth);
-    }
-
-    /**
-     * The piece filled per pixel (the fallback: a sliver, or one a cap stopped short) whose outline
-     * lights pixel (x, y) in the last frame drawn by {@link #render} when the borders are drawn, by the
-     * overlay's own rules and depth test against {@code depth} (the frame's 1/w there); the last in
-     * drawing order when several do. For the pixel inspector: it explains a magenta mark.
-     *
-     * @return the piece, or null when no fallback piece's outline lights the pixel
-     */
-    public PieceInfo fallbackOutlineAt(int x, int y, double depth) {
-        checkOpen();
-        return PieceLookup.fallbackOutline(geometry.chunks(), drawnChunks(), x, y, drawnHeight, depth);
-    }
-
-    /**
-     * The knots of row y of the filled triangle that shows pixel (x, y) in the last frame drawn by
-     * {@link #render}, when that frame took the span path, for the pixel inspector: found as
-     * {@link #pieceAt} finds the triangle, placed as the fill placed them.
-     *
-     * @return the row's knots, or null when the frame was not drawn in the span path or no triangle
-     *         holds the pixel
-     */
-    public RowKnots knotsAt(int x, int y, int triangle, double depth) {
-        checkOpen();
-        if (drawnSpanError <= 0) {
-            return null;
+        FrameJob job = new FrameJob(draws, settings, frame, pool, geometry.chunks(), start);
+        for (FramePass pass : passes) {
+            pass.run(job);
         }
-        return PieceLookup.knots(geometry.chunks(), drawnChunks(), x, y, triangle, depth, drawnWidth, drawnSpanError);
+        long end = System.nanoTime();
+        drawn = record(job.chunkCount(), frame.width(), frame.height(), settings);
+        return new FrameStatsBuilder(pool.threads(), job.start)
+                .geometry(draws.triangleCount(), job.chunks, job.geometry, job.geometryDone)
+                .bands(job.bands, end, settings.borders());
+    }
+
+    /** The geometry pass: the chunks' screen triangles. */
+    private void geometryPass(FrameJob job) {
+        job.geometry = geometry.run(job.draws, job.settings, job.frame.width(), job.frame.height(), job.pool);
+        job.geometryDone = System.nanoTime();
+    }
+
+    /** The fill pass: every band cleared and filled, and outlined right after when the borders are on. */
+    private void fillPass(FrameJob job) {
+        job.bands = bands.draw(job.frame, job.chunks, job.chunkCount(), job.draws.textures(), job.settings, outlines,
+                job.pool);
+    }
+
+    /** The line pass: the draws' lines over the filled frame, depth-tested against it. */
+    private void linePass(FrameJob job) {
+        lines.draw(job.draws, job.frame, job.pool);
+    }
+
+    private FrameRecord record(int chunkCount, int width, int height, RenderSettings settings) {
+        return new FrameRecord(this, geometry.chunks(), chunkCount, width, height,
+                settings.mode().knots() ? settings.knotError() : 0);
+    }
+
+    /**
+     * What the frame last drawn by {@link #render} drew, for the questions asked after it (which piece
+     * shows a pixel, whose outline marks it, the knots of its row, the coverage); it answers until this
+     * renderer draws again.
+     *
+     * @return the record, or null before the first frame and after a frame that failed
+     * @throws IllegalStateException when the renderer is closed
+     */
+    public FrameRecord drawn() {
+        checkOpen();
+        return drawn;
     }
 
     /**
@@ -205,21 +208,23 @@ public final class FrameRenderer implements AutoCloseable {
      */
     public long drawBorders(Framebuffer frame, BorderStyle style, TessellationSettings tessellation) {
         checkOpen();
-        if (drawn != null && (frame.width() != drawnWidth || frame.height() != drawnHeight)) {
+        if (drawn != null && (frame.width() != drawn.width() || frame.height() != drawn.height())) {
             // The pieces are in the drawn frame's pixels: in another frame they would land anywhere.
             throw new IllegalArgumentException("the framebuffer is " + frame.width() + "x" + frame.height()
-                    + " but the frame last drawn was " + drawnWidth + "x" + drawnHeight
+                    + " but the frame last drawn was " + drawn.width() + "x" + drawn.height()
                     + ": outline the framebuffer that was rendered");
         }
         long start = System.nanoTime();
-        outlines.drawAll(frame, geometry.chunks(), drawnChunks(), style, tessellation, drawnSpanError, pool);
+        outlines.drawAll(frame, geometry.chunks(), drawn == null ? 0 : drawn.chunkCount(), style, tessellation,
+                drawn == null ? 0 : drawn.knotError(), pool);
         return System.nanoTime() - start;
     }
 
     /**
-     * Counts, per pixel, how many of the frame's filled triangles (pieces, in the tessellated path)
-     * cover its centre, ignoring depth: 1 everywhere inside a closed or tiled surface seen from one
-     * side means no gaps and no overlaps. For tests and overdraw views.
+     * Lays out {@code mesh} as a frame of {@code width x height} would (the geometry pass alone, nothing
+     * filled) and counts, per pixel, how many of its filled triangles cover the pixel's centre: the
+     * {@link FrameRecord#coverage} of that layout, which becomes {@link #drawn()}. For tests and
+     * overdraw views.
      *
      * @return {@code width * height} counts, row 0 at the top
      */
@@ -231,14 +236,25 @@ public final class FrameRenderer implements AutoCloseable {
         single.add(mesh, textures, viewProjection);
         try {
             FrameGeometry.Result g = geometry.run(single, settings, width, height, pool);
-            return bands.coverage(geometry.chunks(), g.chunkCount(), width, height, pool);
+            drawn = record(g.chunkCount(), width, height, settings);
+            return drawn.coverage();
         } finally {
             single.clear();
         }
     }
 
-    private int drawnChunks() {
-        return drawn == null ? 0 : drawn.chunkCount();
+    /** {@link FrameRecord#coverage}, on this renderer's threads. */
+    int[] coverage(Chunks chunks, int chunkCount, int width, int height) {
+        return bands.coverage(chunks, chunkCount, width, height, pool);
+    }
+
+    /** Throws unless {@code frame} is what this renderer drew last and the renderer is open. */
+    void checkCurrent(FrameRecord frame) {
+        checkOpen();
+        if (frame != drawn) {
+            throw new IllegalStateException("this record is of an earlier frame: the renderer has drawn since "
+                    + "(ask the record of the frame last drawn: FrameRenderer.drawn())");
+        }
     }
 
     /** Triangles the chunks' screen-triangle storage holds room for, for tests of trimming. */

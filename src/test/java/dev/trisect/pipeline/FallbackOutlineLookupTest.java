@@ -17,7 +17,7 @@ import java.util.Random;
 import org.junit.jupiter.api.Test;
 
 /**
- * The inspector's answer to "whose magenta mark is this": {@link FrameRenderer#fallbackOutlineAt} names
+ * The inspector's answer to "whose magenta mark is this": {@link FrameRecord#fallbackOutlineAt} names
  * a fallback piece exactly where the overlay draws one's outline — on the demo at start, whose magenta
  * marks are all slivers (issue 18: the inspector named the pixel's own piece, with no fallback flag).
  */
@@ -49,7 +49,7 @@ class FallbackOutlineLookupTest {
                 if (!near && random.nextInt(100) != 0) {
                     continue;
                 }
-                PieceInfo p = r.fallbackOutlineAt(i % W, i / W, depth[i]);
+                PieceInfo p = r.drawn().fallbackOutlineAt(i % W, i / W, depth[i]);
                 if (lit) {
                     assertNotNull(p, "the mark at " + i % W + "," + i / W + " is a fallback piece's");
                     assertTrue(p.fallback());

@@ -45,18 +45,37 @@ class FrameRendererMisuseTest {
         FrameRenderer r = new FrameRenderer(2);
         Framebuffer frame = new Framebuffer(64, 48);
         r.render(scene.mesh(), scene.textureArray(), vp, settings, frame);
+        FrameRecord drawn = r.drawn();
         r.close();
         r.close(); // twice is harmless
         List<Executable> calls = List.of(
                 () -> r.render(scene.mesh(), scene.textureArray(), vp, settings, frame),
                 () -> r.coverage(scene.mesh(), scene.textureArray(), vp, settings, 64, 48),
                 () -> r.drawBorders(frame, BorderStyle.plain(), settings.tessellation()),
-                () -> r.pieceAt(32, 24, 0, 1),
-                () -> r.fallbackOutlineAt(32, 24, 1),
-                () -> r.knotsAt(32, 24, 0, 1));
+                r::drawn,
+                () -> drawn.pieceAt(32, 24, 0, 1),
+                () -> drawn.fallbackOutlineAt(32, 24, 1),
+                () -> drawn.knotsAt(32, 24, 0, 1),
+                drawn::coverage);
         for (Executable call : calls) {
             IllegalStateException e = assertThrows(IllegalStateException.class, call);
             assertEquals("this FrameRenderer is closed: its threads have stopped", e.getMessage());
+        }
+    }
+
+    @Test
+    void aRecordOfAnEarlierFrameRefusesToAnswer() {
+        try (FrameRenderer r = new FrameRenderer(2)) {
+            Framebuffer frame = new Framebuffer(64, 48);
+            r.render(scene.mesh(), scene.textureArray(), vp, settings, frame);
+            FrameRecord first = r.drawn();
+            assertEquals(64, first.width());
+            first.pieceAt(32, 24, 0, 1); // current: answers
+            r.render(scene.mesh(), scene.textureArray(), vp, settings, frame);
+            IllegalStateException e = assertThrows(IllegalStateException.class, () -> first.pieceAt(32, 24, 0, 1));
+            assertTrue(e.getMessage().startsWith("this record is of an earlier frame"), e.getMessage());
+            assertThrows(IllegalStateException.class, first::coverage);
+            r.drawn().pieceAt(32, 24, 0, 1); // the new record answers
         }
     }
 }

@@ -242,7 +242,7 @@ class GoldenFramesTest {
     /** The inspector's piece at every 7th pixel of every 5th row that shows a triangle. */
     private static String inspector(FrameRenderer r, View v, RenderSettings s) {
         return "inspector " + probe(r, v, s, (x, y, triangle, depth, d) -> {
-            PieceInfo p = r.pieceAt(x, y, triangle, depth);
+            PieceInfo p = r.drawn().pieceAt(x, y, triangle, depth);
             if (p == null) {
                 return false;
             }
@@ -263,7 +263,7 @@ class GoldenFramesTest {
     /** The inspector's knots of the row, in the span path, at the same pixels. */
     private static String knots(FrameRenderer r, View v, RenderSettings s) {
         return "knots " + probe(r, v, s, (x, y, triangle, depth, d) -> {
-            RowKnots k = r.knotsAt(x, y, triangle, depth);
+            RowKnots k = r.drawn().knotsAt(x, y, triangle, depth);
             if (k == null) {
                 return false;
             }

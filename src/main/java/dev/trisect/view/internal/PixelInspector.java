@@ -4,6 +4,7 @@ import dev.trisect.math.Viewport;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.metrics.TexelToScreen;
 import dev.trisect.pipeline.Draws;
+import dev.trisect.pipeline.FrameRecord;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.PieceInfo;
 import dev.trisect.raster.RowKnots;
@@ -68,19 +69,21 @@ public final class PixelInspector {
     /**
      * Inspects pixel (x, y) of {@code frame}, against {@code reference} (the per-pixel path's frame, with UV).
      *
+     * @param record      the renderer's record of the frame ({@link FrameRenderer#drawn()}), asked which
+     *                    piece shows the pixel, whose outline marks it and the knots of its row
      * @param perspective the frame took the per-pixel path or the span path (whose knots
-     *                    {@link FrameRenderer#knotsAt} then gives)
+     *                    {@link FrameRecord#knotsAt} then gives)
      * @param borders     the borders are drawn over the frame (so fallback pieces' outlines may light the pixel)
      * @param drawn       the frame's objects: the texture and the object of each frame triangle
      */
-    static Inspection inspect(FrameRenderer renderer, Framebuffer frame, Framebuffer reference, TexelToScreen exact,
+    static Inspection inspect(FrameRecord record, Framebuffer frame, Framebuffer reference, TexelToScreen exact,
                               DrawnFrame drawn, TextureFilter filter, boolean perspective, boolean borders, int x,
                               int y) {
         int i = y * frame.width() + x;
         double[] uv = frame.uv();
         int id = (int) uv[3 * i + 2] - 1;
         int argb = frame.color()[i];
-        PieceInfo outline = borders ? renderer.fallbackOutlineAt(x, y, frame.depth()[i]) : null;
+        PieceInfo outline = borders ? record.fallbackOutlineAt(x, y, frame.depth()[i]) : null;
         DrawnFrame.Owner outlineOwner = outline == null ? null : drawn.ownerOf(outline.triangle());
         int refArgb = reference == null ? 0 : reference.color()[i];
         if (id < 0) {
@@ -95,8 +98,8 @@ public final class PixelInspector {
         double refS = same ? ref[3 * i] : Double.NaN;
         double refT = same ? ref[3 * i + 1] : Double.NaN;
         double displacement = exact == null ? Double.NaN : exact.displacement(id, s, t, x, y);
-        PieceInfo piece = renderer.pieceAt(x, y, id, q);
-        RowKnots knots = renderer.knotsAt(x, y, id, q);
+        PieceInfo piece = record.pieceAt(x, y, id, q);
+        RowKnots knots = record.knotsAt(x, y, id, q);
         double lambda = Double.NaN;
         if (piece != null) {
             double[] d = perspective || piece.fallback() ? perspectiveDerivatives(piece, x + 0.5, y + 0.5)

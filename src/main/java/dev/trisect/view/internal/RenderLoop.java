@@ -285,7 +285,7 @@ public final class RenderLoop implements Runnable {
             int ix = (int) (inspected >> 32);
             int iy = (int) inspected;
             if (ix < fw && iy < fh) {
-                back.inspection = PixelInspector.inspect(renderer, fb, reference,
+                back.inspection = PixelInspector.inspect(renderer.drawn(), fb, reference,
                         new TexelToScreen(draws, viewport), drawn, settings.render().filter(),
                         settings.render().mode().divides(),
                         settings.render().borders() && settings.view() != ViewKind.DIFFERENCE, ix, iy);
