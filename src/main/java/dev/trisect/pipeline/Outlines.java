@@ -42,7 +42,7 @@ final class Outlines {
     private final Retention retention = new Retention(0);
     /** Preparations of the current pass that are done (or failed). */
     private final AtomicInteger prepared = new AtomicInteger();
-    /** The chunks whose knots the pass ticks, with the knots' max error, or null for no ticks. */
+    /** The chunks whose knots the pass ticks, with the span path's knot error, or null for no ticks. */
     private Chunks tickChunks;
     private double tickError;
     private boolean tickByBound;
@@ -89,14 +89,14 @@ final class Outlines {
     }
 
     /**
-     * Makes the pass begun also tick the knots of the span path with max error {@code maxError} (0: no
+     * Makes the pass begun also tick the knots of the span path with knot error {@code knotError} (0: no
      * ticks) in the chunks' triangles, coloured by their segments' bound when the style colours by bound
      * (the outlines are then yellow: the triangles' affine bound says nothing of this path). Call
      * before the pass's preparations run.
      */
-    void ticks(Chunks chunks, double maxError, BorderStyle style) {
-        tickChunks = maxError > 0 ? chunks : null;
-        tickError = maxError;
+    void ticks(Chunks chunks, double knotError, BorderStyle style) {
+        tickChunks = knotError > 0 ? chunks : null;
+        tickError = knotError;
         tickByBound = style.colouring() == BorderStyle.Colouring.BOUND;
     }
 
@@ -153,14 +153,14 @@ final class Outlines {
 
     /**
      * Outlines the screen triangles of chunks 0..chunkCount-1 into {@code frame}, a pass of its own
-     * (the frame's fill long done), with the knot ticks of a span-path frame drawn with max error
-     * {@code spanError} (0 for other paths).
+     * (the frame's fill long done), with the knot ticks of a span-path frame drawn with knot error
+     * {@code knotError} (0 for other paths).
      */
     void drawAll(Framebuffer frame, Chunks chunks, int chunkCount, BorderStyle style,
-                 TessellationSettings tessellation, double spanError, WorkerPool pool) {
+                 TessellationSettings tessellation, double knotError, WorkerPool pool) {
         int height = frame.height();
         begin(chunkCount);
-        ticks(chunks, spanError, style);
+        ticks(chunks, knotError, style);
         int bands = BandBins.bandCount(height, FrameRenderer.BAND_ROWS);
         pool.run(chunkCount + bands, (thread, task) -> {
             if (task < chunkCount) {

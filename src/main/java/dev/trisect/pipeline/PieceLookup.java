@@ -68,12 +68,12 @@ final class PieceLookup {
     /**
      * The knots of row y of the filled triangle of input triangle {@code triangle} that covers pixel
      * (x, y) (by the fill's own coverage, so that a clipped triangle's fan gives the part that drew the
-     * pixel), as the span path with max error {@code maxError} placed them in a frame {@code width}
+     * pixel), as the span path with knot error {@code knotError} placed them in a frame {@code width}
      * pixels wide; among several, the one whose 1/w plane there is closest to {@code depth}. Null when
      * none covers the pixel.
      */
     static RowKnots knots(Chunks chunks, int chunkCount, int x, int y, int triangle, double depth, int width,
-                          double maxError) {
+                          double knotError) {
         RowKnots best = null;
         double bestGap = Double.POSITIVE_INFINITY;
         for (int c = 0; c < chunkCount; c++) {
@@ -82,7 +82,7 @@ final class PieceLookup {
                 if (t.ids()[i] != triangle || y < t.firstRow(i) || y >= t.endRow(i)) {
                     continue;
                 }
-                RowKnots k = RowKnots.of(t, i, width, y, maxError);
+                RowKnots k = RowKnots.of(t, i, width, y, knotError);
                 int[] columns = k.columns();
                 if (columns.length == 0 || x < columns[0] || x > columns[columns.length - 1]) {
                     continue;

@@ -15,7 +15,7 @@ import dev.trisect.render.Framebuffer;
  * triangle's own 1/w plane is not behind the frame there (within {@link BorderOverlay}'s tolerance),
  * in the triangle's outline colour and opacity from the {@link OutlinePlan}; when colouring by bound,
  * in the bound colour of the larger Kamen–Shirman bound of the (one or two) segments the knot ends,
- * over the max error: green for a short segment, yellow for one the bound limited. A tick never leaves
+ * over the knot error: green for a short segment, yellow for one the bound limited. A tick never leaves
  * its band of rows (rows 6 to 10 of 16), so bands are drawn independently on any thread.
  *
  * <p>One per thread: it holds the triangle being ticked.
@@ -41,12 +41,12 @@ public final class KnotTicks {
      * on the ticked rows of rows [y0, y1), within those rows.
      *
      * @param plan     the outline plan of {@code triangles}: which are outlined, in which colour and opacity
-     * @param byBound  colour each tick by its segments' bound over {@code maxError}
-     * @param maxError the knot spacing's max error, pixels
+     * @param byBound  colour each tick by its segments' bound over {@code knotError}
+     * @param knotError the span path's knot error, pixels
      * @return tick pixels drawn
      */
     public long draw(Framebuffer frame, ScreenTriangles triangles, int[] order, int from, int to, OutlinePlan plan,
-                     boolean byBound, double maxError, int y0, int y1) {
+                     boolean byBound, double knotError, int y0, int y1) {
         long painted = 0;
         int first = y0 + Math.floorMod(ROW_SPACING / 2 - y0, ROW_SPACING);
         for (int row = first; row < y1; row += ROW_SPACING) {
@@ -54,7 +54,7 @@ public final class KnotTicks {
                 int tri = order[n];
                 if (plan.colours[tri] != 0 && setup.prepare(triangles, tri, true, 0, row, frame.width(), row + 1)) {
                     solver.walk(setup);
-                    painted += row(frame, row, plan.colours[tri], plan.alpha(tri), byBound, maxError, y0, y1);
+                    painted += row(frame, row, plan.colours[tri], plan.alpha(tri), byBound, knotError, y0, y1);
                 }
             }
         }
@@ -62,7 +62,7 @@ public final class KnotTicks {
     }
 
     /** The ticks of the set-up triangle's one row. */
-    private long row(Framebuffer frame, int y, int colour, double alpha, boolean byBound, double maxError, int y0,
+    private long row(Framebuffer frame, int y, int colour, double alpha, boolean byBound, double knotError, int y0,
                      int y1) {
         int[] sp = solver.spans();
         int start = sp[0];
@@ -72,16 +72,16 @@ public final class KnotTicks {
         }
         double qDx = setup.qPlane.dx;
         double qRow = setup.qPlane.base + setup.qPlane.dy * y;
-        double scale = KnotSpacing.scale(qDx, maxError);
-        double offset = KnotSpacing.offset(qDx, maxError);
-        double unbounded = KnotSpacing.unbounded(qDx, maxError);
+        double scale = KnotSpacing.scale(qDx, knotError);
+        double offset = KnotSpacing.offset(qDx, knotError);
+        double unbounded = KnotSpacing.unbounded(qDx, knotError);
         long painted = 0;
         double before = 0;
         for (int a = start; ; ) {
             double qa = qRow + qDx * a;
             int b = a < last ? KnotSpacing.next(a, qa, qRow, qDx, scale, offset, unbounded, last) : a;
             double after = b > a + 1 ? KnotSpacing.bound(qa, qRow + qDx * b, b - a) : 0;
-            int c = byBound ? OverlayColours.bound(Math.max(before, after) / maxError) : colour;
+            int c = byBound ? OverlayColours.bound(Math.max(before, after) / knotError) : colour;
             painted += tick(frame, a, y, c, alpha, y0, y1);
             if (b == a) {
                 return painted;

@@ -16,9 +16,9 @@ import java.util.Arrays;
 public record RowKnots(int y, int[] columns, double[] bounds) {
     /**
      * The knots of row {@code y} of triangle {@code tri} of {@code triangles} in a frame {@code width}
-     * pixels wide, spaced for {@code maxError} pixels.
+     * pixels wide, spaced for {@code knotError} pixels.
      */
-    public static RowKnots of(ScreenTriangles triangles, int tri, int width, int y, double maxError) {
+    public static RowKnots of(ScreenTriangles triangles, int tri, int width, int y, double knotError) {
         TriangleSetup setup = new TriangleSetup();
         if (!setup.prepare(triangles, tri, true, 0, y, width, y + 1)) {
             return new RowKnots(y, new int[0], new double[0]);
@@ -32,9 +32,9 @@ public record RowKnots(int y, int[] columns, double[] bounds) {
         }
         double qDx = setup.qPlane.dx;
         double qRow = setup.qPlane.base + setup.qPlane.dy * y;
-        double scale = KnotSpacing.scale(qDx, maxError);
-        double offset = KnotSpacing.offset(qDx, maxError);
-        double unbounded = KnotSpacing.unbounded(qDx, maxError);
+        double scale = KnotSpacing.scale(qDx, knotError);
+        double offset = KnotSpacing.offset(qDx, knotError);
+        double unbounded = KnotSpacing.unbounded(qDx, knotError);
         int[] columns = new int[16];
         double[] bounds = new double[16];
         int n = 0;
