@@ -112,7 +112,25 @@ public record Camera(Vec3 eye, Vec3 target, Vec3 up, double fovY, double near, d
      * @return the camera
      */
     public static Camera looking(Vec3 eye, Vec3 target) {
-        return new Camera(eye, target, Vec3.UP, DEFAULT_FOV, DEFAULT_NEAR, DEFAULT_FAR);
+        return looking(eye, target, Vec3.UP);
+    }
+
+    /**
+     * A camera with the default field of view, near and far, and the given up: a camera looking
+     * straight down needs one, since +y is parallel to its view.
+     *
+     * <pre>{@code
+     * Camera topDown = Camera.looking(new Vec3(0, 20, 0), Vec3.ZERO, new Vec3(0, 0, -1)); // -z at the top
+     * }</pre>
+     *
+     * @param eye    camera position, world space
+     * @param target point looked at, world space
+     * @param up     approximate up direction, world space; not zero and not parallel to the view
+     * @return the camera
+     * @throws IllegalArgumentException when a value breaks a rule of the constructor, naming it
+     */
+    public static Camera looking(Vec3 eye, Vec3 target, Vec3 up) {
+        return new Camera(eye, target, up, DEFAULT_FOV, DEFAULT_NEAR, DEFAULT_FAR);
     }
 
     /**
