@@ -13,11 +13,15 @@ enum ImageFormat {
     GIF("GIF", "gif"),
     TGA("TGA", null),
     PPM("PPM", null),
-    PAM("PAM", null);
+    PAM("PAM", null),
+    /** Plain (ASCII) Netpbm: bitmap {@code P1}, greymap {@code P2}, pixmap {@code P3}. */
+    PLAIN_PBM("plain PBM", null),
+    PLAIN_PGM("plain PGM", null),
+    PLAIN_PPM("plain PPM", null);
 
     /** What every "unsupported format" message lists. */
-    static final String SUPPORTED = "PNG, JPEG, BMP, GIF, TGA (named *.tga), binary PPM (P6) and PAM (P7, "
-            + "tuple type RGB or RGB_ALPHA)";
+    static final String SUPPORTED = "PNG, JPEG, BMP, GIF, TGA (named *.tga), binary PPM (P6), plain PBM, PGM "
+            + "and PPM (P1, P2, P3) and PAM (P7, tuple type RGB or RGB_ALPHA)";
 
     /** Enough leading bytes to recognise every format (and to hold a whole TGA header). */
     static final int HEAD_BYTES = 18;
@@ -50,11 +54,19 @@ enum ImageFormat {
             return BMP;
         }
         if (length >= 3 && head[0] == 'P' && isWhitespace(head[2])) {
-            if (head[1] == '6') {
-                return PPM;
-            }
-            if (head[1] == '7') {
-                return PAM;
+            switch (head[1]) {
+                case '1':
+                    return PLAIN_PBM;
+                case '2':
+                    return PLAIN_PGM;
+                case '3':
+                    return PLAIN_PPM;
+                case '6':
+                    return PPM;
+                case '7':
+                    return PAM;
+                default:
+                    break;
             }
         }
         if (fileName.toLowerCase(Locale.ROOT).endsWith(".tga")) {
@@ -65,10 +77,10 @@ enum ImageFormat {
 
     /**
      * For a file that is not supported but is a Netpbm or PFM file of another kind, the magic number
-     * ({@code P1}..{@code P5}, {@code PF}, {@code Pf}) to name in the message; otherwise null.
+     * ({@code P4}, {@code P5}, {@code PF}, {@code Pf}) to name in the message; otherwise null.
      */
     static String otherNetpbmMagic(byte[] head, int length) {
-        if (length >= 3 && head[0] == 'P' && "12345Ff".indexOf(head[1]) >= 0 && isWhitespace(head[2])) {
+        if (length >= 3 && head[0] == 'P' && "45Ff".indexOf(head[1]) >= 0 && isWhitespace(head[2])) {
             return "P" + (char) head[1];
         }
         return null;

@@ -9,12 +9,17 @@ import java.nio.file.Path;
 
 /**
  * Reads binary PPM ({@code P6}) and PAM ({@code P7}, tuple types {@code RGB} and {@code RGB_ALPHA}),
- * 8 or 16 bits a sample (any maxval 1..65535), as the Netpbm specifications describe them.
+ * 8 or 16 bits a sample (any maxval 1..65535), and plain (ASCII) PBM, PGM and PPM ({@code P1},
+ * {@code P2}, {@code P3}), as the Netpbm specifications describe them.
  *
- * <p>Trisect decodes these itself rather than through TwelveMonkeys' PNM plugin, whose PAM header
- * parser (3.13.1) rejects valid headers: more than one space between keyword and value, and a missing
- * (optional) {@code TUPLTYPE}. Both formats are simple enough that one small reader is clearer than
- * patching around another.
+ * <p>Trisect decodes these itself rather than through TwelveMonkeys' PNM plugin. Its PAM header parser
+ * (3.13.1) rejects valid headers: more than one space between keyword and value, and a missing
+ * (optional) {@code TUPLTYPE}. For the plain formats it keeps a sample above maxval as its low byte (300
+ * becomes 44) instead of refusing it, refuses a {@code #} comment among the samples (Netpbm's own
+ * programs accept one), reports a short file as a bare end of file, and hands a PGM over as a linear
+ * grey image whose colours, read as sRGB, come out brighter than the file says (128 as 188). The
+ * formats are simple enough that one small reader with the same limits and messages for all of them
+ * is clearer than patching around another.
  */
 final class PnmDecoder {
     /** A header longer than this is taken as a corrupt file rather than read on and on. */
@@ -37,38 +42,59 @@ final class PnmDecoder {
         this.label = label;
     }
 
-    /** The header fields that matter; {@code channels} is 3 (RGB) or 4 (RGB plus alpha). */
+    /** The header fields that matter; {@code channels} is 1 (grey or bits), 3 (RGB) or 4 (RGB plus alpha). */
     private record Header(long width, long height, int maxval, int channels) {
         int bytesPerSample() {
             return maxval < 256 ? 1 : 2;
         }
     }
 
-    /** Reads a whole PPM or PAM file (format as detected from its magic number). */
+    /** Reads a whole PPM, PAM or plain PBM, PGM or PPM file (format as detected from its magic number). */
     static Texture read(Path file, String name, ImageFormat format) throws IOException {
         long fileSize = Files.size(file);
         try (InputStream raw = Files.newInputStream(file)) {
             PnmDecoder decoder = new PnmDecoder(new BufferedInputStream(raw, 1 << 16), name, format.label);
-            Header header = format == ImageFormat.PPM ? decoder.readPpmHeader() : decoder.readPamHeader();
+            Header header = switch (format) {
+                case PPM -> decoder.readPpmHeader('6', 3);
+                case PAM -> decoder.readPamHeader();
+                case PLAIN_PBM -> decoder.readPbmHeader();
+                case PLAIN_PGM -> decoder.readPpmHeader('2', 1);
+                default -> decoder.readPpmHeader('3', 3);
+            };
+            boolean plain = format != ImageFormat.PPM && format != ImageFormat.PAM;
             TextureReader.checkSize(name, format.label, header.width, header.height);
             // Checked before allocating the texels, so a truncated file claiming a large size fails fast.
-            long needed = header.width * header.height * header.channels * header.bytesPerSample();
+            // A plain sample takes at least one byte, and but for bits one separator too.
+            long samples = header.width * header.height * header.channels;
+            long needed = !plain ? samples * header.bytesPerSample()
+                    : format == ImageFormat.PLAIN_PBM ? samples : 2 * samples - 1;
             long available = fileSize - decoder.position;
             if (available < needed) {
-                throw decoder.error("truncated: the pixel data needs " + needed + " bytes, the file has "
-                        + available + " after the header");
+                throw decoder.error("truncated: the pixel data needs " + (plain ? "at least " : "") + needed
+                        + " bytes, the file has " + available + " after the header");
             }
-            return decoder.readPixels(header);
+            return plain ? new PlainSamples(decoder.in, header.maxval, format == ImageFormat.PLAIN_PBM,
+                    decoder::error).texture(name, (int) header.width, (int) header.height, header.channels)
+                    : decoder.readPixels(header);
         }
     }
 
-    private Header readPpmHeader() throws IOException {
-        expectMagic('6');
+    /** The header of {@code P6} (binary), {@code P2} or {@code P3} (plain): width, height and maxval. */
+    private Header readPpmHeader(char magic, int channels) throws IOException {
+        expectMagic(magic);
         long width = readNumber("width");
         long height = readNumber("height");
         long maxval = readNumber("maxval");
         // readNumber consumed the single whitespace byte that separates maxval from the pixels.
-        return new Header(width, height, checkMaxval(maxval), 3);
+        return new Header(width, height, checkMaxval(maxval), channels);
+    }
+
+    /** The header of a plain bitmap, {@code P1}: width and height; its samples are bits (maxval 1). */
+    private Header readPbmHeader() throws IOException {
+        expectMagic('1');
+        long width = readNumber("width");
+        long height = readNumber("height");
+        return new Header(width, height, 1, 1);
     }
 
     private Header readPamHeader() throws IOException {
@@ -175,7 +201,7 @@ final class PnmDecoder {
     }
 
     /** Maps samples 0..maxval to 0..255, rounding to nearest. */
-    private static int[] scaleTable(int maxval) {
+    static int[] scaleTable(int maxval) {
         int[] table = new int[maxval + 1];
         for (int v = 0; v <= maxval; v++) {
             table[v] = (int) ((v * 255L + maxval / 2) / maxval);

@@ -20,12 +20,15 @@ import javax.imageio.stream.ImageInputStream;
 
 /**
  * Reads texture image files: PNG, JPEG, BMP, GIF (first frame), TGA, binary PPM ({@code P6}, 8 or 16
- * bits a sample) and PAM ({@code P7}, tuple types {@code RGB} and {@code RGB_ALPHA}).
+ * bits a sample), plain (ASCII) PBM, PGM and PPM ({@code P1}, {@code P2}, {@code P3}, as tutorials and
+ * ray tracers write them; any maxval up to 65535) and PAM ({@code P7}, tuple types {@code RGB} and
+ * {@code RGB_ALPHA}).
  *
  * <p>The format is recognised from the file's first bytes, not its name, except TGA, which has no magic
  * number and is recognised by the name ending in {@code .tga}. PNG, JPEG, BMP and GIF are decoded by the
- * JDK's javax.imageio readers, TGA by TwelveMonkeys', PPM and PAM by Trisect itself (see
- * {@link PnmDecoder} for why).
+ * JDK's javax.imageio readers, TGA by TwelveMonkeys', the Netpbm formats by Trisect itself (the
+ * README's list of what is written here says why). Every Netpbm format has the same limits and
+ * messages: a sample above maxval is an error, not a colour.
  *
  * <p>Every problem is reported as an {@link InputException} (unreadable input, exit status 1) with a
  * one-line message that starts with the file name: a missing file, a directory, a file that cannot be
@@ -60,7 +63,7 @@ public final class TextureReader {
         }
         try {
             return switch (format) {
-                case PPM, PAM -> PnmDecoder.read(file, name, format);
+                case PPM, PAM, PLAIN_PBM, PLAIN_PGM, PLAIN_PPM -> PnmDecoder.read(file, name, format);
                 case TGA -> readTga(file, name, head, headLength);
                 default -> readWithImageIo(file, name, format);
             };

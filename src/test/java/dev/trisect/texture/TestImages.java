@@ -92,6 +92,15 @@ final class TestImages {
     }
 
     /** A PAM (P7) given its header lines (without P7 and ENDHDR) and its samples. */
+    /** A plain (ASCII) Netpbm file: the header, then the samples in decimal, a space between, 16 a line. */
+    static byte[] plain(String header, int... samples) {
+        StringBuilder text = new StringBuilder(header);
+        for (int i = 0; i < samples.length; i++) {
+            text.append(samples[i]).append(i % 16 == 15 ? '\n' : ' ');
+        }
+        return text.toString().getBytes(java.nio.charset.StandardCharsets.US_ASCII);
+    }
+
     static byte[] pam(String headerLines, int bytesPerSample, int... samples) {
         return netpbm("P7\n" + headerLines + "ENDHDR\n", bytesPerSample, samples);
     }

@@ -117,8 +117,7 @@ class TextureReaderErrorsTest {
 
     @Test
     void otherNetpbmVariantsAreNamed() {
-        assertFailsSaying("ascii.ppm", "P3\n1 1\n255\n0 0 0\n".getBytes(StandardCharsets.US_ASCII),
-                "unsupported Netpbm variant P3");
+        assertFailsSaying("bits.pbm", ppm("P4\n8 1\n", 255, 7), "unsupported Netpbm variant P4");
         assertFailsSaying("grey.pgm", ppm("P5\n1 1\n255\n", 255, 7), "unsupported Netpbm variant P5");
     }
 
@@ -214,7 +213,13 @@ class TextureReaderErrorsTest {
                 Arguments.of("TGA", "noise.tga", tga(noise, 64, 48, false, true)),
                 Arguments.of("PPM", "noise.ppm", ppm("P6\n64 48\n255\n", 255, TestImages.samples(noise, 3))),
                 Arguments.of("PAM", "noise.pam", pam("WIDTH 64\nHEIGHT 48\nDEPTH 4\nMAXVAL 255\n", 1,
-                        TestImages.samples(noise, 4))));
+                        TestImages.samples(noise, 4))),
+                Arguments.of("plain PPM", "noise-plain.ppm", TestImages.plain("P3\n64 48\n255\n",
+                        TestImages.samples(noise, 3))),
+                Arguments.of("plain PGM", "noise.pgm", TestImages.plain("P2\n64 48\n255\n",
+                        TestImages.samples(noise, 1))),
+                Arguments.of("plain PBM", "noise.pbm", TestImages.plain("P1\n64 48\n",
+                        Arrays.stream(TestImages.samples(noise, 1)).map(v -> v & 1).toArray())));
     }
 
     @ParameterizedTest(name = "{0}")
@@ -248,7 +253,13 @@ class TextureReaderErrorsTest {
                 Arguments.of("huge.ppm", (BiFunction<Integer, Integer, byte[]>) (w, h) ->
                         ppm("P6\n" + w + " " + h + "\n255\n", 255)),
                 Arguments.of("huge.pam", (BiFunction<Integer, Integer, byte[]>) (w, h) ->
-                        pam("WIDTH " + w + "\nHEIGHT " + h + "\nDEPTH 3\nMAXVAL 255\n", 1)));
+                        pam("WIDTH " + w + "\nHEIGHT " + h + "\nDEPTH 3\nMAXVAL 255\n", 1)),
+                Arguments.of("huge-plain.ppm", (BiFunction<Integer, Integer, byte[]>) (w, h) ->
+                        TestImages.plain("P3\n" + w + " " + h + "\n255\n", 1, 2, 3)),
+                Arguments.of("huge.pgm", (BiFunction<Integer, Integer, byte[]>) (w, h) ->
+                        TestImages.plain("P2\n" + w + " " + h + "\n255\n", 1)),
+                Arguments.of("huge.pbm", (BiFunction<Integer, Integer, byte[]>) (w, h) ->
+                        TestImages.plain("P1\n" + w + " " + h + "\n", 1)));
     }
 
     @ParameterizedTest(name = "{0}")
@@ -265,6 +276,10 @@ class TextureReaderErrorsTest {
         // 16384 x 16384 would take a gigabyte of texels; the file has six bytes of pixels.
         String side = Texture.MAX_SIDE + " " + Texture.MAX_SIDE;
         assertFailsSaying("big.ppm", ppm("P6\n" + side + "\n255\n", 255, 1, 2, 3, 4, 5, 6), "truncated");
+        assertFailsSaying("big-plain.ppm", TestImages.plain("P3\n" + side + "\n255\n", 1, 2, 3), "plain PPM truncated",
+                "needs at least 1610612735 bytes");
+        assertFailsSaying("big.pbm", TestImages.plain("P1\n" + side + "\n", 1, 0), "plain PBM truncated",
+                "needs at least 268435456 bytes");
         assertFailsSaying("big.tga", concat(tgaHeader(10, Texture.MAX_SIDE, Texture.MAX_SIDE, 24, 0),
                 new byte[100]), "truncated");
     }
