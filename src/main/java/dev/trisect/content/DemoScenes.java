@@ -3,6 +3,7 @@ package dev.trisect.content;
 import dev.trisect.math.Vec3;
 import dev.trisect.mesh.MeshBuilder;
 import dev.trisect.mesh.Primitives;
+import dev.trisect.render.RenderSettings;
 import dev.trisect.scene.Camera;
 import dev.trisect.texture.ProceduralTextures;
 import dev.trisect.texture.Texture;
@@ -51,8 +52,11 @@ public final class DemoScenes {
                 () -> sphere("sphere1m", 500)));
     }
 
-    /** The demo scene's sky, 0xRRGGBB: its background in the desktop demo and on the command line. */
-    public static final int SKY = 0x9DB8D3;
+    /**
+     * The demo scene's sky, 0xRRGGBB: its background in the desktop demo and on the command line, the
+     * background of {@link RenderSettings#display()}.
+     */
+    public static final int SKY = RenderSettings.SKY;
 
     private DemoScenes() {
     }

@@ -5,7 +5,15 @@ import dev.trisect.render.TessellationSettings;
 import dev.trisect.texture.TextureFilter;
 
 /**
- * How a frame is drawn.
+ * How a frame is drawn. Two presets, one for each use, then a {@code with...} for any change:
+ * <ul>
+ *   <li>{@link #display()}: for looking at a scene — tessellated, trilinear filtering (no shimmer as
+ *       things move), a sky-blue background. A new {@code TrisectView} draws with it, and
+ *       {@code SceneRenderer.renderImage(scene, camera, width, height)} uses it, so a scene looks the
+ *       same in a window and in a picture unless told otherwise.</li>
+ *   <li>{@link #defaults()}: OpenGL's defaults, for measuring against OpenGL — nearest sampling on
+ *       black. The command line draws with it.</li>
+ * </ul>
  *
  * @param mode         texturing path
  * @param tessellation split policy and caps, used by {@link RenderMode#TESSELLATED}
@@ -22,6 +30,9 @@ import dev.trisect.texture.TextureFilter;
 public record RenderSettings(RenderMode mode, TessellationSettings tessellation, CullMode cull,
                              int background, boolean borders, TextureFilter filter,
                              BorderStyle borderStyle, double knotError) {
+
+    /** The background of {@link #display()}, 0xRRGGBB: a light sky blue. */
+    public static final int SKY = 0x9DB8D3;
 
     /** Default knot spacing of the span path, pixels: the same half pixel as the error policy's default. */
     public static final double DEFAULT_KNOT_ERROR = TessellationSettings.DEFAULT_MAX_ERROR;
@@ -95,12 +106,25 @@ public record RenderSettings(RenderMode mode, TessellationSettings tessellation,
     }
 
     /**
-     * Tessellated, default split settings, back-face culling, black, no borders, nearest sampling.
+     * OpenGL's defaults, for measuring against OpenGL, as the command line draws: tessellated, default
+     * split settings, back-face culling, black, no borders, nearest sampling.
      *
      * @return the default settings
      */
     public static RenderSettings defaults() {
         return new RenderSettings(RenderMode.TESSELLATED, TessellationSettings.defaults(), CullMode.BACK, 0, false);
+    }
+
+    /**
+     * For looking at a scene, as a new view draws and a picture is taken unless told otherwise:
+     * {@link #defaults()} with trilinear filtering, the {@link #SKY} background, and borders (when
+     * turned on) faded yellow.
+     *
+     * @return the display settings
+     */
+    public static RenderSettings display() {
+        return defaults().withFilter(TextureFilter.TRILINEAR).withBackground(SKY)
+                .withBorderStyle(new BorderStyle(BorderStyle.Colouring.YELLOW, true));
     }
 
     /**

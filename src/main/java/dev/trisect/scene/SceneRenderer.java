@@ -20,7 +20,7 @@ import java.util.Optional;
  * <pre>{@code
  * try (SceneRenderer renderer = new SceneRenderer()) {
  *     Framebuffer frame = new Framebuffer(800, 600);
- *     FrameStats stats = renderer.render(scene, camera, RenderSettings.defaults(), frame);
+ *     FrameStats stats = renderer.render(scene, camera, RenderSettings.display(), frame);
  *     renderer.pick(400, 300).ifPresent(p -> System.out.println(p.object().name() + " at " + p.point()));
  * }
  * }</pre>
@@ -76,7 +76,7 @@ public final class SceneRenderer implements AutoCloseable {
         checkOpen();
         Objects.requireNonNull(scene, "scene is null");
         Objects.requireNonNull(camera, "camera is null");
-        Objects.requireNonNull(settings, "render settings are null: use RenderSettings.defaults()");
+        Objects.requireNonNull(settings, "render settings are null: use RenderSettings.display() or defaults()");
         Objects.requireNonNull(frame, "framebuffer is null");
         Drawn d = new Drawn(scene.snapshot(), camera, settings, frame.width(), frame.height(), draws);
         FrameStats stats = renderer.render(draws, settings, frame);
@@ -135,8 +135,9 @@ public final class SceneRenderer implements AutoCloseable {
     }
 
     /**
-     * Draws {@code scene} seen by {@code camera} with the default settings ({@link RenderSettings#defaults()}:
-     * tessellated, black background) into a new image.
+     * Draws {@code scene} seen by {@code camera} into a new image as a new {@code TrisectView} shows it,
+     * with {@link RenderSettings#display()} (trilinear filtering, sky-blue background); the command
+     * line's look is {@link RenderSettings#defaults()}, given to the form taking settings.
      *
      * @param scene  what to draw
      * @param camera where from
@@ -145,7 +146,7 @@ public final class SceneRenderer implements AutoCloseable {
      * @return the picture, {@code TYPE_INT_RGB}
      */
     public static BufferedImage renderImage(Scene scene, Camera camera, int width, int height) {
-        return renderImage(scene, camera, RenderSettings.defaults(), width, height);
+        return renderImage(scene, camera, RenderSettings.display(), width, height);
     }
 
     /**

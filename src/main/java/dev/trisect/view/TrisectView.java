@@ -187,8 +187,9 @@ public class TrisectView extends JComponent implements AutoCloseable {
     }
 
     /**
-     * The settings frames are drawn with. A new view draws tessellated with trilinear filtering on
-     * a sky-blue background, borders off (faded yellow when turned on).
+     * The settings frames are drawn with. A new view draws with {@link RenderSettings#display()}
+     * (tessellated, trilinear filtering, a sky-blue background, borders off and faded yellow when turned
+     * on), as {@code SceneRenderer.renderImage} draws a picture.
      *
      * @return the settings in force
      */
@@ -285,8 +286,10 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * Hears about every frame drawn, on the render thread (see {@link FrameListener}).
      *
      * @param listener told of each frame
+     * @throws IllegalStateException after {@link #close()}
      */
     public void addFrameListener(FrameListener listener) {
+        life.checkOpen();
         listeners.addFrameListener(listener);
     }
 
@@ -305,8 +308,10 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * a good place for them.
      *
      * @param listener given each message, one line
+     * @throws IllegalStateException after {@link #close()}
      */
     public void addMessageListener(Consumer<String> listener) {
+        life.checkOpen();
         controller.addMessageListener(Objects.requireNonNull(listener, "listener"));
     }
 
@@ -326,8 +331,10 @@ public class TrisectView extends JComponent implements AutoCloseable {
      * click costs about one frame and frames cost nothing extra.
      *
      * @param listener told of each click on an object
+     * @throws IllegalStateException after {@link #close()}
      */
     public void addPickListener(PickListener listener) {
+        life.checkOpen();
         listeners.addPickListener(listener);
     }
 
@@ -366,8 +373,11 @@ public class TrisectView extends JComponent implements AutoCloseable {
      *
      * @param which the command
      * @return its action: the same object each time, shared with the view's key and the developer tools
+     * @throws IllegalStateException after {@link #close()}, as the setters and listeners do: a closed
+     *                               view takes no new commands (removing a listener stays allowed)
      */
     public Action action(ViewAction which) {
+        life.checkOpen();
         return controller.commands().byId(which.id);
     }
 

@@ -199,13 +199,17 @@ class TrisectViewGuiTest {
         List<Executable> refused = List.of(() -> view.setCamera(Camera.looking(new Vec3(0, 1, 3), Vec3.ZERO)),
                 () -> view.setScene(new Scene()), () -> view.setRenderSettings(RenderSettings.defaults()),
                 () -> view.setRenderScale(1), () -> view.setFrameTimeTarget(0),
-                () -> view.setCameraControls(CameraControls.ORBIT));
+                () -> view.setCameraControls(CameraControls.ORBIT),
+                () -> view.addFrameListener(frame -> { }), () -> view.addPickListener((pick, click) -> { }),
+                () -> view.addMessageListener(message -> { }), () -> view.action(ViewAction.BORDERS));
         for (Executable call : refused) {
             assertEquals("this TrisectView is closed: make a new one",
                     assertThrows(IllegalStateException.class, call).getMessage());
         }
         edt(() -> assertEquals("this TrisectView is closed: make a new one",
                 assertThrows(IllegalStateException.class, view::createDevToolsPanel).getMessage()));
+        FrameListener unwanted = frame -> { };
+        view.removeFrameListener(unwanted); // taking one away stays allowed
         edt(() -> {
             host.getContentPane().remove(view);
             host.getContentPane().add(view, BorderLayout.CENTER);

@@ -1,10 +1,7 @@
 package dev.trisect.view.internal;
 
-import dev.trisect.content.DemoScenes;
 import dev.trisect.metrics.HeatScale;
-import dev.trisect.render.BorderStyle;
 import dev.trisect.render.RenderSettings;
-import dev.trisect.texture.TextureFilter;
 
 /**
  * Everything the user has chosen, as one immutable value: the event thread replaces it, the render
@@ -21,9 +18,7 @@ public record ViewSettings(RenderSettings render, ViewKind view, double splitFra
                            double renderScale, HeatScale heatScale) {
 
     public static ViewSettings defaults() {
-        return new ViewSettings(RenderSettings.defaults().withBackground(DemoScenes.SKY)
-                .withBorderStyle(new BorderStyle(BorderStyle.Colouring.YELLOW, true)).withFilter(TextureFilter.TRILINEAR),
-                ViewKind.IMAGE, 0.5, true, 1.0, HeatScale.linear(2.0));
+        return new ViewSettings(RenderSettings.display(), ViewKind.IMAGE, 0.5, true, 1.0, HeatScale.linear(2.0));
     }
 
     public ViewSettings withRender(RenderSettings r) {
