@@ -52,7 +52,7 @@ final class FrameOptions {
     Vec3 up;
 
     @Option(names = "--fov", paramLabel = "DEG", defaultValue = "60",
-            description = "Vertical field of view in degrees, between 0 and 180 (default: ${DEFAULT-VALUE}).")
+            description = "Vertical field of view in degrees, from 1e-6 up to 180 (default: ${DEFAULT-VALUE}).")
     double fov;
 
     @Option(names = "--near", paramLabel = "N",

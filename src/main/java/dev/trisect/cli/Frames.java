@@ -1,7 +1,6 @@
 package dev.trisect.cli;
 
 import dev.trisect.base.InputException;
-import dev.trisect.base.internal.Counts;
 import dev.trisect.render.FrameStats;
 import dev.trisect.render.Framebuffer;
 
@@ -24,10 +23,9 @@ final class Frames {
      * non-finite coordinates, or corners too far from the view for double precision.
      */
     static void noteSkipped(CommonOptions common, FrameStats stats) {
-        if (stats.skippedInvalid() > 0) {
-            common.note(stats.skippedInvalid() + " of " + Counts.of(stats.trianglesIn(), "triangle") + " skipped: coordinates "
-                    + "not finite, or too far from the view to place in double precision (see "
-                    + "docs/reading-limits.md)");
+        String note = stats.skippedNote();
+        if (note != null) {
+            common.note(note);
         }
     }
 }

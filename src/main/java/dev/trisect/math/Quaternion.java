@@ -5,7 +5,9 @@ package dev.trisect.math;
  * positive angle about an axis turns counter-clockwise when the axis points at the viewer (as
  * {@code glRotate}).
  *
- * <p>The factories return unit quaternions; {@link #of} normalizes what it is given. Composition
+ * <p>The factories return unit quaternions; {@link #of} normalizes what it is given. Any finite,
+ * non-zero components are a rotation, also 1e-200 or 1e200 (they are scaled by a power of two before
+ * they are squared, as {@link Vec3#normalize} does), so {@link #matrix()} is always finite. Composition
  * follows matrices: {@code a.mul(b)} rotates by {@code b} first, then by {@code a}.
  *
  * @param x the i component
@@ -47,8 +49,26 @@ public record Quaternion(double x, double y, double z, double w) {
      * @return the unit quaternion
      */
     public static Quaternion of(double x, double y, double z, double w) {
-        double n = Math.sqrt(x * x + y * y + z * z + w * w);
-        return new Quaternion(x / n, y / n, z / n, w / n);
+        Quaternion q = new Quaternion(x, y, z, w).balanced();
+        double n = Math.sqrt(q.x * q.x + q.y * q.y + q.z * q.z + q.w * q.w);
+        return new Quaternion(q.x / n, q.y / n, q.z / n, q.w / n);
+    }
+
+    /**
+     * This quaternion, or when the sum of its squared components would overflow or lose its precision
+     * (components beyond about 1e150 or below 1e-150, which describe a rotation as well as any), the
+     * same one scaled by a power of two (exactly) so that its largest component is between 1 and 2:
+     * as {@link Vec3#normalize} divides by the largest component first.
+     */
+    private Quaternion balanced() {
+        double n = x * x + y * y + z * z + w * w;
+        if (n >= 0x1p-500 && n <= 0x1p500) {
+            return this;
+        }
+        double largest = Math.max(Math.max(Math.abs(x), Math.abs(y)), Math.max(Math.abs(z), Math.abs(w)));
+        // getExponent of a subnormal is MIN_EXPONENT - 1: take it from the value scaled up (exactly) first.
+        int e = largest >= Double.MIN_NORMAL ? Math.getExponent(largest) : Math.getExponent(largest * 0x1p60) - 60;
+        return new Quaternion(Math.scalb(x, -e), Math.scalb(y, -e), Math.scalb(z, -e), Math.scalb(w, -e));
     }
 
     /**
@@ -59,9 +79,14 @@ public record Quaternion(double x, double y, double z, double w) {
      * @return the rotation
      */
     public static Quaternion axisAngle(Vec3 axis, double degrees) {
-        double len = axis.length();
-        if (!(len > 0) || !Double.isFinite(len)) {
+        if (!axis.isFinite() || (axis.x() == 0 && axis.y() == 0 && axis.z() == 0)) {
             throw new IllegalArgumentException("rotation axis must be a finite non-zero vector, got " + axis);
+        }
+        double len = axis.length();
+        if (!(len > 1e-150 && len < 1e150)) {
+            // Its squared length overflows or underflows: its direction, as Vec3.normalize finds it.
+            axis = axis.normalize();
+            len = 1;
         }
         if (!Double.isFinite(degrees)) {
             throw new IllegalArgumentException("rotation angle must be finite, got " + degrees);
@@ -108,6 +133,13 @@ public record Quaternion(double x, double y, double z, double w) {
      * @return the combined rotation
      */
     public Quaternion mul(Quaternion o) {
+        // Of the balanced factors: 1e200 times 1e200 would overflow, though each is a rotation.
+        Quaternion a = balanced();
+        Quaternion b = o.balanced();
+        return a.product(b);
+    }
+
+    private Quaternion product(Quaternion o) {
         return of(w * o.x + x * o.w + y * o.z - z * o.y,
                 w * o.y - x * o.z + y * o.w + z * o.x,
                 w * o.z + x * o.y - y * o.x + z * o.w,
@@ -143,7 +175,12 @@ public record Quaternion(double x, double y, double z, double w) {
      */
     public Mat4 matrix() {
         // The standard unit-quaternion rotation matrix (Shoemake, "Animating rotation with quaternion
-        // curves", SIGGRAPH 1985), normalized here so that a slightly off-unit value still rotates.
+        // curves", SIGGRAPH 1985), normalized here so that a slightly off-unit value still rotates, and
+        // balanced first so that components of 1e200 or 1e-200 rotate too (their squares would not).
+        Quaternion q = balanced();
+        if (q != this) {
+            return q.matrix();
+        }
         double n = x * x + y * y + z * z + w * w;
         double s = 2 / n;
         double xx = x * x * s;

@@ -13,12 +13,19 @@ import java.util.Objects;
  *
  * @param translation the offset, in the parent's units (world units for an object at the top of a scene)
  * @param rotation    the rotation about the object's origin
- * @param scale       the scale along the object's own x, y and z axes, each finite and non-zero
+ * @param scale       the scale along the object's own x, y and z axes, each finite, non-zero and at most
+ *                    {@link #MAX_SCALE} in magnitude
  */
 public record Transform(Vec3 translation, Quaternion rotation, Vec3 scale) {
 
     /** No translation, no rotation, unit scale. */
     public static final Transform IDENTITY = new Transform(Vec3.ZERO, Quaternion.IDENTITY, new Vec3(1, 1, 1));
+
+    /**
+     * The largest scale on an axis: half the largest double, so that a rotation matrix's entries (at
+     * most 1 and a few units of rounding) times the scale stay finite.
+     */
+    public static final double MAX_SCALE = Double.MAX_VALUE / 2;
 
     /**
      * Checks the parts.
@@ -27,7 +34,8 @@ public record Transform(Vec3 translation, Quaternion rotation, Vec3 scale) {
      * @param rotation    the rotation about the object's origin
      * @param scale       the scale per axis, applied first
      * @throws NullPointerException     for a missing part
-     * @throws IllegalArgumentException for a non-finite translation or a non-finite or zero scale
+     * @throws IllegalArgumentException for a non-finite translation, or a scale that is not finite, is zero or
+     *                                  exceeds {@link #MAX_SCALE} on an axis
      */
     public Transform {
         Objects.requireNonNull(translation, "transform translation is null");
@@ -39,7 +47,12 @@ public record Transform(Vec3 translation, Quaternion rotation, Vec3 scale) {
         if (!scale.isFinite() || scale.x() == 0 || scale.y() == 0 || scale.z() == 0) {
             throw new IllegalArgumentException("scale must be finite and non-zero on every axis, got " + scale);
         }
+        if (Math.max(Math.abs(scale.x()), Math.max(Math.abs(scale.y()), Math.abs(scale.z()))) > MAX_SCALE) {
+            throw new IllegalArgumentException("scale " + scale + " is too large: at most " + MAX_SCALE
+                    + " on an axis, so that the rotated scale in the matrix stays a finite double");
+        }
     }
+
 
     /**
      * A translation alone.

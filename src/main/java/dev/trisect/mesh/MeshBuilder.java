@@ -90,8 +90,15 @@ public final class MeshBuilder {
      * @param y object space
      * @param z object space
      * @return the new position's index
+     * @throws IllegalArgumentException when a coordinate is NaN, infinite or beyond the float range (about
+     *                                  3.4e38 in magnitude), as {@code Transform} and {@code Camera} refuse
+     *                                  such values: the mesh keeps floats, and a triangle with such a
+     *                                  corner could not be drawn
      */
     public int position(double x, double y, double z) {
+        if (!(isFloat(x) && isFloat(y) && isFloat(z))) {
+            throw notFloat("position", x, y, z);
+        }
         if (3 * positionCount + 3 > positions.length) {
             positions = Arrays.copyOf(positions, positions.length * 2);
         }
@@ -117,8 +124,12 @@ public final class MeshBuilder {
      * @param u texture coordinate, (0, 0) the bottom-left
      * @param v texture coordinate
      * @return the new texture coordinate's index
+     * @throws IllegalArgumentException when a coordinate is NaN, infinite or beyond the float range
      */
     public int uv(double u, double v) {
+        if (!(isFloat(u) && isFloat(v))) {
+            throw notFloat("texture coordinate", u, v);
+        }
         if (2 * uvCount + 2 > uvs.length) {
             uvs = Arrays.copyOf(uvs, uvs.length * 2);
         }
@@ -260,6 +271,21 @@ public final class MeshBuilder {
         int td = uv(u3, v3);
         triangle(a, b, c, ta, tb, tc);
         triangle(a, c, d, ta, tc, td);
+    }
+
+    /** Whether {@code d} is kept as a finite float: not NaN, not infinite, not beyond the float range. */
+    private static boolean isFloat(double d) {
+        return Float.isFinite((float) d);
+    }
+
+    /** The refusal of values that are not all finite floats, naming them. */
+    private static IllegalArgumentException notFloat(String what, double... values) {
+        StringBuilder named = new StringBuilder();
+        for (double v : values) {
+            named.append(named.length() == 0 ? "" : ", ").append(v);
+        }
+        return new IllegalArgumentException(what + " (" + named + ") is not a finite float: each coordinate must be a "
+                + "number of at most " + Float.MAX_VALUE + " in magnitude");
     }
 
     private void checkPosition(int p) {

@@ -1,5 +1,6 @@
 package dev.trisect.render;
 
+import dev.trisect.base.internal.Counts;
 import dev.trisect.base.internal.JsonObject;
 
 /**
@@ -60,6 +61,22 @@ public record FrameStats(long trianglesIn, long culledBackFace, long culledFrust
      */
     public boolean budgetReached() {
         return budgetDepth >= 0;
+    }
+
+    /**
+     * What to tell the user when the frame skipped triangles it could not place ({@code skippedInvalid}
+     * above 0): the line the command line notes on standard error and the view shows as its warning, so
+     * that geometry never vanishes silently.
+     *
+     * @return e.g. "2 of 12 triangles skipped: coordinates not finite, or too far from the view to place in
+     *         double precision (see docs/reading-limits.md)", or null when none was skipped
+     */
+    public String skippedNote() {
+        if (skippedInvalid <= 0) {
+            return null;
+        }
+        return skippedInvalid + " of " + Counts.of(trianglesIn, "triangle") + " skipped: coordinates not finite, "
+                + "or too far from the view to place in double precision (see docs/reading-limits.md)";
     }
 
     /**

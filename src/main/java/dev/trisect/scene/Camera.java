@@ -12,7 +12,7 @@ import dev.trisect.math.Viewport;
  * @param target point looked at, world space; {@link #MIN_DISTANCE} to {@link #MAX_DISTANCE} from {@code eye}
  * @param up     approximate up direction, world space; not zero and not parallel to the view direction;
  *               any finite magnitude (only its direction is used)
- * @param fovY   vertical field of view, degrees, in (0, 180)
+ * @param fovY   vertical field of view, degrees, from {@link #MIN_FOV} up to (not including) 180
  * @param near   distance to the near plane, world units, &gt; 0
  * @param far    distance to the far plane, world units, &gt; near and at most {@link #maxFar maxFar(near)}
  *               (any finite far when near is at most 0.5)
@@ -25,6 +25,15 @@ public record Camera(Vec3 eye, Vec3 target, Vec3 up, double fovY, double near, d
     public static final double DEFAULT_NEAR = 0.1;
     /** Default far distance, world units. */
     public static final double DEFAULT_FAR = 1000;
+
+    /**
+     * Narrowest vertical field of view, degrees. The projection scales x and y by {@code 1/tan(fov/2)},
+     * 1.1e8 here; a triangle crossing the edge of the view must be clipped, and clipping is exact
+     * enough only while its clip coordinates stay within about 1.7e10 times its depth (see
+     * docs/reading-limits.md): at this field of view, triangles up to about 150 times their distance
+     * across. At 1e-9 degrees the demo's and the floor's triangles in view were already skipped.
+     */
+    public static final double MIN_FOV = 1e-6;
 
     /** Largest distance from eye to target, world units: its square stays a finite double. */
     public static final double MAX_DISTANCE = 1e150;
@@ -51,6 +60,11 @@ public record Camera(Vec3 eye, Vec3 target, Vec3 up, double fovY, double near, d
         }
         if (!(fovY > 0 && fovY < 180)) {
             throw new IllegalArgumentException("field of view must be between 0 and 180 degrees, got " + fovY);
+        }
+        if (fovY < MIN_FOV) {
+            throw new IllegalArgumentException("field of view " + fovY + " is too narrow: at least " + MIN_FOV
+                    + " degrees, where the projection's scale (1/tan(fov/2)) still lets triangles in view be clipped "
+                    + "in double precision");
         }
         if (!(near > 0) || Double.isInfinite(near)) {
             throw new IllegalArgumentException("near must be a positive number, got " + near);

@@ -1,5 +1,6 @@
 package dev.trisect.scene;
 
+import dev.trisect.math.Mat4;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
@@ -40,8 +41,9 @@ public sealed class Group extends Node permits Scene {
      * @param nodes the nodes to add, in order
      * @return this group, for chaining
      * @throws NullPointerException     for a null node (and nothing is added)
-     * @throws IllegalArgumentException for a {@link Scene}, or a group that holds this one (a cycle); nothing
-     *                                  is added
+     * @throws IllegalArgumentException for a {@link Scene}, a group that holds this one (a cycle), or a node
+     *                                  whose transform, combined with this group's world matrix, would give an
+     *                                  object a world matrix that is not finite; nothing is added
      */
     public Group add(Node... nodes) {
         for (Node n : nodes) {
@@ -59,6 +61,10 @@ public sealed class Group extends Node permits Scene {
                         throw new IllegalArgumentException(n + " holds " + this + ": adding it would make a cycle");
                     }
                 }
+            }
+            Mat4 world = worldMatrix();
+            for (Node n : nodes) {
+                checkWorld(n, world.mul(n.matrix()), "adding it to " + this);
             }
             for (Node n : nodes) {
                 if (n.parent != null) {

@@ -47,13 +47,19 @@ public abstract sealed class Node permits Group, SceneObject {
      * {@code transform} and then through each enclosing group's transform.
      *
      * @param transform the new transform, in the parent's space
-     * @throws NullPointerException when {@code transform} is null
+     * @throws NullPointerException     when {@code transform} is null
+     * @throws IllegalArgumentException when, combined with the enclosing groups' transforms (or, for a
+     *                                  group, with those of the nodes in it), it would give an object a
+     *                                  world matrix that is not finite (a group scaled 1e200 holding an
+     *                                  object scaled 1e200); the node keeps its transform
      */
     public void setTransform(Transform transform) {
         Objects.requireNonNull(transform, "transform is null: use Transform.IDENTITY for none");
         Mat4 m = transform.matrix();
         LOCK.lock();
         try {
+            Group p = parent;
+            checkWorld(this, p == null ? m : p.worldMatrix().mul(m), "its transform " + transform);
             this.transform = transform;
             this.matrix = m;
         } finally {
@@ -127,6 +133,31 @@ public abstract sealed class Node permits Group, SceneObject {
             return m;
         } finally {
             LOCK.unlock();
+        }
+    }
+
+    /**
+     * Checks, under {@link #LOCK}, that {@code node} placed by {@code world} (its world matrix as it would
+     * be) and every node under it get finite world matrices: a product of valid transforms can overflow,
+     * and an object whose matrix holds an infinity would vanish from every frame without a word.
+     *
+     * @param cause what would place it so, for the message
+     * @throws IllegalArgumentException naming the node, its world matrix's largest entry and the cause
+     */
+    static void checkWorld(Node node, Mat4 world, String cause) {
+        for (int r = 0; r < 4; r++) {
+            for (int c = 0; c < 4; c++) {
+                if (!Double.isFinite(world.get(r, c))) {
+                    throw new IllegalArgumentException(cause + " would give " + node + " a world matrix that is not "
+                            + "finite (" + world.get(r, c) + " in row " + r + ", column " + c + "): the enclosing "
+                            + "groups' transforms and its own multiply beyond double range");
+                }
+            }
+        }
+        if (node instanceof Group g) {
+            for (Node n : g.children()) {
+                checkWorld(n, world.mul(n.matrix), cause);
+            }
         }
     }
 

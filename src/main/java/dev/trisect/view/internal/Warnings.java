@@ -4,7 +4,10 @@ import dev.trisect.perf.BudgetController;
 import dev.trisect.render.FrameStats;
 import java.util.Locale;
 
-/** The status bar's warning when a frame hit a cap or its time budget; null when all is well. */
+/**
+ * The status bar's warning when a frame hit a cap, skipped triangles it could not place, or missed its
+ * time budget; null when all is well.
+ */
 public final class Warnings {
     private Warnings() {
     }
@@ -19,6 +22,14 @@ public final class Warnings {
             w.append(String.format(Locale.ROOT, "Cap reached on %d triangle%s: %d piece%s filled per pixel "
                     + "(slivers included; outlined in magenta with the borders, B)", stats.capsReached(),
                     stats.capsReached() == 1 ? "" : "s", stats.piecesFallback(), stats.piecesFallback() == 1 ? "" : "s"));
+        }
+        // Never silently: triangles the renderer could not place (as the command line notes them).
+        String skipped = stats.skippedNote();
+        if (skipped != null) {
+            if (w.length() > 0) {
+                w.append(". ");
+            }
+            w.append(Character.toUpperCase(skipped.charAt(0))).append(skipped.substring(1));
         }
         // Said only when the controller itself found the target out of reach: then the threshold it chose,
         // which the tools show, is the ceiling named here.

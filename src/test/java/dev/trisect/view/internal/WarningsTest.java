@@ -51,4 +51,18 @@ class WarningsTest {
             assertNull(Warnings.of(s, new ViewState.BudgetChoice(0.25, l, 23.4, 16.7, 0.5)), l.name());
         }
     }
+
+    @Test
+    void trianglesTheRendererCouldNotPlaceAreSaidAsTheCommandLineNotesThem() {
+        FrameStats ok = frame(TessellationSettings.defaults());
+        FrameStats skipped = new FrameStats(ok.trianglesIn(), ok.culledBackFace(), ok.culledFrustum(),
+                ok.culledDegenerate(), 3, ok.clipped(), ok.pieces(), ok.piecesOffScreen(), ok.splits(),
+                ok.deepestSplit(), ok.capsReached(), ok.piecesFallback(), ok.pieceBudget(), ok.budgetDepth(),
+                ok.pixelsWritten(), ok.threads(), ok.transformNanos(), ok.clipNanos(), ok.tessellateNanos(),
+                ok.rasterNanos(), ok.overlayNanos(), ok.bandTimesEstimated(), ok.totalNanos());
+        String w = Warnings.of(skipped, null);
+        assertTrue(w != null && w.contains("3 of " + ok.trianglesIn() + " triangles skipped")
+                && w.contains("double precision"), w);
+    }
 }
+
