@@ -2,6 +2,7 @@ package dev.trisect.cli;
 
 import dev.trisect.base.InputException;
 import java.io.PrintWriter;
+import java.nio.file.Path;
 import java.util.List;
 import picocli.CommandLine;
 import picocli.CommandLine.ParseResult;
@@ -48,6 +49,9 @@ public final class Cli {
         for (CommandLine sub : cl.getSubcommands().values()) {
             sub.getCommandSpec().versionProvider(new Version());
         }
+        // Every file name the user gives becomes a path through one converter, with one message for a name
+        // the locale cannot map (see Converters.path).
+        cl.registerConverter(Path.class, Converters::path);
         cl.setOut(out);
         cl.setErr(err);
         cl.setParameterExceptionHandler((ex, arguments) -> {
@@ -84,7 +88,12 @@ public final class Cli {
             return new CommandLine.RunLast().execute(parseResult);
         });
         // Made before the work: when the heap is exhausted, building a message could fail too.
-        String renderingOom = "trisect: out of memory (lower --max-frame-pieces or --size, or give Java more with -Xmx)";
+        // --size is what bounds a frame's memory (its buffers, and the pieces beyond one per triangle, which the
+        // automatic budget gives per pixel); --max-frame-pieces cannot go below one piece per triangle, so it
+        // did not help a large model. A model that does not fit while it is read gets its own message.
+        String renderingOom = "trisect: out of memory (use a smaller --size, or give Java more with -Xmx)";
+        String sceneOom = "trisect: out of memory: the scene needs more than the heap holds (give Java more with "
+                + "-Xmx, e.g. java -Xmx4g -jar trisect.jar)";
         String otherOom = "trisect: out of memory (give Java more with -Xmx, e.g. java -Xmx4g -jar trisect.jar)";
         try {
             int status = cl.execute(args);
@@ -98,9 +107,10 @@ public final class Cli {
             }
             return status;
         } catch (OutOfMemoryError e) {
-            // Only the commands that render a frame have --max-frame-pieces, and only there does --size
-            // decide the memory (export refuses --size).
-            err.println(rendersFrame(cl) ? renderingOom : otherOom);
+            // Only the commands that render a frame have --size, and only there does it decide the memory
+            // (export refuses --size).
+            // A small frame: a smaller --size would not help, the scene's storage is what fills the heap.
+            err.println(!rendersFrame(cl) ? otherOom : Frames.frameMatters() ? renderingOom : sceneOom);
             err.flush();
             return 1;
         }

@@ -10,6 +10,7 @@ import dev.trisect.render.SplitPolicy;
 import dev.trisect.render.TessellationSettings;
 import dev.trisect.texture.TextureFilter;
 import java.io.File;
+import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.Locale;
 import picocli.CommandLine.ITypeConverter;
@@ -92,7 +93,22 @@ final class Converters {
                 throw new TypeConversionException(quote(value) + " ends with a separator, so it names a directory: "
                         + "give the name of the file to write");
             }
+            return path(value);
+        }
+    }
+
+    /**
+     * A file name as a path, or the message docs/reading-limits.md promises when Java cannot map it to
+     * one: under a locale that is not UTF-8 ({@code LANG=C}) a name outside ASCII cannot be a path
+     * (picocli's own message named the exception and the interface).
+     */
+    static Path path(String value) {
+        try {
             return Path.of(value);
+        } catch (InvalidPathException e) {
+            throw new TypeConversionException("invalid file name " + quote(value) + ": Java cannot map it to a path "
+                    + "under this locale (file names in " + System.getProperty("sun.jnu.encoding")
+                    + "); run under a UTF-8 locale, e.g. LANG=C.UTF-8");
         }
     }
 

@@ -114,7 +114,13 @@ final class FrameOptions {
             if (spec.commandLine().getParseResult().hasMatchedOption("--scene")) {
                 throw InputException.usage("--obj and --scene both name what to draw; give one of them");
             }
-            return SceneLoader.load(obj, texture, notes);
+            try {
+                return SceneLoader.load(obj, texture, notes);
+            } catch (OutOfMemoryError e) {
+                // Reading comes before any frame: --size cannot help here, only a larger heap.
+                throw new InputException(obj + ": not enough memory to read this model (give Java more with -Xmx, "
+                        + "e.g. java -Xmx4g -jar trisect.jar)");
+            }
         }
         if (texture != null) {
             throw InputException.usage("--texture applies to --obj; the built-in scenes bring their own textures");

@@ -9,7 +9,19 @@ final class Frames {
     private Frames() {
     }
 
+    /** Bytes of the frame last allocated in this process (its colour and depth), 0 before any. */
+    private static volatile long frameBytes;
+
+    /**
+     * Whether a smaller {@code --size} would free a good part of the heap: the frame allocated takes an
+     * eighth of it or more. Otherwise the scene's own storage (per triangle) is what fills it.
+     */
+    static boolean frameMatters() {
+        return frameBytes >= Runtime.getRuntime().maxMemory() / 8;
+    }
+
     static Framebuffer allocate(Converters.Size size) {
+        frameBytes = 8L * size.width() * size.height();
         try {
             return new Framebuffer(size.width(), size.height());
         } catch (OutOfMemoryError e) {

@@ -69,6 +69,11 @@ final class Chunks {
         }
     }
 
+    /** Drops every chunk with its storage; the next frame makes those it needs. */
+    void release() {
+        chunks = new Chunk[0];
+    }
+
     /** Chunk {@code c}. */
     Chunk get(int c) {
         return chunks[c];

@@ -49,6 +49,12 @@ final class ClipSpace {
         }
     }
 
+    /** Gives the arrays back; the next {@link #transform} makes them anew. */
+    void release() {
+        clip = new double[0];
+        invalid = new boolean[0];
+    }
+
     /** Positions the arrays hold room for. */
     int capacity() {
         return invalid.length;

@@ -37,6 +37,12 @@ final class FrameGeometry {
         chunkGeometry = new ChunkGeometry(threads);
     }
 
+    /** Drops the chunks and the clip-space positions with all their storage (see {@link FrameRenderer#release}). */
+    void release() {
+        clipSpace.release();
+        chunks.release();
+    }
+
     /** The clip-space positions of the last {@link #run}. */
     ClipSpace clipSpace() {
         return clipSpace;

@@ -257,8 +257,28 @@ public final class FrameRenderer implements AutoCloseable {
         }
     }
 
-    /** Triangles the chunks' screen-triangle storage holds room for, for tests of trimming. */
-    long retainedTriangleCapacity() {
+    /**
+     * Gives back every working buffer now — the chunks with their screen triangles, split trees and
+     * bands, the clip-space positions, the outline plans — instead of after the retention policy's
+     * frames ({@link #TRIM_FRAMES}); they grow again with the next frame. For when the scene is replaced:
+     * a view then holds the old scene's storage no longer than the new one takes to load. The last
+     * frame's pieces go too: {@link #pieceAt} and the like answer as before the first frame, and
+     * {@link #drawBorders} outlines nothing.
+     */
+    public void release() {
+        checkOpen();
+        drawn = null;
+        geometry.release();
+        outlines.release();
+    }
+
+    /**
+     * Triangles the chunks' screen-triangle storage holds room for: what the renderer keeps for the
+     * scenes it drew, for tests and diagnostics of trimming.
+     *
+     * @return room for screen triangles, in triangles
+     */
+    public long retainedTriangleCapacity() {
         return geometry.chunks().retainedTriangleCapacity();
     }
 

@@ -83,6 +83,11 @@ final class Outlines {
         used = 0;
     }
 
+    /** Drops every plan with its storage; the next pass makes those it needs. */
+    void release() {
+        plans = new OutlinePlan[0];
+    }
+
     /** Plans kept, one per chunk outlined lately. */
     int plans() {
         return plans.length;

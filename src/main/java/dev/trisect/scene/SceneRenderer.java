@@ -93,13 +93,18 @@ public final class SceneRenderer implements AutoCloseable {
      * frame recorded UV output ({@link Framebuffer#recordUv}) and nothing has been drawn into its
      * framebuffer since ({@link Framebuffer#clearCount()}), it is read from there; otherwise the
      * frame is drawn once more, with UV output, into a framebuffer of its own (the same pixels: drawing
-     * is deterministic) — about the cost of one frame.
+     * is deterministic) — about the cost of one frame, and {@value #REDRAW_BYTES_PER_PIXEL} bytes a pixel
+     * of memory (colour, depth and the UV output), 8 GiB for a 16384x16384 frame. When that does not fit
+     * in Java's heap, pick refuses with a message before drawing; a frame drawn with UV output recorded
+     * needs nothing more.
      *
      * @param x the pixel's column, 0 at the left
      * @param y the pixel's row, 0 at the top
      * @return the pick, or empty where the pixel shows the background, or before the first frame
      * @throws IllegalArgumentException when (x, y) is outside the last frame
-     * @throws IllegalStateException    after {@link #close()}
+     * @throws IllegalStateException    after {@link #close()}, or when the frame must be drawn again for the
+     *                                  pick and its framebuffer with UV output does not fit in the heap (the
+     *                                  message says so and what helps)
      */
     public synchronized Optional<Pick> pick(int x, int y) {
         checkOpen();
@@ -118,8 +123,7 @@ public final class SceneRenderer implements AutoCloseable {
         double[] uv = held != null && held.uv() != null && held.uv() == d.uvArray && held.clearCount() == d.uvClears
                 ? held.uv() : null;
         if (uv == null) {
-            Framebuffer f = new Framebuffer(d.width, d.height);
-            f.recordUv(true);
+            Framebuffer f = redrawFrame(d.width, d.height);
             renderer.render(d.draws, d.settings.withBorders(false), f);
             d.uvFrame = f;
             d.uvArray = f.uv();
@@ -132,6 +136,36 @@ public final class SceneRenderer implements AutoCloseable {
             return Optional.empty();
         }
         return Optional.of(d.pick(id, uv[i], uv[i + 1], x, y));
+    }
+
+    /** Bytes a pixel of {@link #pick}'s redraw takes: colour and depth (4 bytes each), UV output (3 doubles). */
+    static final int REDRAW_BYTES_PER_PIXEL = 32;
+
+    /**
+     * A framebuffer recording UV output for {@link #pick}'s redraw, or a refusal naming what it needs when
+     * it cannot fit: refused before allocating when it exceeds the heap's maximum, and likewise when the
+     * allocation itself runs out (the arrays made are garbage at once).
+     */
+    private static Framebuffer redrawFrame(int width, int height) {
+        long bytes = (long) width * height * REDRAW_BYTES_PER_PIXEL;
+        if (bytes >= Runtime.getRuntime().maxMemory()) {
+            throw redrawTooLarge(width, height, bytes);
+        }
+        try {
+            Framebuffer f = new Framebuffer(width, height);
+            f.recordUv(true);
+            return f;
+        } catch (OutOfMemoryError e) {
+            throw redrawTooLarge(width, height, bytes);
+        }
+    }
+
+    private static IllegalStateException redrawTooLarge(int width, int height, long bytes) {
+        return new IllegalStateException(String.format(java.util.Locale.ROOT, "pick: the last frame (%dx%d) "
+                + "recorded no UV output, and drawing it again with UV output needs %.1f MiB (%d bytes a pixel), "
+                + "more than Java's heap has room for: record the UV output as you draw (Framebuffer.recordUv(true)), "
+                + "draw a smaller frame, or give Java more with -Xmx", width, height, bytes / 1048576.0,
+                REDRAW_BYTES_PER_PIXEL));
     }
 
     /**

@@ -5,6 +5,7 @@ import dev.trisect.content.AssetScenes;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.content.SceneAsset;
 import dev.trisect.render.RenderSettings;
+import dev.trisect.scene.Scene;
 import dev.trisect.view.FrameInfo;
 import dev.trisect.view.TrisectView;
 import dev.trisect.view.ViewAction;
@@ -21,6 +22,7 @@ import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
+import java.lang.ref.SoftReference;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
@@ -320,6 +322,25 @@ final class DemoWindow {
     /** Loads an OBJ in the background (see {@link FileMenu#load}). */
     void loadObj(Path file) {
         fileMenu.load(file);
+    }
+
+    /**
+     * Takes the scene on screen away (an empty one shows until the next), so that its memory can go
+     * while another loads.
+     *
+     * @return the scene taken away, softly held: the collector may take it when memory runs short
+     */
+    SoftReference<Scene> releaseScene() {
+        Scene shown = view.getScene();
+        view.setScene(new Scene());
+        return new SoftReference<>(shown);
+    }
+
+    /** Shows {@code s} again after a load failed, unless it is gone (null) or another scene shows. */
+    void restoreScene(Scene s) {
+        if (s != null && view.getScene().children().isEmpty()) {
+            view.setScene(s);
+        }
     }
 
     /** Shows a scene from its own camera, named in the title. */

@@ -5,7 +5,9 @@ import dev.trisect.content.DemoScenes;
 import dev.trisect.content.SceneAsset;
 import dev.trisect.content.SceneLoader;
 import java.awt.event.InputEvent;
+import dev.trisect.scene.Scene;
 import java.awt.event.KeyEvent;
+import java.lang.ref.SoftReference;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -161,6 +163,9 @@ final class FileMenu {
     private SwingWorker<SceneAsset, Void> inBackground(Supplier<SceneAsset> make, Consumer<SceneAsset> shown,
                                                        Consumer<String> failed) {
         long request = ++asked;
+        // The scene on screen goes before the next is made, so that the largest model that fits alone
+        // opens after another; it comes back if the new one fails and the collector has not taken it.
+        SoftReference<Scene> previous = window.releaseScene();
         SwingWorker<SceneAsset, Void> worker = new SwingWorker<>() {
             @Override
             protected SceneAsset doInBackground() {
@@ -175,6 +180,7 @@ final class FileMenu {
                 try {
                     shown.accept(get());
                 } catch (ExecutionException e) {
+                    window.restoreScene(previous.get());
                     String line = "trisect: " + DemoWindow.message(e.getCause());
                     window.status(line);
                     failed.accept(line);

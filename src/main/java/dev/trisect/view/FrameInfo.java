@@ -18,8 +18,9 @@ import dev.trisect.scene.Camera;
  *                        overlay and anything the developer tools measured
  * @param framesPerSecond frames handed to the screen per second, over the last second
  * @param warning         one line for the user, starting with the sign "\u26a0", when a cap was reached
- *                        (pieces filled per pixel) or the frame budget's target is out of reach even at the
- *                        user's threshold; null when all is well
+ *                        (pieces filled per pixel), triangles were skipped as unplaceable
+ *                        ({@link FrameStats#skippedNote()}), or the frame budget's target is out of reach even
+ *                        at the user's threshold; null when all is well
  */
 public record FrameInfo(long number, int width, int height, Camera camera, RenderSettings settings,
                         FrameStats stats, double frameMillis, double framesPerSecond, String warning) {

@@ -87,4 +87,24 @@ class ScratchTrimTest {
             assertEquals(0, r.retainedOutlinePlans(), "no frame outlined lately");
         }
     }
+
+    /** release() gives everything back at once, and the next frame is the same picture. */
+    @Test
+    void releaseGivesEverythingBackAndTheNextFrameIsTheSame() {
+        SceneAsset scene = DemoScenes.demo();
+        Mat4 vp = scene.camera().viewProjection(new Viewport(320, 200));
+        RenderSettings withBorders = RenderSettings.defaults().withBorders(true);
+        try (FrameRenderer r = new FrameRenderer(2)) {
+            Framebuffer before = new Framebuffer(320, 200);
+            r.render(scene.mesh(), scene.textureArray(), vp, withBorders, before);
+            assertTrue(r.retainedTriangleCapacity() > 0 && r.retainedPositionCapacity() > 0);
+            r.release();
+            assertEquals(0, r.retainedTriangleCapacity());
+            assertEquals(0, r.retainedPositionCapacity());
+            assertEquals(0, r.retainedOutlinePlans());
+            Framebuffer after = new Framebuffer(320, 200);
+            r.render(scene.mesh(), scene.textureArray(), vp, withBorders, after);
+            org.junit.jupiter.api.Assertions.assertArrayEquals(before.color(), after.color());
+        }
+    }
 }

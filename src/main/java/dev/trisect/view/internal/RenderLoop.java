@@ -46,6 +46,8 @@ public final class RenderLoop implements Runnable {
     /** Time the last frame spent on the comparison: the per-pixel render, other paths' timing, measuring. */
     private long compareStageNanos;
     private float[] displacement;
+    /** The scene of the last frame drawn: another one releases the renderer's storage first. */
+    private Scene drawnScene;
     private final CameraDriver cameras;
     private final BudgetHook budget = new BudgetHook();
     private volatile LoopListener listener;
@@ -80,6 +82,11 @@ public final class RenderLoop implements Runnable {
 
     public int threads() {
         return renderer.threads();
+    }
+
+    /** The loop's renderer, for tests of what it keeps. */
+    FrameRenderer renderer() {
+        return renderer;
     }
 
     /** Sets who hears about frames and problems (any thread; one listener). */
@@ -207,6 +214,14 @@ public final class RenderLoop implements Runnable {
         // One consistent snapshot of the scene for every render of this frame; the draws are the slot's
         // own, so that a click on the frame on screen is picked against what that frame drew.
         Scene scene = state.scene();
+        if (scene != drawnScene) {
+            // A scene replaced: its storage, sized for it, goes now rather than after the trim window, so
+            // that the view can load the largest model that fits alone after another.
+            renderer.release();
+            reference = null;
+            displacement = null;
+            drawnScene = scene;
+        }
         DrawnFrame drawn = new DrawnFrame(scene.snapshot(), camera, fw, fh, back.draws);
         Draws draws = back.draws;
         if (!state.toolsOpen() && settings.view() != ViewKind.IMAGE) {

@@ -1,0 +1,58 @@
+package dev.trisect.view.internal;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trisect.math.Vec3;
+import dev.trisect.mesh.Primitives;
+import dev.trisect.scene.Camera;
+import dev.trisect.scene.Material;
+import dev.trisect.scene.Scene;
+import dev.trisect.scene.SceneObject;
+import dev.trisect.texture.ProceduralTextures;
+import org.junit.jupiter.api.Test;
+
+/**
+ * A scene replaced in the view gives back the storage the renderer kept for the old one at its next
+ * frame, not after the retention policy's frames: the view can then load the largest model that fits
+ * alone after another.
+ */
+class SceneReleaseTest {
+    private static Scene of(int cells) {
+        Scene s = new Scene();
+        s.add(new SceneObject(Primitives.plane(20, 20, cells, cells), Material.of(ProceduralTextures.uvGrid(64))));
+        return s;
+    }
+
+    /** Waits (bounded, polling) until the loop has drawn {@code frames} frames in all. */
+    private static void awaitFrames(ViewState state, long frames) throws InterruptedException {
+        for (int poll = 0; poll < 15000 && state.progress().frames() < frames; poll++) {
+            Thread.sleep(2);
+        }
+        assertTrue(state.progress().frames() >= frames, "the loop draws");
+    }
+
+    @Test
+    void theOldScenesStorageGoesAtTheFirstFrameOfTheNewOne() throws Exception {
+        ViewState state = new ViewState(of(300), Camera.looking(new Vec3(0, 4, 8), Vec3.ZERO));
+        state.viewSize(320, 200);
+        RenderLoop loop = new RenderLoop(state, new TripleBuffer(), () -> { }, 2);
+        Thread t = new Thread(loop, "test-render");
+        t.start();
+        long large;
+        try {
+            awaitFrames(state, 2);
+            large = loop.renderer().retainedTriangleCapacity();
+            long drawn = state.progress().frames();
+            state.scene(of(1));
+            // One frame of the new scene, then stop: fewer frames than the retention policy waits for.
+            awaitFrames(state, drawn + 2);
+        } finally {
+            loop.stop();
+            t.join(10_000);
+        }
+        long small = loop.renderer().retainedTriangleCapacity();
+        assertTrue(large >= 20_000, "the 180,000-triangle grid's storage: " + large);
+        assertTrue(small < large / 10, "kept " + small + " triangles of room after the scene was replaced, " + large
+                + " before");
+    }
+}
