@@ -98,6 +98,8 @@ class ExamplesGuiTest {
         TrisectView view = onEdt(() -> find(frame.getContentPane(), TrisectView.class, null));
         assertNotNull(view);
         view.addFrameListener(frames::add);
+        // These tests watch frames flow: keep them coming, as an animation does (a still view idles).
+        view.addUpdateListener((step, number) -> true);
         waitFor("frames", () -> frames.size() >= 2);
         return view;
     }

@@ -68,6 +68,8 @@ public sealed class Group extends Node permits Scene {
             }
             for (Node n : nodes) {
                 if (n.parent != null) {
+                    // The scene it leaves changes too.
+                    n.parent.changed();
                     n.parent.detach(n);
                 }
                 List<Node> grown = new ArrayList<>(children.size() + 1);
@@ -76,6 +78,7 @@ public sealed class Group extends Node permits Scene {
                 children = List.copyOf(grown);
                 n.parent = this;
             }
+            changed();
             return this;
         } finally {
             LOCK.unlock();
@@ -95,6 +98,7 @@ public sealed class Group extends Node permits Scene {
                 return false;
             }
             detach(node);
+            changed();
             return true;
         } finally {
             LOCK.unlock();
@@ -109,6 +113,7 @@ public sealed class Group extends Node permits Scene {
                 n.parent = null;
             }
             children = List.of();
+            changed();
         } finally {
             LOCK.unlock();
         }

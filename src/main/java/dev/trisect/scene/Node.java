@@ -62,6 +62,7 @@ public abstract sealed class Node permits Group, SceneObject {
             checkWorld(this, p == null ? m : p.worldMatrix().mul(m), "its transform " + transform);
             this.transform = transform;
             this.matrix = m;
+            changed();
         } finally {
             LOCK.unlock();
         }
@@ -85,6 +86,7 @@ public abstract sealed class Node permits Group, SceneObject {
         LOCK.lock();
         try {
             this.visible = visible;
+            changed();
         } finally {
             LOCK.unlock();
         }
@@ -158,6 +160,20 @@ public abstract sealed class Node permits Group, SceneObject {
             for (Node n : g.children()) {
                 checkWorld(n, world.mul(n.matrix), cause);
             }
+        }
+    }
+
+    /**
+     * Counts a change a frame would show in the scene this node is in (nothing when it is in none):
+     * see {@link Scene#version()}. Under {@link #LOCK}.
+     */
+    final void changed() {
+        Node top = this;
+        while (top.parent != null) {
+            top = top.parent;
+        }
+        if (top instanceof Scene s) {
+            s.bump();
         }
     }
 

@@ -41,9 +41,30 @@ public final class Scene extends Group {
     public record Placed(SceneObject object, Mesh mesh, List<Material> materials, Mat4 world) {
     }
 
+    /** Changes counted by {@link #version()}; written under {@link Node#LOCK}. */
+    private volatile long version;
+
     /** An empty scene. */
     public Scene() {
         super("scene");
+    }
+
+    /**
+     * A number that grows with every change to this scene that a frame would show: a node added,
+     * removed, moved or shown or hidden, an object given other materials, anywhere in the tree. A view
+     * draws a new frame only when it grew (or something else changed), so it idles while the scene
+     * stands still. Pixels written into a texture in place are not counted (the texture is not part
+     * of the graph): ask a view for a frame then ({@code TrisectView.requestFrame()}).
+     *
+     * @return the count of changes so far, from 0
+     */
+    public long version() {
+        return version;
+    }
+
+    /** One more change; under {@link Node#LOCK}. */
+    void bump() {
+        version++;
     }
 
     /**

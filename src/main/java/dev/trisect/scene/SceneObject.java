@@ -115,6 +115,7 @@ public final class SceneObject extends Node {
         LOCK.lock();
         try {
             look = next;
+            changed();
         } finally {
             LOCK.unlock();
         }

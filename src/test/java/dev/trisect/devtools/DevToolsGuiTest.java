@@ -60,6 +60,8 @@ class DevToolsGuiTest {
             view = new TrisectView(AssetScenes.scene(DemoScenes.boxes()), 1);
             view.setPreferredSize(new Dimension(320, 240));
             view.addFrameListener(f -> frames.incrementAndGet());
+            // These tests watch frames flow: keep them coming, as an animation does (a still view idles).
+            view.addUpdateListener((step, frame) -> true);
             view.addMessageListener(messages::add);
             host.getContentPane().add(view);
             host.pack();

@@ -74,6 +74,8 @@ class DemoWindowGuiTest {
             return;
         }
         window = DemoApp.openForTest(DemoScenes.demo(), 2);
+        // These tests watch frames flow: keep them coming, as an animation does (a still view idles).
+        window.view().addUpdateListener((step, frame) -> true);
         robot = new Robot();
         robot.setAutoDelay(20);
         // Without a window manager the window has no keyboard until clicked.

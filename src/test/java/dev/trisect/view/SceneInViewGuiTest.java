@@ -68,6 +68,8 @@ class SceneInViewGuiTest {
             view.setCamera(Camera.looking(new Vec3(0, 0, 5), Vec3.ZERO));
             view.setCameraControls(CameraControls.NONE);
             view.addFrameListener(frames::add);
+            // These tests watch frames flow: keep them coming, as an animation does (a still view idles).
+            view.addUpdateListener((step, frame) -> true);
             host.add(view);
             host.pack();
             host.setLocation(0, 0);

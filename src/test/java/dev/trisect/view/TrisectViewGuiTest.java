@@ -69,6 +69,8 @@ class TrisectViewGuiTest {
             view = new TrisectView(AssetScenes.scene(DemoScenes.boxes()), 2);
             view.setPreferredSize(new Dimension(400, 300));
             view.addFrameListener(frames::add);
+            // These tests watch frames flow: keep them coming, as an animation does (a still view idles).
+            view.addUpdateListener((step, frame) -> true);
             JPanel side = new JPanel();
             side.add(new JButton("a host control"));
             host.getContentPane().add(view, BorderLayout.CENTER);

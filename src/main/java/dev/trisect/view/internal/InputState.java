@@ -92,6 +92,11 @@ public final class InputState {
         reset.set(true);
     }
 
+    /** Whether a reset waits to be taken. */
+    public boolean pendingReset() {
+        return reset.get();
+    }
+
     public boolean takeReset() {
         return reset.getAndSet(false);
     }

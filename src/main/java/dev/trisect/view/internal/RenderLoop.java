@@ -64,7 +64,18 @@ public final class RenderLoop implements Runnable {
 
         /** A frame could not be drawn; {@code message} is one line. The loop goes on with the next. */
         void problem(String message);
+
+        /**
+         * Before frame {@code frame} is drawn, {@code seconds} after the last one started: the host's
+         * update hooks run. Returns whether one of them asked for the frame after this one.
+         */
+        default boolean update(double seconds, long frame) {
+            return false;
+        }
     }
+
+    /** The longest time step an update hook is given, seconds: after a pause, things move on by at most this. */
+    public static final double MAX_STEP_SECONDS = 0.25;
 
     /**
      * @param state   what the loop shares with the event thread
@@ -130,29 +141,33 @@ public final class RenderLoop implements Runnable {
     public void run() {
         long last = System.nanoTime();
         FrameRate rate = new FrameRate();
+        FrameDemand demand = state.demand;
         try {
             while (running) {
                 servePicks();
                 int w = state.viewWidth();
                 int h = state.viewHeight();
-                ViewSettings settings = state.settings();
-                long now = System.nanoTime();
-                double dt = Math.min(0.1, (now - last) / 1e9);
-                last = now;
                 if (w <= 0 || h <= 0) {
                     // Minimized or not shown yet: nothing to draw.
                     rate.pause();
                     sleep(50);
                     continue;
                 }
-                int fw = Math.max(1, (int) Math.round(w * settings.renderScale()));
-                int fh = Math.max(1, (int) Math.round(h * settings.renderScale()));
-                double shrink = Math.sqrt((double) ViewState.MAX_FRAME_PIXELS / ((long) fw * fh));
-                if (shrink < 1) {
-                    fw = Math.max(1, (int) (fw * shrink));
-                    fh = Math.max(1, (int) (fh * shrink));
+                long size = ((long) w << 32) | h;
+                if (!state.freeze.frozen() && !demand.due(state, size)) {
+                    // Nothing changed and nothing animates: idle, and look again shortly.
+                    rate.pause();
+                    java.util.concurrent.locks.LockSupport.parkNanos(FrameDemand.POLL_NANOS);
+                    continue;
                 }
-                FreezeGate.Action action = state.freeze.next(settings, ((long) fw << 32) | fh, state.inspected());
+                demand.pace(state, this);
+                ViewSettings settings = state.settings();
+                long now = System.nanoTime();
+                // Measured, never negative, and capped after a pause (idle, frozen, hidden, a slow frame).
+                double step = Math.max(0, Math.min(MAX_STEP_SECONDS, (now - last) / 1e9));
+                double dt = Math.min(0.1, step);
+                last = now;
+                FreezeGate.Action action = state.freeze.next(settings, frameSize(w, h, settings), state.inspected());
                 if (action == FreezeGate.Action.HOLD) {
                     // Frozen: mouse looks and wheel turns made now must not jump the camera on the next step.
                     state.input.takeDrag();
@@ -161,6 +176,16 @@ public final class RenderLoop implements Runnable {
                     sleep(15);
                     continue;
                 }
+                boolean animates = false;
+                if (action != FreezeGate.Action.REDRAW) {
+                    // The hooks' changes (scene, camera, settings) show in this frame: read them after.
+                    animates = update(action == FreezeGate.Action.STEP ? FreezeGate.STEP_SECONDS : step, frames + 1);
+                    settings = state.settings();
+                }
+                demand.starting(state, size, animates, now);
+                long frameSize = frameSize(w, h, settings);
+                int fw = (int) (frameSize >>> 32);
+                int fh = (int) frameSize;
                 long frameStart = System.nanoTime();
                 try {
                     drawFrame(settings, fw, fh, action, action == FreezeGate.Action.STEP ? FreezeGate.STEP_SECONDS : dt);
@@ -172,6 +197,7 @@ public final class RenderLoop implements Runnable {
                     }
                     back = null;
                     reference = null;
+                    demand.failed();
                     sleep(200);
                     continue;
                 }
@@ -197,6 +223,18 @@ public final class RenderLoop implements Runnable {
         } finally {
             renderer.close();
         }
+    }
+
+    /** The frame's size for a view of w x h device pixels: the render scale, at most the largest frame; width in the high half. */
+    private static long frameSize(int w, int h, ViewSettings settings) {
+        int fw = Math.max(1, (int) Math.round(w * settings.renderScale()));
+        int fh = Math.max(1, (int) Math.round(h * settings.renderScale()));
+        double shrink = Math.sqrt((double) ViewState.MAX_FRAME_PIXELS / ((long) fw * fh));
+        if (shrink < 1) {
+            fw = Math.max(1, (int) (fw * shrink));
+            fh = Math.max(1, (int) (fh * shrink));
+        }
+        return ((long) fw << 32) | fh;
     }
 
     /** What the listener hears of a frame just drawn into {@code slot}. */
@@ -363,6 +401,12 @@ public final class RenderLoop implements Runnable {
             paths[RenderMode.PERSPECTIVE.ordinal()] = perspective / 1e6;
         }
         return paths;
+    }
+
+    /** Runs the update hooks before frame {@code frame}; whether one asked for the next frame. */
+    private boolean update(double seconds, long frame) {
+        LoopListener l = listener;
+        return l != null && l.update(seconds, frame);
     }
 
     /** Answers a click on the frame on screen, between frames (a failure is said once, as a frame's). */

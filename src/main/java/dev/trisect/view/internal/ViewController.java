@@ -16,7 +16,17 @@ import javax.swing.SwingUtilities;
  * says otherwise.
  */
 public final class ViewController {
-    /** What the controller asks of the component it drives. Event thread. */
+    /** The host's update hooks, as the render loop runs them. */
+    @FunctionalInterface
+    public interface Updates {
+        /**
+         * Render thread, before frame {@code frame} ({@code seconds} after the last frame started):
+         * runs every hook; whether one asked for the frame after this one.
+         */
+        boolean update(double seconds, long frame);
+    }
+
+        /** What the controller asks of the component it drives. Event thread. */
     public interface Surface {
         /** Asks for a paint of the newest frame (any thread). */
         void repaint();
@@ -36,6 +46,8 @@ public final class ViewController {
     private final List<Consumer<FrameReport>> frameListeners = new CopyOnWriteArrayList<>();
     private final List<Consumer<String>> messageListeners = new CopyOnWriteArrayList<>();
     private final List<Consumer<ViewSettings>> settingsListeners = new CopyOnWriteArrayList<>();
+    /** The host's update hooks, run on the render thread before each frame. */
+    private volatile Updates updates = (seconds, frame) -> false;
     /** Read by {@link #stop}, which may run on any thread (a view closed from elsewhere). */
     private volatile RenderLoop loop;
     private volatile Thread thread;
@@ -91,6 +103,11 @@ public final class ViewController {
             @Override
             public void problem(String message) {
                 SwingUtilities.invokeLater(() -> message(message));
+            }
+
+            @Override
+            public boolean update(double seconds, long frame) {
+                return updates.update(seconds, frame);
             }
         });
         thread = new Thread(loop, "trisect-render");
@@ -228,6 +245,11 @@ public final class ViewController {
         }
     }
 
+    /** Sets the update hooks the render thread runs before each frame (one, which may run many). */
+    public void updates(Updates u) {
+        updates = u;
+    }
+
     /** Hears about every frame, on the render thread, right after it is handed to the screen. */
     public void addFrameListener(Consumer<FrameReport> l) {
         frameListeners.add(l);
@@ -253,6 +275,11 @@ public final class ViewController {
 
     public void removeSettingsListener(Consumer<ViewSettings> l) {
         settingsListeners.remove(l);
+    }
+
+    /** Any thread: {@link #message} on the event thread. */
+    public void messageLater(String text) {
+        SwingUtilities.invokeLater(() -> message(text));
     }
 
     /** Passes a one-line message to whoever shows messages. */

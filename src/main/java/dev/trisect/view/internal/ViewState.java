@@ -15,6 +15,9 @@ public final class ViewState {
     /** Largest frame the view renders, in pixels, so a huge window cannot exhaust memory. */
     public static final long MAX_FRAME_PIXELS = 3840L * 2160;
 
+    /** The frame-rate cap when the screen does not tell its refresh rate, frames per second. */
+    public static final double DEFAULT_FRAME_RATE = 60;
+
     /** How the user's input moves the camera. */
     public enum Controls {
         /** Fly: keys move, drags look around, the wheel raises and lowers. */
@@ -30,6 +33,12 @@ public final class ViewState {
     public final FreezeGate freeze = new FreezeGate();
     /** Clicks to pick: asked by the event thread, answered by the render loop between frames. */
     public final Picks picks = new Picks();
+    /** Whether a frame is due, and the pace of animated ones. */
+    public final FrameDemand demand = new FrameDemand();
+    /** Frames per second at most, as the host set it: 0 for no cap, NaN for the screen's refresh rate. */
+    private volatile double maxFrameRate = Double.NaN;
+    /** The refresh rate of the view's screen, frames per second (60 when the screen does not say). */
+    private volatile double screenRate = DEFAULT_FRAME_RATE;
     private volatile ViewSettings settings = ViewSettings.defaults();
     private volatile Scene scene;
     /** The camera set by the host (and the one R returns to), with a serial so the loop sees each setting. */
@@ -246,6 +255,22 @@ public final class ViewState {
 
     public void budgetChoice(BudgetChoice c) {
         budgetChoice = c;
+    }
+
+    /** Sets the cap: frames per second at most, 0 for none, NaN to follow the screen's refresh rate. */
+    public void maxFrameRate(double fps) {
+        maxFrameRate = fps;
+    }
+
+    /** The cap in force: frames per second at most, 0 for none. */
+    public double maxFrameRate() {
+        double m = maxFrameRate;
+        return Double.isNaN(m) ? screenRate : m;
+    }
+
+    /** The refresh rate of the screen the view shows on (0 or less when it does not say: 60 then). */
+    public void screenRate(double hz) {
+        screenRate = hz > 0 ? hz : DEFAULT_FRAME_RATE;
     }
 
     public Progress progress() {

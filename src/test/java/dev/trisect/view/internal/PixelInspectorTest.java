@@ -39,6 +39,8 @@ class PixelInspectorTest {
     private static FrameSlot inspected(ViewState state, int x, int y) throws Exception {
         state.viewSize(W, H);
         state.inspect(x, y);
+        // Two frames of a still scene: ask for frames, as an animation would.
+        state.demand.keepDrawing("test", true);
         TripleBuffer buffers = new TripleBuffer();
         RenderLoop loop = new RenderLoop(state, buffers, () -> { }, 1);
         Thread t = new Thread(loop, "test-render");

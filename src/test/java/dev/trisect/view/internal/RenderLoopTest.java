@@ -106,7 +106,7 @@ class RenderLoopTest {
         Thread t = new Thread(loop, "test-render");
         t.start();
         try {
-            for (int poll = 0; poll < 1000 && state.progress().frames() < 3; poll++) {
+            for (int poll = 0; poll < 1000 && state.progress().frames() < 1; poll++) {
                 Thread.sleep(10);
             }
             FrameSlot shown = buffers.acquire(null);
@@ -170,10 +170,11 @@ class RenderLoopTest {
             Thread.sleep(300);
             assertEquals(0, state.progress().frames(), "no frames while there is nothing to show");
             state.viewSize(64, 48);
-            for (int poll = 0; poll < 1000 && state.progress().frames() < 3; poll++) {
+            // A still scene: one frame for the new size, then the loop idles.
+            for (int poll = 0; poll < 1000 && state.progress().frames() < 1; poll++) {
                 Thread.sleep(10);
             }
-            assertTrue(state.progress().frames() >= 3);
+            assertTrue(state.progress().frames() >= 1);
             FrameSlot shown = buffers.acquire(null);
             assertNotNull(shown);
             assertEquals(64, shown.width());

@@ -35,6 +35,8 @@ class ViewMatchesCliTest {
     /** Runs the render loop until it has drawn a frame with {@code settings}; returns that frame. */
     private static FrameSlot viewFrame(ViewState state, ViewSettings settings) throws Exception {
         state.settings(settings);
+        // Two frames of a still scene: ask for frames, as an animation would.
+        state.demand.keepDrawing("test", true);
         TripleBuffer buffers = new TripleBuffer();
         RenderLoop loop = new RenderLoop(state, buffers, () -> { }, 2);
         Thread t = new Thread(loop, "test-render");

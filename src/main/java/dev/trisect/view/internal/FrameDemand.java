@@ -1,0 +1,100 @@
+package dev.trisect.view.internal;
+
+import dev.trisect.scene.Scene;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.AtomicBoolean;
+
+/**
+ * Whether the render loop should draw a frame now, and when the next may start. A view draws only
+ * when something it shows changed since its last frame — the scene ({@link Scene#version()}), the
+ * settings, the size, the host's camera, the controls, the frame-time budget, the inspected pixel —
+ * or when something animates: an update hook that said so, the camera moving under the user's input
+ * (or the auto-orbit), the developer tools showing (their live graph), the budget controller, or a
+ * reason registered with {@link #keepDrawing}. Otherwise the loop idles, looking again every
+ * {@link #POLL_NANOS} (a change is drawn within that, plus a frame). Animated frames are paced to at
+ * most the view's maximum frame rate.
+ *
+ * <p>{@link #keepDrawing} and {@link #request} from any thread; the rest on the render thread.
+ */
+public final class FrameDemand {
+    /** How often an idle loop looks for a change, nanoseconds: within one frame at 60 Hz. */
+    static final long POLL_NANOS = 10_000_000L;
+
+    /** Everything the last frame was drawn from that a host or user may change. */
+    private record Seen(Scene scene, long version, ViewSettings settings, long size, long home,
+                        ViewState.Controls controls, ViewState.Budget budget, long inspected) {
+    }
+
+    private final Set<Object> reasons = ConcurrentHashMap.newKeySet();
+    private final AtomicBoolean requested = new AtomicBoolean();
+    /** What the last frame drawn saw; null before the first (or after a failed one). Render thread. */
+    private Seen drawn;
+    /** Whether an update hook asked for the next frame. Render thread. */
+    private boolean animating;
+    /** {@link System#nanoTime} when the last frame started, for the pace. Render thread. */
+    private long lastStart;
+    private boolean started;
+
+    /**
+     * Keeps frames coming while {@code reason} is registered (an animation, a live readout), or stops
+     * doing so for it. Any thread; the same key twice counts once.
+     */
+    public void keepDrawing(Object reason, boolean on) {
+        if (on) {
+            reasons.add(reason);
+        } else {
+            reasons.remove(reason);
+        }
+    }
+
+    /** Asks for one more frame even though nothing the view can see changed. Any thread. */
+    public void request() {
+        requested.set(true);
+    }
+
+    /** Whether a frame is due now: something changed since the last one, or something animates. */
+    boolean due(ViewState state, long size) {
+        if (drawn == null || animating || requested.get() || !reasons.isEmpty() || state.toolsOpen()
+                || state.budget().on() || CameraRig.moving(state.input) || state.input.pendingReset()) {
+            return true;
+        }
+        return !drawn.equals(seen(state, size));
+    }
+
+    /** Render thread: waits until the cap allows the next frame to start (at once when it is off). */
+    void pace(ViewState state, RenderLoop loop) {
+        double cap = state.maxFrameRate();
+        if (!started || cap <= 0) {
+            return;
+        }
+        long next = lastStart + (long) (1e9 / cap);
+        long wait;
+        while (!loop.stopping() && (wait = next - System.nanoTime()) > 0) {
+            java.util.concurrent.locks.LockSupport.parkNanos(wait);
+        }
+    }
+
+    /**
+     * Render thread: a frame starts now, from what {@code state} holds (read after the update hooks
+     * ran); {@code animates} is whether a hook asked for the next frame.
+     */
+    void starting(ViewState state, long size, boolean animates, long now) {
+        requested.set(false);
+        drawn = seen(state, size);
+        animating = animates;
+        lastStart = now;
+        started = true;
+    }
+
+    /** Render thread: the frame failed; the next look draws again. */
+    void failed() {
+        drawn = null;
+    }
+
+    private static Seen seen(ViewState state, long size) {
+        Scene scene = state.scene();
+        return new Seen(scene, scene.version(), state.settings(), size, state.home().serial(), state.controls(),
+                state.budget(), state.inspected());
+    }
+}

@@ -1,0 +1,124 @@
+package dev.trisect.view;
+
+import static dev.trisect.GuiTests.edt;
+import static dev.trisect.GuiTests.waitFor;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trisect.GuiTests;
+import dev.trisect.math.Transform;
+import dev.trisect.math.Vec3;
+import dev.trisect.mesh.Primitives;
+import dev.trisect.scene.Camera;
+import dev.trisect.scene.Material;
+import dev.trisect.scene.Scene;
+import dev.trisect.scene.SceneObject;
+import dev.trisect.texture.ProceduralTextures;
+import java.awt.Dimension;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CopyOnWriteArrayList;
+import javax.swing.JFrame;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The update hook and frames only when needed, in a real view under an X server: the hook's time
+ * steps add up to the wall clock, what it changes is in the frame it runs before, and a still view
+ * stops drawing until something changes.
+ */
+@Tag("gui")
+class UpdateHookGuiTest {
+    private JFrame host;
+    private TrisectView view;
+    private Scene scene;
+    private SceneObject box;
+    private final List<FrameInfo> frames = new CopyOnWriteArrayList<>();
+    private final GuiTests.Uncaught uncaught = new GuiTests.Uncaught();
+
+    @BeforeEach
+    void open() throws Exception {
+        GuiTests.requireDisplay();
+        uncaught.start();
+        scene = new Scene();
+        box = new SceneObject(Primitives.box(1, 1, 1), Material.of(ProceduralTextures.crate(64)));
+        scene.add(box);
+        edt(() -> {
+            host = new JFrame("update hook");
+            view = new TrisectView(scene, 1);
+            view.setPreferredSize(new Dimension(160, 120));
+            view.addFrameListener(frames::add);
+            host.add(view);
+            host.pack();
+            host.setVisible(true);
+        });
+        waitFor("the first frame", () -> !frames.isEmpty());
+    }
+
+    @AfterEach
+    void close() throws Exception {
+        if (host != null) {
+            edt(() -> host.dispose());
+        }
+        uncaught.check();
+    }
+
+    @Test
+    void theTimeStepsAddUpToTheWallClockOverTenSeconds() throws Exception {
+        List<double[]> calls = new CopyOnWriteArrayList<>();
+        view.addUpdateListener((seconds, frame) -> {
+            calls.add(new double[] {seconds, frame, System.nanoTime()});
+            return true;
+        });
+        waitFor("the hook", () -> !calls.isEmpty());
+        Thread.sleep(10_000);
+        List<double[]> c = List.copyOf(calls);
+        double sum = 0;
+        for (int i = 1; i < c.size(); i++) {
+            double step = c.get(i)[0];
+            assertTrue(step >= 0 && step <= TrisectView.MAX_STEP_SECONDS, "step " + step);
+            assertEquals(c.get(i - 1)[1] + 1, c.get(i)[1], "one call per frame, numbered in order");
+            sum += step;
+        }
+        double wall = (c.get(c.size() - 1)[2] - c.get(0)[2]) / 1e9;
+        assertTrue(wall > 9.5, "ran " + wall + " s");
+        assertEquals(wall, sum, 0.01 * wall, c.size() + " steps over " + wall + " s of wall clock");
+    }
+
+    @Test
+    void whatTheHookChangesIsInTheFrameItRunsBefore() throws Exception {
+        Map<Long, Camera> set = new ConcurrentHashMap<>();
+        view.addUpdateListener((seconds, frame) -> {
+            Camera c = Camera.looking(new Vec3(frame * 0.01, 2, 4), Vec3.ZERO);
+            set.put(frame, c);
+            view.setCamera(c);
+            box.setTransform(Transform.translation(frame * 0.001, 0, 0));
+            return frame < 30;
+        });
+        waitFor("thirty frames", () -> frames.get(frames.size() - 1).number() >= 30);
+        for (FrameInfo f : frames) {
+            if (set.containsKey(f.number())) {
+                assertEquals(set.get(f.number()), f.camera(), "frame " + f.number() + " is drawn from its hook's camera");
+            }
+        }
+    }
+
+    @Test
+    void aStillViewIdlesAndWakesForAChange() throws Exception {
+        Thread.sleep(300);
+        int still = frames.size();
+        Thread.sleep(700);
+        assertEquals(still, frames.size(), "no frames while nothing changes");
+        long before = System.nanoTime();
+        box.setTransform(Transform.translation(0.3, 0, 0));
+        waitFor("a frame for the change", () -> frames.size() > still);
+        System.out.printf("a still view woke for a change in %.1f ms%n", (System.nanoTime() - before) / 1e6);
+        Thread.sleep(500);
+        assertEquals(still + 1, frames.size(), "one frame for one change, then idle again");
+        view.requestFrame();
+        waitFor("a requested frame", () -> frames.size() == still + 2);
+    }
+}

@@ -1,0 +1,130 @@
+package dev.trisect.view.internal;
+
+import static dev.trisect.GuiTests.waitFor;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trisect.math.Transform;
+import dev.trisect.mesh.Primitives;
+import dev.trisect.scene.Camera;
+import dev.trisect.scene.Material;
+import dev.trisect.scene.Scene;
+import dev.trisect.scene.SceneObject;
+import dev.trisect.texture.ProceduralTextures;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicInteger;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Frames only when needed: the render loop draws a still scene once and then idles, and draws again
+ * for each change (scene, settings, size, camera) or while something animates; the cap bounds the
+ * frame rate. Counts frames, never times them (the cap is checked as an upper bound only).
+ */
+class FrameDemandTest {
+    private static long frames(ViewState state) {
+        return state.progress().frames();
+    }
+
+    /** A loop's frames stay at {@code n} for a while: it idles. */
+    private static void idlesAt(ViewState state, long n, String when) throws InterruptedException {
+        // The loop publishes progress right after a frame; any frame drawn meanwhile would show here.
+        Thread.sleep(250);
+        assertEquals(n, frames(state), "no frames " + when);
+    }
+
+    @Test
+    void aStillSceneIsDrawnOnceAndEachChangeOnceMore() throws Exception {
+        Scene scene = new Scene();
+        SceneObject box = new SceneObject(Primitives.box(1, 1, 1), Material.of(ProceduralTextures.crate(64)));
+        scene.add(box);
+        ViewState state = new ViewState(scene, Camera.looking(new dev.trisect.math.Vec3(0, 2, 4),
+                dev.trisect.math.Vec3.ZERO));
+        state.viewSize(64, 48);
+        AtomicBoolean animate = new AtomicBoolean();
+        AtomicInteger hooks = new AtomicInteger();
+        RenderLoop loop = new RenderLoop(state, new TripleBuffer(), () -> { }, 1);
+        loop.listener(new RenderLoop.LoopListener() {
+            @Override
+            public void frameDone(FrameReport report) {
+            }
+
+            @Override
+            public void problem(String message) {
+                throw new AssertionError(message);
+            }
+
+            @Override
+            public boolean update(double seconds, long frame) {
+                hooks.incrementAndGet();
+                return animate.get();
+            }
+        });
+        Thread t = new Thread(loop, "test-render");
+        t.start();
+        try {
+            waitFor("the first frame", () -> frames(state) >= 1);
+            idlesAt(state, 1, "while nothing changes");
+            assertEquals(1, hooks.get(), "the hook runs before frames drawn, only");
+
+            box.setTransform(Transform.translation(0.5, 0, 0));
+            waitFor("a frame for the moved object", () -> frames(state) >= 2);
+            idlesAt(state, 2, "after the moved object's frame");
+
+            state.updateSettings(s -> s.withRenderScale(0.5));
+            waitFor("a frame for the new settings", () -> frames(state) >= 3);
+            idlesAt(state, 3, "after the new settings' frame");
+
+            state.camera(Camera.looking(new dev.trisect.math.Vec3(1, 2, 4), dev.trisect.math.Vec3.ZERO));
+            waitFor("a frame for the new camera", () -> frames(state) >= 4);
+            state.viewSize(80, 60);
+            waitFor("a frame for the new size", () -> frames(state) >= 5);
+            scene.add(new SceneObject(Primitives.box(1, 1, 1), Material.colour(0xFF0000)));
+            waitFor("a frame for the added object", () -> frames(state) >= 6);
+            idlesAt(state, 6, "after the added object's frame");
+
+            // A hook that animates keeps frames coming; when it stops, so do they.
+            animate.set(true);
+            state.demand.request();
+            waitFor("frames while the hook animates", () -> frames(state) >= 12);
+            animate.set(false);
+            long stopped = frames(state);
+            Thread.sleep(100);
+            long settled = frames(state);
+            assertTrue(settled <= stopped + 2, "at most the frames under way when the hook stopped");
+            idlesAt(state, settled, "once the hook stops animating");
+
+            // A reason registered from outside (the developer tools' live graph) keeps them coming too.
+            state.demand.keepDrawing("graph", true);
+            waitFor("frames while a reason is registered", () -> frames(state) >= settled + 5);
+            state.demand.keepDrawing("graph", false);
+        } finally {
+            loop.stop();
+            t.join(5000);
+        }
+    }
+
+    @Test
+    void animatedFramesKeepToTheCap() throws Exception {
+        ViewState state = new ViewState(dev.trisect.content.DemoScenes.floor());
+        state.viewSize(32, 24);
+        state.maxFrameRate(20);
+        state.demand.keepDrawing("test", true);
+        RenderLoop loop = new RenderLoop(state, new TripleBuffer(), () -> { }, 1);
+        Thread t = new Thread(loop, "test-render");
+        t.start();
+        try {
+            waitFor("the first frame", () -> frames(state) >= 1);
+            long f0 = frames(state);
+            long t0 = System.nanoTime();
+            Thread.sleep(1000);
+            long f1 = frames(state);
+            double seconds = (System.nanoTime() - t0) / 1e9;
+            // An upper bound only: a busy machine draws fewer, never more. One frame of slack at each end.
+            assertTrue(f1 - f0 <= 20 * seconds + 2, (f1 - f0) + " frames in " + seconds + " s at a cap of 20");
+            assertTrue(f1 > f0, "frames keep coming while asked for");
+        } finally {
+            loop.stop();
+            t.join(5000);
+        }
+    }
+}
