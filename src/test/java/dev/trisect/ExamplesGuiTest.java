@@ -180,5 +180,9 @@ class ExamplesGuiTest {
         JLabel status = onEdt(() -> (JLabel) frame.getContentPane().getComponent(1));
         assertTrue(onEdt(status::getText).startsWith("crate 3, triangle "), onEdt(status::getText));
         assertEquals(new Vec3(0, 3, 5.5), c.eye(), "the example's camera, not moved by the click");
+        // The pointer rests on crate 3: the frames draw its hover highlight.
+        var engine = (dev.trisect.view.internal.ViewController) view.getClientProperty(
+                dev.trisect.view.internal.ViewController.class);
+        waitFor("crate 3 highlighted under the pointer", () -> engine.state().hovered() == crate3);
     }
 }

@@ -4,6 +4,7 @@ import dev.trisect.math.Transform;
 import dev.trisect.math.Vec3;
 import dev.trisect.mesh.Primitives;
 import dev.trisect.scene.Camera;
+import dev.trisect.scene.Highlight;
 import dev.trisect.scene.Material;
 import dev.trisect.scene.Scene;
 import dev.trisect.scene.SceneObject;
@@ -19,8 +20,9 @@ import javax.swing.JLabel;
 import javax.swing.SwingUtilities;
 
 /**
- * Picking by click: a row of crates and balls; click one to paint it red (click again to restore it),
- * and the bar below names the object, the 3D point and the texel under the mouse. Drag to orbit.
+ * Picking by click and hover: a row of crates and balls, each tinted gold while the pointer is over
+ * it; click one to paint it red (click again to restore it), and the bar below names the object, the
+ * 3D point and the texel under the mouse. Drag to orbit.
  */
 public final class ClickPicking {
     public static void main(String[] args) {
@@ -38,6 +40,8 @@ public final class ClickPicking {
                     box ? crate : grid, Transform.translation(2 * i - 3, 0.5, 0));
             o.setName((box ? "crate " : "ball ") + (i + 1));
             own.put(o, box ? crate : grid);
+            // Hover: tinted gold while the pointer is over it, drawn over the frame (no second render).
+            o.setHoverHighlight(Highlight.tint(0xFFD24D));
             scene.add(o);
         }
         SwingUtilities.invokeLater(() -> {

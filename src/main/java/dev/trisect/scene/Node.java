@@ -2,7 +2,11 @@ package dev.trisect.scene;
 
 import dev.trisect.math.Mat4;
 import dev.trisect.math.Transform;
+import java.awt.event.KeyEvent;
+import java.awt.event.KeyListener;
+import java.util.List;
 import java.util.Objects;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.locks.ReentrantLock;
 
 /**
@@ -28,6 +32,9 @@ public abstract sealed class Node permits Group, SceneObject {
     private volatile String name;
     /** The group holding this node, or null. Written under {@link #LOCK}. */
     volatile Group parent;
+    private final List<PointerListener> pointerListeners = new CopyOnWriteArrayList<>();
+    private final List<KeyListener> keyListeners = new CopyOnWriteArrayList<>();
+    private volatile Highlight hoverHighlight;
 
     Node(String name) {
         this.name = name;
@@ -159,6 +166,131 @@ public abstract sealed class Node permits Group, SceneObject {
         if (node instanceof Group g) {
             for (Node n : g.children()) {
                 checkWorld(n, world.mul(n.matrix), cause);
+            }
+        }
+    }
+
+    /**
+     * Hears the mouse over this node in a view: for an object, the pointer entering and leaving it,
+     * presses, drags, releases and clicks on it; for a group, the same for every object in it (each
+     * passed on from the object unless a listener nearer it consumed it), and entering and leaving the
+     * group as a whole. On the event thread (see {@link PointerEvent}). A view records which object
+     * each pixel shows while anything in its scene listens, which costs its frames time.
+     *
+     * @param listener told of each event
+     */
+    public void addPointerListener(PointerListener listener) {
+        Objects.requireNonNull(listener, "listener is null");
+        LOCK.lock();
+        try {
+            pointerListeners.add(listener);
+            // A view starts recording which object each pixel shows from its next frame.
+            changed();
+        } finally {
+            LOCK.unlock();
+        }
+    }
+
+    /**
+     * Stops telling a listener about the mouse.
+     *
+     * @param listener one added before
+     */
+    public void removePointerListener(PointerListener listener) {
+        pointerListeners.remove(listener);
+    }
+
+    /**
+     * Whether anything listens to the mouse over this node.
+     *
+     * @return true when a pointer listener is added
+     */
+    public boolean hasPointerListeners() {
+        return !pointerListeners.isEmpty();
+    }
+
+    /**
+     * Tells this node's pointer listeners of {@code event} and then, unless one consumed it, those of
+     * each group holding it, outermost last; entering and leaving are told to this node alone. Views
+     * call it; a program may, to make events of its own.
+     *
+     * @param event what happened; its {@link PointerEvent#node()} should be this node
+     */
+    public void firePointerEvent(PointerEvent event) {
+        PointerEvent e = event;
+        for (Node n = this; n != null; n = n.parent) {
+            if (n != this) {
+                e = e.to(n);
+            }
+            for (PointerListener l : n.pointerListeners) {
+                l.pointer(e);
+            }
+            if (e.isConsumed() || e.kind() == PointerEvent.Kind.ENTERED || e.kind() == PointerEvent.Kind.EXITED) {
+                event.consumed(e.isConsumed());
+                return;
+            }
+        }
+    }
+
+    /**
+     * Marks this node in a view while the pointer is over it — for a group, all of it while the pointer
+     * is over any object in it — or stops doing so. The nearest node holding a highlight wins.
+     *
+     * @param highlight how to mark it ({@link Highlight#tint}, {@link Highlight#outline}), or null for none
+     */
+    public void setHoverHighlight(Highlight highlight) {
+        LOCK.lock();
+        try {
+            hoverHighlight = highlight;
+            changed();
+        } finally {
+            LOCK.unlock();
+        }
+    }
+
+    /**
+     * How this node is marked while the pointer is over it.
+     *
+     * @return the highlight, or null for none
+     */
+    public Highlight hoverHighlight() {
+        return hoverHighlight;
+    }
+
+    /**
+     * Hears the keys while this node has a view's keyboard ({@code TrisectView.giveKeyboard}), or one
+     * of the nodes in it has and did not consume them: before the view's own keys (camera, commands),
+     * which a consumed key does not reach. On the event thread.
+     *
+     * @param listener told of each key event
+     */
+    public void addKeyListener(KeyListener listener) {
+        keyListeners.add(Objects.requireNonNull(listener, "listener is null"));
+    }
+
+    /**
+     * Stops telling a listener about keys.
+     *
+     * @param listener one added before
+     */
+    public void removeKeyListener(KeyListener listener) {
+        keyListeners.remove(listener);
+    }
+
+    /**
+     * Tells this node's key listeners of {@code event} and then, unless one consumed it, those of each
+     * group holding it, outermost last. Views call it for the node holding their keyboard.
+     *
+     * @param event a key pressed, released or typed
+     */
+    public void fireKeyEvent(KeyEvent event) {
+        for (Node n = this; n != null && !event.isConsumed(); n = n.parent) {
+            for (KeyListener l : n.keyListeners) {
+                switch (event.getID()) {
+                    case KeyEvent.KEY_PRESSED -> l.keyPressed(event);
+                    case KeyEvent.KEY_RELEASED -> l.keyReleased(event);
+                    default -> l.keyTyped(event);
+                }
             }
         }
     }

@@ -3,15 +3,22 @@ package dev.trisect.view;
 import dev.trisect.devtools.DevToolsPanel;
 import dev.trisect.devtools.DevToolsWindow;
 import dev.trisect.pipeline.FrameRenderer;
+import dev.trisect.scene.Node;
+import dev.trisect.scene.Pick;
 import dev.trisect.scene.Scene;
 import dev.trisect.view.internal.FramePainter;
+import dev.trisect.view.internal.FrameIds;
 import dev.trisect.view.internal.FrameSlot;
+import dev.trisect.view.internal.KeyboardFocus;
 import dev.trisect.view.internal.ViewController;
 import dev.trisect.view.internal.ViewMouse;
 import java.awt.Graphics;
 import java.awt.event.MouseEvent;
 import java.awt.image.BufferedImage;
 import java.util.Objects;
+import java.util.Optional;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import javax.swing.Action;
 import javax.swing.JComponent;
@@ -60,6 +67,7 @@ public class TrisectView extends ViewDrawing {
     private final transient ViewMouse mouse;
     private final transient ViewListeners listeners;
     private final transient DevToolsWindow devTools;
+    private final transient KeyboardFocus keyboard;
 
     /** A view of an empty scene (add objects to {@link #getScene()}), rendering with one thread per processor (at most 256). */
     public TrisectView() {
@@ -90,6 +98,7 @@ public class TrisectView extends ViewDrawing {
         putClientProperty(ViewController.class, controller);
         putClientProperty(ViewMouse.class, mouse);
         devTools = new DevToolsWindow(this, controller);
+        keyboard = new KeyboardFocus(this);
         controller.addFrameListener(listeners::frameDone);
     }
 
@@ -204,6 +213,66 @@ public class TrisectView extends ViewDrawing {
     }
 
     /**
+     * What the frame on screen shows at view point (x, y): the object, its triangle, the exact 3D point
+     * and the texel — as {@code SceneRenderer.pick} answers for the same frame — read from the frame's
+     * triangle ids, without drawing anything. A frame keeps its ids while anything in the scene listens
+     * to the pointer ({@link Node#addPointerListener}, {@link Node#setHoverHighlight}) and, after the
+     * first call of this method, always; when the frame on screen kept none, this call waits for the
+     * render thread to draw it once more with them (about one frame). Event thread.
+     *
+     * @param x the point's column in the view, logical pixels (as mouse events give it)
+     * @param y its row
+     * @return the pick, or empty where the frame shows no object, outside the view, or before the first frame
+     */
+    public Optional<Pick> pick(int x, int y) {
+        FrameSlot f = controller.front();
+        if (f == null || f.drawn == null || x < 0 || y < 0 || x >= getWidth() || y >= getHeight()) {
+            return Optional.empty();
+        }
+        if (FrameIds.has(f)) {
+            return Optional.ofNullable(mouse.pickAt(x, y));
+        }
+        state.idsWanted(true);
+        CompletableFuture<Pick> answer = new CompletableFuture<>();
+        state.picks.request(f, mouse.frameX(f, x), mouse.frameY(f, y), answer::complete);
+        try {
+            return Optional.ofNullable(answer.get(10, TimeUnit.SECONDS));
+        } catch (java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException e) {
+            throw new IllegalStateException("the render thread did not answer the pick: " + e, e);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return Optional.empty();
+        }
+    }
+
+    /**
+     * Gives the keyboard to {@code node} (as Sixth 3D's keyboard focus stack): keys reaching the view
+     * go to its key listeners ({@link Node#addKeyListener}) and on to its groups before the view's own
+     * keys (camera, commands), which do not see the ones consumed. Escape, or
+     * {@link #releaseKeyboard}, gives it back to the node that had it before, and in the end to the view.
+     * Also asks the window's keyboard for the view. Event thread.
+     *
+     * @param node the node to take the keys, in this view's scene
+     */
+    public void giveKeyboard(Node node) {
+        keyboard.give(Objects.requireNonNull(node, "node is null"));
+    }
+
+    /** Gives the keyboard back from the node holding it to the one before it, or to the view. Event thread. */
+    public void releaseKeyboard() {
+        keyboard.release();
+    }
+
+    /**
+     * The node holding the keyboard.
+     *
+     * @return the node given it last and not yet released, or empty when the view's own keys have it
+     */
+    public Optional<Node> keyboardOwner() {
+        return Optional.ofNullable(keyboard.owner());
+    }
+
+    /**
      * The frame on screen, as an image. Event thread.
      *
      * @return a copy of the frame (with its borders, without the legends painted over it; in the
@@ -266,5 +335,7 @@ public class TrisectView extends ViewDrawing {
     @Override
     protected void paintComponent(Graphics g) {
         FramePainter.present(g, controller, getWidth(), getHeight(), mouse.pinned());
+        // Things may have moved under a still pointer: enter and exit follow the frame on screen.
+        mouse.frameShown();
     }
 }

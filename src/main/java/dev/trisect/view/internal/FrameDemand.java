@@ -8,7 +8,8 @@ import java.util.concurrent.atomic.AtomicBoolean;
 /**
  * Whether the render loop should draw a frame now, and when the next may start. A view draws only
  * when something it shows changed since its last frame — the scene ({@link Scene#version()}), the
- * settings, the size, the host's camera, the controls, the frame-time budget, the inspected pixel —
+ * settings, the size, the host's camera, the controls, the frame-time budget, the inspected pixel,
+ * the node under the pointer whose hover highlight shows —
  * or when something animates: an update hook that said so, the camera moving under the user's input
  * (or the auto-orbit), the developer tools showing (their live graph), the budget controller, or a
  * reason registered with {@link #keepDrawing}. Otherwise the loop idles, looking again every
@@ -23,7 +24,8 @@ public final class FrameDemand {
 
     /** Everything the last frame was drawn from that a host or user may change. */
     private record Seen(Scene scene, long version, ViewSettings settings, long size, long home,
-                        ViewState.Controls controls, ViewState.Budget budget, long inspected) {
+                        ViewState.Controls controls, ViewState.Budget budget, long inspected, Object hovered,
+                        boolean ids) {
     }
 
     private final Set<Object> reasons = ConcurrentHashMap.newKeySet();
@@ -95,6 +97,6 @@ public final class FrameDemand {
     private static Seen seen(ViewState state, long size) {
         Scene scene = state.scene();
         return new Seen(scene, scene.version(), state.settings(), size, state.home().serial(), state.controls(),
-                state.budget(), state.inspected());
+                state.budget(), state.inspected(), state.hovered(), state.idsWanted());
     }
 }

@@ -50,6 +50,7 @@ public final class RenderLoop implements Runnable {
     private Scene drawnScene;
     private final CameraDriver cameras;
     private final BudgetHook budget = new BudgetHook();
+    private final HoverHighlight highlight = new HoverHighlight();
     private volatile LoopListener listener;
     private long frames;
     private long lastCompare;
@@ -274,7 +275,8 @@ public final class RenderLoop implements Runnable {
         long inspected = state.inspected();
         boolean needReference = settings.view() != ViewKind.IMAGE || compareDue || inspected >= 0;
         Framebuffer fb = back.frame;
-        fb.recordUv(needReference);
+        // The triangle ids come with the UV output: kept for the comparison, and while anything picks.
+        fb.recordUv(needReference || FrameIds.wanted(state, drawn.placed()));
         Viewport viewport = new Viewport(fw, fh);
         long compareStart = System.nanoTime();
         double[] paths = null;
@@ -346,6 +348,7 @@ public final class RenderLoop implements Runnable {
             back.inspectNanos = System.nanoTime() - t0;
         }
         compareStageNanos = compareNanos;
+        highlight.apply(fb, draws, drawn.placed(), state.hovered());
         if (settings.view() == ViewKind.DIFFERENCE) {
             back.overlayNanos = 0;
         } else if (settings.render().borders()) {

@@ -27,6 +27,7 @@ public final class ViewMouse extends MouseAdapter {
     private boolean inspecting;
     private boolean pinned;
     private boolean dragged;
+    private final PointerTracker pointer;
 
     /**
      * @param view       the component it listens to
@@ -37,6 +38,7 @@ public final class ViewMouse extends MouseAdapter {
         this.view = view;
         this.controller = controller;
         this.clicked = clicked;
+        this.pointer = new PointerTracker(controller, this);
         view.addMouseListener(this);
         view.addMouseMotionListener(this);
         view.addMouseWheelListener(this);
@@ -58,10 +60,19 @@ public final class ViewMouse extends MouseAdapter {
         draggingDivider = state().settings().view() == ViewKind.SPLIT
                 && Math.abs(e.getX() - dividerX()) <= DIVIDER_GRAB;
         view.requestFocusInWindow();
+        if (!draggingDivider) {
+            pointer.pressed(e);
+        }
+    }
+
+    @Override
+    public void mouseExited(MouseEvent e) {
+        pointer.left(e);
     }
 
     @Override
     public void mouseMoved(MouseEvent e) {
+        pointer.moved(e);
         if (inspecting && !pinned) {
             inspectAt(e.getX(), e.getY());
         }
@@ -69,6 +80,9 @@ public final class ViewMouse extends MouseAdapter {
 
     @Override
     public void mouseReleased(MouseEvent e) {
+        if (!draggingDivider) {
+            pointer.released(e);
+        }
         if (dragged || draggingDivider) {
             return;
         }
@@ -86,8 +100,11 @@ public final class ViewMouse extends MouseAdapter {
         if (draggingDivider) {
             double f = view.getWidth() == 0 ? 0.5 : (double) e.getX() / view.getWidth();
             controller.update(s -> s.withSplitFraction(f));
-        } else if (controls()) {
-            state().input.drag(e.getX() - lastX, e.getY() - lastY);
+        } else {
+            pointer.dragged(e);
+            if (controls() && !pointer.gestureConsumed()) {
+                state().input.drag(e.getX() - lastX, e.getY() - lastY);
+            }
         }
         lastX = e.getX();
         lastY = e.getY();
@@ -110,6 +127,24 @@ public final class ViewMouse extends MouseAdapter {
             Point p = view.getMousePosition();
             inspectAt(p == null ? view.getWidth() / 2 : p.x, p == null ? view.getHeight() / 2 : p.y);
         }
+    }
+
+    /** The pointer over the view's objects. */
+    PointerTracker pointer() {
+        return pointer;
+    }
+
+    /** A new frame is on screen: look again at what is under a still pointer. */
+    public void frameShown() {
+        pointer.frameShown();
+    }
+
+    /**
+     * What the frame on screen shows at view point (x, y) (logical pixels), from its triangle ids;
+     * null over nothing, or when the frame kept none.
+     */
+    public Pick pickAt(int x, int y) {
+        return pointer.pickAt(x, y);
     }
 
     /** Whether the inspector is pinned to a pixel. */

@@ -39,6 +39,9 @@ public final class ViewState {
     private volatile double maxFrameRate = Double.NaN;
     /** The refresh rate of the view's screen, frames per second (60 when the screen does not say). */
     private volatile double screenRate = DEFAULT_FRAME_RATE;
+    private volatile boolean idsWanted;
+    /** The node whose hover highlight the frames draw: the one under the pointer holding one; null for none. */
+    private volatile dev.trisect.scene.Node hovered;
     private volatile ViewSettings settings = ViewSettings.defaults();
     private volatile Scene scene;
     /** The camera set by the host (and the one R returns to), with a serial so the loop sees each setting. */
@@ -255,6 +258,26 @@ public final class ViewState {
 
     public void budgetChoice(BudgetChoice c) {
         budgetChoice = c;
+    }
+
+    /** Whether frames record their triangle ids whatever the scene holds (the view was asked for a pick). */
+    public boolean idsWanted() {
+        return idsWanted;
+    }
+
+    /** Makes every frame from the next on record its triangle ids (or stops asking for them). */
+    public void idsWanted(boolean on) {
+        idsWanted = on;
+    }
+
+    /** The node whose hover highlight the frames draw, or null. */
+    public dev.trisect.scene.Node hovered() {
+        return hovered;
+    }
+
+    /** Event thread: the pointer is over this node's objects, and it holds a hover highlight (or null). */
+    public void hovered(dev.trisect.scene.Node owner) {
+        hovered = owner;
     }
 
     /** Sets the cap: frames per second at most, 0 for none, NaN to follow the screen's refresh rate. */
