@@ -29,9 +29,10 @@ public interface UpdateListener {
     /**
      * Moves things on before a frame.
      *
-     * @param seconds the time since the last frame started, measured, seconds: never negative, 0 before
-     *                the first frame, and at most {@link TrisectView#MAX_STEP_SECONDS} (after a pause —
-     *                the view idle, frozen, hidden — things move on by no more than that)
+     * @param seconds the time since the last frame started (for the first frame, since the render
+     *                thread started), measured, seconds: never negative, and at most
+     *                {@link TrisectView#MAX_STEP_SECONDS} (after a pause — the view idle, frozen, hidden —
+     *                things move on by no more than that)
      * @param frame   the number of the frame about to be drawn, counting from 1 (as {@link FrameInfo#number()})
      * @return true to ask for the next frame (it animates), false when it needs none
      */
