@@ -83,6 +83,10 @@ public final class ViewLifecycle {
             window.addWindowListener(windowWatcher);
         }
         publishSize();
+        if (view.getGraphicsConfiguration() != null) {
+            // The frame-rate cap follows the screen's refresh rate unless the host set one (0 when unknown: 60).
+            state.screenRate(view.getGraphicsConfiguration().getDevice().getDisplayMode().getRefreshRate());
+        }
         synchronized (controller) {
             // Against a close() from another thread: either it sees this loop and stops it, or this sees it closed.
             if (!closed) {
