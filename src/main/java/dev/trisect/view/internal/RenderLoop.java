@@ -17,10 +17,12 @@ import dev.trisect.scene.Scene;
 import dev.trisect.scene.internal.DrawnFrame;
 
 /**
- * The render thread: draws frames continuously into the engine's framebuffers and hands them to the
+ * The render thread: draws frames — when something changed or animates ({@link FrameDemand}), at
+ * most at the view's frame-rate cap — into the engine's framebuffers and hands them to the
  * event thread through a {@link TripleBuffer}. It never touches Swing; it only asks for a repaint.
  *
- * <p>Per frame it reads the latest {@link ViewSettings}, moves the camera by the input gathered since
+ * <p>Per frame it runs the host's update hooks with the time step, reads the latest
+ * {@link ViewSettings}, moves the camera by the input gathered since
  * the last frame, draws, and — for the difference and split views, or when a comparison is due (at
  * least twice a second while the developer tools are open) — also draws the per-pixel path with UV
  * output and measures the difference.
