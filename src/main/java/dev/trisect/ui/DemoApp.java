@@ -225,12 +225,17 @@ public final class DemoApp implements Callable<Integer> {
 
     /** Opens the demo on the event thread for tests: the window, built and shown, with the demo's look. */
     static DemoWindow openForTest(SceneAsset scene, int threads) throws Exception {
+        // Its own memory of files, apart from the user's.
+        return openForTest(scene, threads,
+                new RecentFiles(java.nio.file.Path.of(System.getProperty("java.io.tmpdir"), "trisect-demo-test.properties")));
+    }
+
+    /** As {@link #openForTest(SceneAsset, int)}, remembering files in {@code recent}. */
+    static DemoWindow openForTest(SceneAsset scene, int threads, RecentFiles recent) throws Exception {
         AtomicReference<DemoWindow> window = new AtomicReference<>();
         SwingUtilities.invokeAndWait(() -> {
             FlatDarkLaf.setup();
-            // Its own memory of files, apart from the user's.
-            DemoWindow w = new DemoWindow(scene, threads,
-                    new RecentFiles(java.nio.file.Path.of(System.getProperty("java.io.tmpdir"), "trisect-demo-test.properties")));
+            DemoWindow w = new DemoWindow(scene, threads, recent);
             w.start();
             window.set(w);
         });

@@ -49,11 +49,9 @@ final class FileMenu {
         this.recent = recent;
         open = action("Open OBJ\u2026", "Load a Wavefront OBJ model (with its map_Kd textures); opens in the folder "
                 + "used last", KeyStroke.getKeyStroke(KeyEvent.VK_O, InputEvent.CTRL_DOWN_MASK), this::openObj);
-        recentMenu.setToolTipText("The OBJ files opened lately, newest first");
-        scenes.setToolTipText("Go back to one of the scenes the demo comes with");
         for (String name : DemoScenes.names()) {
             String label = name.substring(0, 1).toUpperCase(Locale.ROOT) + name.substring(1);
-            scenes.add(new JMenuItem(action(label, DemoScenes.describe(name), null,
+            scenes.add(MenuItems.item(action(label, DemoScenes.describe(name), null,
                     () -> builtIn(label, () -> DemoScenes.byName(name).orElseThrow()))));
         }
         rebuildRecent();
@@ -61,7 +59,7 @@ final class FileMenu {
 
     /** Adds Open OBJ, Open recent and the built-in scenes to {@code file}. */
     void addTo(JMenu file) {
-        file.add(new JMenuItem(open));
+        file.add(MenuItems.item(open));
         file.add(recentMenu);
         file.add(scenes);
     }
@@ -83,7 +81,7 @@ final class FileMenu {
         recentMenu.removeAll();
         List<Path> files = recent.files();
         for (Path p : files) {
-            JMenuItem item = new JMenuItem(action(String.valueOf(p.getFileName()), p.toString(), null, () -> load(p)));
+            JMenuItem item = MenuItems.item(action(String.valueOf(p.getFileName()), p.toString(), null, () -> load(p)));
             recentMenu.add(item);
         }
         if (files.isEmpty()) {
@@ -92,7 +90,7 @@ final class FileMenu {
             recentMenu.add(none);
         } else {
             recentMenu.addSeparator();
-            recentMenu.add(new JMenuItem(action("Clear recent files", "Forget the files opened lately", null, () -> {
+            recentMenu.add(MenuItems.item(action("Clear recent files", "Forget the files opened lately", null, () -> {
                 recent.clear();
                 rebuildRecent();
             })));
