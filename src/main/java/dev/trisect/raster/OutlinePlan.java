@@ -129,7 +129,8 @@ public final class OutlinePlan {
             boolean held = perPixel[tri];
             looks[l + 3] = held ? Math.min(at[a], Math.min(at[a + cs], at[a + 2 * cs])) : Double.NEGATIVE_INFINITY;
             looks[l + 4] = held ? Math.max(at[a], Math.max(at[a + cs], at[a + 2 * cs])) : Double.POSITIVE_INFINITY;
-            looks[l + 5] = style.fade() ? BorderOverlay.fadeAlpha(Math.abs(det) / 2, perimeter(sc, s)) : 1;
+            // A fallback piece is never faded: its magenta outline is what the legend counts, and it must show.
+            looks[l + 5] = style.fade() && !held ? BorderOverlay.fadeAlpha(Math.abs(det) / 2, perimeter(sc, s)) : 1;
             colours[tri] = style.colouring() == BorderStyle.Colouring.YELLOW ? OverlayColours.of(triangles, tri)
                     : OverlayColours.of(triangles, tri, style.colouring(), maxLevel, maxError);
         }

@@ -124,4 +124,18 @@ class BorderColouringTest {
         assertTrue(horizonFaded < horizonPlain / 2, "far pieces fade: " + horizonFaded + " of " + horizonPlain);
         assertTrue(nearFaded > nearPlain * 0.6, "most near outlines stay solid: " + nearFaded + " of " + nearPlain);
     }
+
+    @Test
+    void fadingLeavesTheFallbackOutlinesWhole() {
+        // The demo counted "666 pieces filled per pixel" in its legend with Fade on while no magenta showed:
+        // the slivers, thinnest of all, faded away. Their outlines are what the legend counts: never faded.
+        SceneAsset demo = DemoScenes.demo();
+        TessellationSettings t = TessellationSettings.defaults();
+        Frame plain = render(demo, t, new BorderStyle(BorderStyle.Colouring.YELLOW, false));
+        Frame faded = render(demo, t, new BorderStyle(BorderStyle.Colouring.YELLOW, true));
+        assertTrue(plain.stats().piecesFallback() > 0, "the demo has fallback pieces");
+        int solid = count(plain.colour(), OverlayColours.FALLBACK);
+        assertTrue(solid > 0, "magenta outlines without fading");
+        assertEquals(solid, count(faded.colour(), OverlayColours.FALLBACK), "the same magenta pixels with fading");
+    }
 }

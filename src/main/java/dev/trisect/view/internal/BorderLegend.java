@@ -34,7 +34,8 @@ record BorderLegend(DoubleToIntFunction ramp, String left, String right, List<Sw
     /**
      * The legend for outlines drawn with {@code r}.
      *
-     * @param fallback the frame's pieces filled per pixel (outlined in magenta), 0 when unknown
+     * @param fallback the frame's pieces filled per pixel (outlined in magenta); with none the legend has no
+     *                 magenta entry
      */
     static BorderLegend of(RenderSettings r, long fallback) {
         BorderStyle.Colouring colouring = r.borderStyle().colouring();
@@ -69,21 +70,31 @@ record BorderLegend(DoubleToIntFunction ramp, String left, String right, List<Sw
                         "\u2265 1.25\u00d7 max error", List.of());
             };
         }
-        Swatch perPixel = new Swatch(OverlayColours.FALLBACK, fallbackNote(fallback) + switch (colouring) {
-            case BOUND -> "; yellow = at max error, red = above";
-            default -> "";
-        });
+        // A magenta entry only when the frame has magenta outlines (a cube seen whole has none).
+        List<Swatch> perPixel = fallback > 0 ? List.of(new Swatch(OverlayColours.FALLBACK, fallbackNote(fallback)))
+                : List.of();
         return switch (colouring) {
-            case YELLOW -> new BorderLegend(null, null, null,
-                    List.of(new Swatch(OverlayColours.PIECE, "piece outline (filled affinely)"), perPixel));
+            case YELLOW -> new BorderLegend(null, null, null, concat(
+                    new Swatch(OverlayColours.PIECE, "piece outline (filled affinely)"), perPixel));
             case DEPTH -> new BorderLegend(f -> OverlayColours.depth((int) Math.round(f * maxLevel), maxLevel),
-                    "level 0", "level " + maxLevel + " (cap)", List.of(perPixel));
+                    "level 0", "level " + maxLevel + " (cap)", perPixel);
             case BOUND -> new BorderLegend(f -> OverlayColours.bound(f * 1.25), "bound 0",
-                    "\u2265 1.25\u00d7 max error", List.of(perPixel));
+                    "\u2265 1.25\u00d7 max error", concat(new Swatch(OverlayColours.bound(1),
+                    "at max error; red above it (under Edge, where nothing holds the error)"), perPixel));
         };
     }
 
-    /** What the magenta outlines are: the fallback pieces and why they are filled per pixel. */
+    private static List<Swatch> concat(Swatch first, List<Swatch> rest) {
+        List<Swatch> all = new java.util.ArrayList<>(rest.size() + 1);
+        all.add(first);
+        all.addAll(rest);
+        return List.copyOf(all);
+    }
+
+    /**
+     * What the magenta outlines are: the fallback pieces and why they are filled per pixel ({@code pieces}
+     * of them, or an unknown number when 0: only the fallback-only overlay asks for that).
+     */
     static String fallbackNote(long pieces) {
         return pieces > 0 ? String.format(Locale.ROOT, "%d piece%s filled per pixel (slivers, or a cap reached)",
                 pieces, pieces == 1 ? "" : "s") : "filled per pixel (a sliver, or a cap reached)";
