@@ -16,7 +16,8 @@ import javax.swing.SwingConstants;
  * A typed number beside a slider (or alone): it shows the value in force, and a number typed into
  * it applies on Enter or when the field loses the keyboard. Text that is not a number in its range
  * gets a one-line message naming the field, the text and the range, and the field shows the value in
- * force again. Escape drops the typing. Event thread only.
+ * force again; the next number it accepts gets a message too ("Max edge: 16 px"), which takes the
+ * refusal's place in a status bar. Escape drops the typing. Event thread only.
  */
 final class NumberField extends JTextField {
     private static final long serialVersionUID = 1L;
@@ -29,6 +30,8 @@ final class NumberField extends JTextField {
     private final transient Consumer<String> problem;
     private double shown = Double.NaN;
     private String format = "%.2f";
+    /** Whether the last text committed was refused: the next accepted one then says so, replacing the refusal. */
+    private boolean refused;
 
     /**
      * @param name    the field's name in messages ("Max error")
@@ -36,7 +39,8 @@ final class NumberField extends JTextField {
      * @param min     smallest value accepted
      * @param max     largest value accepted
      * @param apply   given each accepted value
-     * @param problem given the one-line message about text that is not accepted
+     * @param problem given the one-line message about text that is not accepted, and the one about the
+     *                next accepted value after it
      */
     NumberField(String name, String unit, double min, double max, DoubleConsumer apply, Consumer<String> problem) {
         super(7);
@@ -123,9 +127,14 @@ final class NumberField extends JTextField {
             problem.accept(String.format(Locale.ROOT, "%s: \"%s\" is not a number from %s to %s%s; kept %s", name,
                     typed, plain(min), plain(max), unit.isEmpty() ? "" : " " + unit, text(shown)));
             show(shown);
+            refused = true;
             return;
         }
         apply.accept(v);
+        if (refused) {
+            refused = false;
+            problem.accept(name + ": " + text(v));
+        }
     }
 
     /** The number in {@code typed}, which may end in {@code unit}; null if there is none. */

@@ -162,6 +162,12 @@ class DevToolsGuiTest {
         assertTrue(messages.get(0).startsWith("Max edge: \"x\" is not a number from 2 to 128 px"), messages.get(0));
         assertEquals(12, state().settings().render().tessellation().maxEdge(), "bad text changes nothing");
         assertEquals("12 px", onEdt(maxEdge::getText), "and the field shows the value in force again");
+
+        // Then an accepted number: the refusal must not stay in the status bar (it did for its 8 s).
+        type(KeyEvent.VK_1, KeyEvent.VK_6, KeyEvent.VK_ENTER);
+        waitFor("the typed max edge", () -> state().settings().render().tessellation().maxEdge() == 16);
+        waitFor("a message after the refusal", () -> messages.size() >= 2);
+        assertEquals("Max edge: 16 px", messages.get(messages.size() - 1), "the accepted value replaces the refusal");
     }
 
     @Test
