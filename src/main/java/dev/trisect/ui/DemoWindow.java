@@ -3,8 +3,11 @@ package dev.trisect.ui;
 import dev.trisect.base.InputException;
 import dev.trisect.content.AssetScenes;
 import dev.trisect.content.SceneAsset;
+import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.scene.Scene;
+import dev.trisect.render.SplitPolicy;
+import dev.trisect.render.TessellationSettings;
 import dev.trisect.view.FrameInfo;
 import dev.trisect.view.TrisectView;
 import dev.trisect.view.ViewAction;
@@ -91,6 +94,13 @@ final class DemoWindow {
                 () -> frame.dispatchEvent(new WindowEvent(frame, WindowEvent.WINDOW_CLOSING)));
 
         frame.setJMenuBar(menus());
+        // P switches the policy: say so in the status bar, where it shows without the developer tools.
+        Action policy = view.action(ViewAction.SPLIT_POLICY);
+        policy.addPropertyChangeListener(e -> {
+            if (Action.NAME.equals(e.getPropertyName())) {
+                status(policyChanged(view.getRenderSettings()));
+            }
+        });
         // A gap between message and pace, so that a long message is cut short rather than run into it.
         JPanel bottom = new JPanel(new BorderLayout(16, 0));
         bottom.setBorder(BorderFactory.createEmptyBorder(3, 8, 3, 8));
@@ -175,6 +185,11 @@ final class DemoWindow {
 
     String statusText() {
         return statusLine.text();
+    }
+
+    /** The right side of the status bar: how frames are drawn, their rate and size. */
+    String paceText() {
+        return pace.getText();
     }
 
     /** Shows a message in the status bar that clears itself after a few seconds. */
@@ -263,7 +278,7 @@ final class DemoWindow {
     private void refreshReadouts() {
         statusLine.tick(System.nanoTime());
         FrameInfo f = latest;
-        String path = pathAndFilter(view.getRenderSettings());
+        String path = howDrawn(view.getRenderSettings(), f == null ? null : f.settings(), view.getFrameTimeTarget());
         String size = f == null ? "" : f.width() + "x" + f.height();
         boolean frozen = Boolean.TRUE.equals(view.action(ViewAction.FREEZE).getValue(Action.SELECTED_KEY));
         pace.setText(frozen
@@ -274,9 +289,49 @@ final class DemoWindow {
         statusLine.warn(f == null ? null : f.warning());
     }
 
-    /** The status bar's name of how frames are drawn: the path and the texture filter. */
-    static String pathAndFilter(RenderSettings r) {
-        return r.mode().id() + ", " + r.filter().id();
+    /**
+     * The status bar's name of how frames are drawn: the path, the split policy and its threshold where
+     * the path uses them, and the texture filter ("tessellated, edge 32 px, trilinear").
+     *
+     * @param user     the settings in force
+     * @param drawn    those the newest frame was drawn with (the budget may have chosen its threshold), or null
+     * @param targetMs the frame-time target, 0 when off
+     */
+    static String howDrawn(RenderSettings user, RenderSettings drawn, double targetMs) {
+        RenderSettings r = drawn != null && drawn.mode() == user.mode()
+                && drawn.tessellation().policy() == user.tessellation().policy() ? drawn : user;
+        return switch (user.mode()) {
+            case TESSELLATED -> "tessellated, " + policy(r.tessellation())
+                    + (targetMs > 0 ? " (auto)" : "") + ", " + user.filter().id();
+            case SPANS -> String.format(Locale.ROOT, "spans, max error %s px, %s", number(user.tessellation().maxError()),
+                    user.filter().id());
+            default -> user.mode().id() + ", " + user.filter().id();
+        };
+    }
+
+    /** A split policy and its threshold: "edge 32 px", "error 0.5 px". */
+    static String policy(TessellationSettings t) {
+        return t.policy() == SplitPolicy.EDGE ? "edge " + number(t.maxEdge()) + " px"
+                : "error " + number(t.maxError()) + " px";
+    }
+
+    /** A threshold as the tools show it: whole pixels without decimals, else up to three. */
+    private static String number(double v) {
+        return v == Math.rint(v) ? Long.toString(Math.round(v))
+                : new java.math.BigDecimal(String.format(Locale.ROOT, "%.3f", v)).stripTrailingZeros().toPlainString();
+    }
+
+    /**
+     * What P (or the Render menu's item) says in the status bar, so that the switch shows without the
+     * developer tools: the policy now in force, and the key of the path that uses it when another shows.
+     */
+    static String policyChanged(RenderSettings r) {
+        TessellationSettings t = r.tessellation();
+        String what = t.policy() == SplitPolicy.EDGE ? "Edge (split while a piece's longest edge is over "
+                + number(t.maxEdge()) + " px)" : "Error (split while an edge's affine error bound is over "
+                + number(t.maxError()) + " px)";
+        return "Split policy: " + what + (r.mode() == RenderMode.TESSELLATED ? ""
+                : "; the tessellated path (3) uses it");
     }
 
     private void saveScreenshot() {

@@ -86,7 +86,26 @@ class DemoLogicTest {
     void theStatusBarNamesThePathAndTheFilter() {
         dev.trisect.render.RenderSettings r = dev.trisect.render.RenderSettings.defaults()
                 .withMode(dev.trisect.render.RenderMode.SPANS).withFilter(dev.trisect.texture.TextureFilter.BILINEAR);
-        assertEquals("spans, bilinear", DemoWindow.pathAndFilter(r));
+        assertEquals("spans, max error 0.5 px, bilinear", DemoWindow.howDrawn(r, null, 0));
+        assertEquals("perspective, bilinear", DemoWindow.howDrawn(r.withMode(dev.trisect.render.RenderMode.PERSPECTIVE),
+                null, 0));
+    }
+
+    @Test
+    void theStatusBarNamesTheSplitPolicyBesidePathAndFilter() {
+        dev.trisect.render.RenderSettings r = dev.trisect.render.RenderSettings.defaults();
+        assertEquals("tessellated, edge 32 px, nearest", DemoWindow.howDrawn(r, null, 0));
+        dev.trisect.render.RenderSettings error = r.withTessellation(r.tessellation()
+                .withPolicy(dev.trisect.render.SplitPolicy.ERROR).withMaxError(0.5));
+        assertEquals("tessellated, error 0.5 px, nearest", DemoWindow.howDrawn(error, null, 0));
+        // Under Auto, the threshold the newest frame was drawn with, and that Auto chose it.
+        dev.trisect.render.RenderSettings drawn = r.withTessellation(r.tessellation().withMaxEdge(14.635));
+        assertEquals("tessellated, edge 14.635 px (auto), nearest", DemoWindow.howDrawn(r, drawn, 40));
+        // P's message, with the key of the path that uses the policy when another shows.
+        assertEquals("Split policy: Error (split while an edge's affine error bound is over 0.5 px)",
+                DemoWindow.policyChanged(error));
+        assertTrue(DemoWindow.policyChanged(r.withMode(dev.trisect.render.RenderMode.SPANS))
+                .endsWith("; the tessellated path (3) uses it"));
     }
     @Test
     void menuTooltipsWrap() {

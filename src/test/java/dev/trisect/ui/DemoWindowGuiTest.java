@@ -14,6 +14,7 @@ import dev.trisect.devtools.DevToolsDialog;
 import dev.trisect.devtools.DevToolsPanel;
 import dev.trisect.metrics.Comparison;
 import dev.trisect.render.RenderMode;
+import dev.trisect.render.SplitPolicy;
 import dev.trisect.texture.TextureFilter;
 import dev.trisect.view.ViewAction;
 import dev.trisect.view.internal.Command;
@@ -517,6 +518,13 @@ class DemoWindowGuiTest {
         String name = onEdt(() -> (String) cmd(ViewAction.SPLIT_POLICY).getValue(javax.swing.Action.NAME));
         assertTrue(name.endsWith(state().settings().render().tessellation().policy().name()
                 .toLowerCase(Locale.ROOT)), name);
+        // Feedback without the tools: the status bar says which policy is in force, and its right side names it.
+        waitFor("the status bar's word on P", () -> onEdt(() -> window.statusText().startsWith("Split policy: ")));
+        String said = onEdt(() -> window.statusText());
+        String policy = state().settings().render().tessellation().policy() == SplitPolicy.EDGE ? "Edge" : "Error";
+        assertTrue(said.startsWith("Split policy: " + policy), said);
+        waitFor("the policy beside path and filter", () -> onEdt(() -> window.paceText())
+                .contains(policy.toLowerCase(Locale.ROOT) + " "));
         press(KeyEvent.VK_P);
         waitFor("back", () -> state().settings().render().tessellation().policy() == start);
     }
