@@ -145,7 +145,7 @@ class LauncherTest {
 
     @Test
     void demoHelpOnAFullStandardOutputFails() throws Exception {
-        org.junit.jupiter.api.Assumptions.assumeTrue(Files.exists(Path.of("/dev/full")));
+        org.junit.jupiter.api.Assumptions.assumeTrue(Files.exists(Path.of("/dev/full")), "needs /dev/full");
         ProcessBuilder pb = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Djava.awt.headless=true", "-cp", System.getProperty("java.class.path"), Trisect.class.getName(),
                 "demo", "--help").redirectOutput(new java.io.File("/dev/full"));
