@@ -6,7 +6,6 @@ import dev.trisect.content.SceneAsset;
 import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.scene.Scene;
-import dev.trisect.render.SplitPolicy;
 import dev.trisect.render.TessellationSettings;
 import dev.trisect.view.FrameInfo;
 import dev.trisect.view.TrisectView;
@@ -303,16 +302,14 @@ final class DemoWindow {
         return switch (user.mode()) {
             case TESSELLATED -> "tessellated, " + policy(r.tessellation())
                     + (targetMs > 0 ? " (auto)" : "") + ", " + user.filter().id();
-            case SPANS -> String.format(Locale.ROOT, "spans, max error %s px, %s", number(user.tessellation().maxError()),
-                    user.filter().id());
+            case SPANS -> "spans, max error " + number(user.knotError()) + " px, " + user.filter().id();
             default -> user.mode().id() + ", " + user.filter().id();
         };
     }
 
     /** A split policy and its threshold: "edge 32 px", "error 0.5 px". */
     static String policy(TessellationSettings t) {
-        return t.policy() == SplitPolicy.EDGE ? "edge " + number(t.maxEdge()) + " px"
-                : "error " + number(t.maxError()) + " px";
+        return t.policy().id() + " " + number(t.policy().threshold(t)) + " px";
     }
 
     /** A threshold as the tools show it: whole pixels without decimals, else up to three. */
@@ -327,9 +324,8 @@ final class DemoWindow {
      */
     static String policyChanged(RenderSettings r) {
         TessellationSettings t = r.tessellation();
-        String what = t.policy() == SplitPolicy.EDGE ? "Edge (split while a piece's longest edge is over "
-                + number(t.maxEdge()) + " px)" : "Error (split while an edge's affine error bound is over "
-                + number(t.maxError()) + " px)";
+        String what = (t.policy().measuresError() ? "Error (split while an edge's affine error bound is over "
+                : "Edge (split while a piece's longest edge is over ") + number(t.policy().threshold(t)) + " px)";
         return "Split policy: " + what + (r.mode() == RenderMode.TESSELLATED ? ""
                 : "; the tessellated path (3) uses it");
     }
