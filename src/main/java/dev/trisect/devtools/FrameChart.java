@@ -38,6 +38,7 @@ final class FrameChart extends JComponent {
 
     private transient double[][] frames = new double[0][];
     private int picked = -1;
+    private boolean paused;
 
     /** @param onPick given the index of a frame the user clicked in the frames shown (or -1 off any bar) */
     FrameChart(IntConsumer onPick) {
@@ -150,7 +151,7 @@ final class FrameChart extends JComponent {
             int w = getWidth();
             int plotH = getHeight() - LEGEND_H - PLOT_TOP;
             int base = PLOT_TOP + plotH;
-            g.setColor(new Color(0x202020));
+            g.setColor(BACKGROUND);
             g.fillRect(0, 0, w, getHeight());
             g.setFont(g.getFont().deriveFont(10f));
             FontMetrics fm = g.getFontMetrics();
@@ -188,10 +189,10 @@ final class FrameChart extends JComponent {
                 int y = y(ms, top, base, plotH);
                 g.drawLine(0, y, w, y);
             }
-            g.setColor(Color.LIGHT_GRAY);
             for (double ms = step; ms <= top * (1 + 1e-9); ms += step) {
-                // Under its line, so that the top one stays clear of the heading.
-                g.drawString(msText(ms) + " ms", 2, y(ms, top, base, plotH) + fm.getAscent());
+                // Under its line, so that the top one stays clear of the heading; on a band of the chart's
+                // background, so that it reads over the bars.
+                boxed(g, msText(ms) + " ms", 2, y(ms, top, base, plotH) + fm.getAscent(), Color.LIGHT_GRAY);
             }
             g.setStroke(new BasicStroke(1, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {4, 3}, 0));
             g.setColor(new Color(0xFF, 0xFF, 0xFF, 170));
@@ -211,10 +212,7 @@ final class FrameChart extends JComponent {
                 label(g, "16.7 and 33.3 ms (60, 30 fps)", w, y30);
             }
             g.setColor(Color.LIGHT_GRAY);
-            String head = clipped == 0 ? "scale 0\u2013" + msText(top) + " ms"
-                    : String.format(Locale.ROOT, "%d frame%s above the scale (red), worst %.0f ms", clipped,
-                    clipped == 1 ? "" : "s", worst);
-            g.drawString(head, 2, PLOT_TOP - 5);
+            g.drawString(heading(paused, clipped, worst, top), 2, PLOT_TOP - 5);
             paintLegend(g, base + 12, w);
         } finally {
             g.dispose();
@@ -222,7 +220,33 @@ final class FrameChart extends JComponent {
     }
 
     private static void label(Graphics2D g, String text, int w, int y) {
-        g.drawString(text, w - g.getFontMetrics().stringWidth(text) - 2, y - 2);
+        boxed(g, text, w - g.getFontMetrics().stringWidth(text) - 2, y - 2, Color.WHITE);
+    }
+
+    /** The chart's background, behind its labels too. */
+    static final Color BACKGROUND = new Color(0x202020);
+
+    /** Draws {@code text} at baseline {@code y} on a box of the chart's background, so that bars never run through it. */
+    private static void boxed(Graphics2D g, String text, int x, int y, Color colour) {
+        FontMetrics fm = g.getFontMetrics();
+        g.setColor(BACKGROUND);
+        g.fillRect(x - 1, y - fm.getAscent(), fm.stringWidth(text) + 2, fm.getAscent() + fm.getDescent());
+        g.setColor(colour);
+        g.drawString(text, x, y);
+    }
+
+    /** The line over the chart: paused or not, its scale, or the frames cut at its top. */
+    static String heading(boolean paused, int clipped, double worst, double top) {
+        String scale = clipped == 0 ? "scale 0\u2013" + msText(top) + " ms"
+                : String.format(Locale.ROOT, "%d frame%s above the scale (red), worst %.0f ms", clipped,
+                clipped == 1 ? "" : "s", worst);
+        return paused ? "PAUSED \u2014 " + scale : scale;
+    }
+
+    /** Marks the chart paused (the heading says so) or live. */
+    void paused(boolean on) {
+        paused = on;
+        repaint();
     }
 
     private static int y(double ms, double top, int base, int plotH) {

@@ -37,6 +37,7 @@ final class TimingSection implements ToolSection {
             if (!pause.isSelected()) {
                 showPicked("");
             }
+            pausedShown();
             refresh(null, null, null);
         });
         form.row(chart);
@@ -52,10 +53,17 @@ final class TimingSection implements ToolSection {
         return form.panel();
     }
 
+    /** The button and the chart's heading say whether the chart is paused. */
+    private void pausedShown() {
+        pause.setText(pause.isSelected() ? "Paused: click to resume" : "Pause");
+        chart.paused(pause.isSelected());
+    }
+
     /** A click in the chart pauses it and picks the frame under the mouse. */
     private void pick(int index) {
         if (!pause.isSelected()) {
             pause.setSelected(true);
+            pausedShown();
         }
         double[][] rows = chart.frames();
         showPicked(index < 0 ? "" : Counts.of(rows.length - 1 - index, "frame") + " before the newest: "
@@ -88,6 +96,11 @@ final class TimingSection implements ToolSection {
     /** The chart, for tests. */
     FrameChart chart() {
         return chart;
+    }
+
+    /** The Pause button, for tests. */
+    JToggleButton pauseButton() {
+        return pause;
     }
 
     /** Each path's engine time on the last measured frame: one row per path, its name, a bar and its value. */

@@ -79,9 +79,40 @@ class DevToolsLogicTest {
         int raster = FrameChart.COLOURS[3].getRGB() & 0xFFFFFF;
         int tall = 0;
         for (int y = 0; y < 170; y++) {
-            tall += (img.getRGB(10, y) & 0xFFFFFF) == raster ? 1 : 0;
+            tall += (img.getRGB(150, y) & 0xFFFFFF) == raster ? 1 : 0;
         }
         assertTrue(tall > 40, "a 30 ms frame's raster stage is " + tall + " px tall");
+    }
+
+    @Test
+    void theChartsLabelsReadOverTheBarsAndItsHeadingSaysPaused() {
+        // Every frame 18 ms of raster: the bars run through the 10 ms label and the 16.7 ms one, which were
+        // drawn straight over them and could not be read.
+        double[][] rows = new double[300][];
+        for (int i = 0; i < rows.length; i++) {
+            rows[i] = new double[] {0, 0, 0, 18, 0, 0, 0, 0};
+        }
+        FrameChart chart = new FrameChart(i -> { });
+        chart.setSize(330, 170);
+        chart.show(rows, -1);
+        java.awt.image.BufferedImage img = new java.awt.image.BufferedImage(330, 170,
+                java.awt.image.BufferedImage.TYPE_INT_RGB);
+        java.awt.Graphics2D g = img.createGraphics();
+        chart.paint(g);
+        g.dispose();
+        int raster = FrameChart.COLOURS[3].getRGB() & 0xFFFFFF;
+        double top = FrameChart.topMs(rows);
+        int base = 170 - 30;
+        int y10 = base - (int) Math.round(10 / top * (170 - 30 - 14));
+        int throughLabel = 0;
+        for (int y = y10 + 2; y <= y10 + 6; y++) {
+            for (int x = 3; x < 24; x++) {
+                throughLabel += (img.getRGB(x, y) & 0xFFFFFF) == raster ? 1 : 0;
+            }
+        }
+        assertEquals(0, throughLabel, "bar pixels inside the 10 ms label");
+        assertEquals("PAUSED \u2014 scale 0\u201350 ms", FrameChart.heading(true, 0, 0, 50));
+        assertEquals("scale 0\u201350 ms", FrameChart.heading(false, 0, 0, 50));
     }
 
     @Test
