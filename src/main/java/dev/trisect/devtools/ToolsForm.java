@@ -32,6 +32,10 @@ final class ToolsForm {
     private final JButton header = new JButton();
     private final JPanel panel;
     private final Map<String, JLabel> readouts = new LinkedHashMap<>();
+    /** The sentence readouts ({@link #note}), by name. */
+    private final Map<String, JLabel> notes = new LinkedHashMap<>();
+    /** Client property of a note's label: its text, plain. */
+    private static final String PLAIN = "trisect.plain";
     private int rows;
 
     ToolsForm(String title) {
@@ -174,6 +178,18 @@ final class ToolsForm {
         row(label(name, tip), v);
     }
 
+    /**
+     * Adds a named readout of a sentence or two: its name above, its text wrapped to the section's width
+     * below (read back with {@link #get} as plain text).
+     */
+    void note(String name, String tip) {
+        JLabel text = new JLabel(" ");
+        text.setToolTipText(tip);
+        row(label(name, tip));
+        row(text);
+        notes.put(name, text);
+    }
+
     /** Adds readouts from {name, tooltip} pairs. */
     void readouts(String[][] namesAndTips) {
         for (String[] r : namesAndTips) {
@@ -182,6 +198,12 @@ final class ToolsForm {
     }
 
     void set(String name, String text) {
+        JLabel n = notes.get(name);
+        if (n != null && !text.equals(n.getClientProperty(PLAIN))) {
+            n.putClientProperty(PLAIN, text);
+            n.setText(text.isEmpty() ? " " : "<html><body style='width:300px'>" + text.replace("&", "&amp;")
+                    .replace("<", "&lt;").replace(">", "&gt;") + "</body></html>");
+        }
         JLabel l = readouts.get(name);
         if (l != null && !text.equals(l.getText())) {
             l.setText(text);
@@ -189,6 +211,10 @@ final class ToolsForm {
     }
 
     String get(String name) {
+        if (notes.containsKey(name)) {
+            Object plain = notes.get(name).getClientProperty(PLAIN);
+            return plain == null ? "" : plain.toString();
+        }
         JLabel l = readouts.get(name);
         return l == null ? null : l.getText();
     }

@@ -133,6 +133,14 @@ public final class BudgetController {
         return ceiling;
     }
 
+    /**
+     * The finest threshold the last frame's pieces allow: finer would be predicted to fill more than
+     * {@link #BUDGET_AIM} of the piece budget (see the class comment); 0 before a frame with a budget.
+     */
+    public double pieceFloor() {
+        return pieceFloor;
+    }
+
     /** Whether the last window's median was close enough to the target to hold still. */
     public boolean settled() {
         return settled;

@@ -169,9 +169,9 @@ abstract class ViewDrawing extends JComponent implements AutoCloseable {
     }
 
     /**
-     * Holds this much engine time per frame by choosing the tessellated path's split threshold each
-     * frame, never looser than the one in the render settings (its ceiling); 0 turns it off (the
-     * default). Any thread.
+     * Holds this frame time — the whole frame, as the frame rate counts it — by choosing the
+     * tessellated path's split threshold each frame, never looser than the one in the render settings
+     * (its ceiling); 0 turns it off (the default). Any thread.
      *
      * @param milliseconds the target, greater than 0 and at most 1000; or 0
      */
@@ -191,7 +191,7 @@ abstract class ViewDrawing extends JComponent implements AutoCloseable {
     /**
      * The frame-time target.
      *
-     * @return milliseconds of engine time per frame, or 0 when off
+     * @return milliseconds per frame, or 0 when off
      */
     public double getFrameTimeTarget() {
         ViewState.Budget b = state.budget();

@@ -222,6 +222,8 @@ public final class RenderLoop implements Runnable {
                 state.frameTimes.add(new double[] {st.transformNanos() / 1e6, st.clipNanos() / 1e6,
                     st.tessellateNanos() / 1e6, st.rasterNanos() / 1e6, (st.overlayNanos() + overlay) / 1e6,
                     compareStageNanos / 1e6, (end - presentStart) / 1e6}, (end - frameStart) / 1e6);
+                // The budget holds the frame time the user sees: the whole frame, tools and overlay included.
+                state.budgetChoice(budget.frameDone(st, (end - frameStart) / 1e6, compareStageNanos / 1e6));
             }
         } finally {
             renderer.close();
@@ -307,7 +309,6 @@ public final class RenderLoop implements Runnable {
             state.pathMs(paths, scene);
         }
         long afterThisPath = System.nanoTime();
-        state.budgetChoice(budget.frameDone(back.stats));
         frames++;
         back.serial = frames;
         back.camera = camera;

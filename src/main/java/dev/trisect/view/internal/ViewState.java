@@ -1,6 +1,7 @@
 package dev.trisect.view.internal;
 
 import dev.trisect.perf.BudgetController;
+import java.util.Locale;
 import dev.trisect.metrics.Comparison;
 import dev.trisect.scene.Camera;
 import dev.trisect.content.AssetScenes;
@@ -81,16 +82,24 @@ public final class ViewState {
 
     /**
      * What the budget controller chose for a frame, and why, in one value, so that every readout of it
-     * agrees: the status bar's warning and the tools' chosen threshold.
+     * agrees: the status bar's warning and the tools' chosen threshold, its reason and its last change.
      *
-     * @param threshold the split threshold the frame was drawn with, pixels
-     * @param limit     what held the controller there when it chose it
-     * @param medianMs  the median engine time of the window that decided it, milliseconds (NaN before one)
-     * @param targetMs  the target it holds, milliseconds
-     * @param ceiling   the user's threshold, the loosest it may choose, pixels
+     * @param threshold  the split threshold chosen for the next frame, pixels
+     * @param limit      what holds the controller there
+     * @param medianMs   the median frame time (as the status bar's rate counts it) of the last window,
+     *                   milliseconds (NaN before one)
+     * @param targetMs   the target it holds, milliseconds
+     * @param ceiling    the user's threshold, the loosest it may choose, pixels
+     * @param drawnAt    the threshold of the frame just drawn, pixels
+     * @param pieces     that frame's pieces (filled and dropped off screen: what the piece budget counts)
+     * @param pieceBudget that frame's piece budget
+     * @param pieceFloor the finest threshold that frame's pieces allow (0 before any), pixels
+     * @param lastChange the last change of threshold and why ("32.000 → 21.333 px: median frame 52.0 ms
+     *                   over the 40.0 ms target")
      */
     public record BudgetChoice(double threshold, BudgetController.Limit limit, double medianMs, double targetMs,
-                               double ceiling) {
+                               double ceiling, double drawnAt, long pieces, long pieceBudget, double pieceFloor,
+                               String lastChange) {
         /**
          * Why the threshold is where it is, in a few words for a readout: "your threshold" (the ceiling:
          * the target is out of reach), "the finest" (the floor: met with room to spare), "piece budget"
@@ -102,6 +111,27 @@ public final class ViewState {
                 case FLOOR -> "the finest";
                 case PIECE_BUDGET -> "piece budget";
                 case TARGET -> "";
+            };
+        }
+
+        /**
+         * Why, in a sentence whose numbers are those the tools show beside it: the median frame time against
+         * the target, or the pieces against their budget.
+         */
+        public String why() {
+            if (Double.isNaN(medianMs)) {
+                return String.format(Locale.ROOT, "measuring: the first %d frames decide", BudgetController.WINDOW);
+            }
+            return switch (limit) {
+                case CEILING -> String.format(Locale.ROOT, "out of reach: median frame %.1f ms over the %.1f ms target "
+                        + "even at your threshold, %.3f px, the loosest Auto may choose", medianMs, targetMs, ceiling);
+                case FLOOR -> String.format(Locale.ROOT, "met with room to spare: median frame %.1f ms under the %.1f ms "
+                        + "target even at the finest threshold, %.3f px", medianMs, targetMs, threshold);
+                case PIECE_BUDGET -> String.format(Locale.ROOT, "piece budget: %,d of %,d pieces at %.3f px, so finer "
+                        + "than %.3f px would fill more than %.0f %% of it (median frame %.1f ms, target %.1f ms)",
+                        pieces, pieceBudget, drawnAt, pieceFloor, 100 * BudgetController.BUDGET_AIM, medianMs, targetMs);
+                case TARGET -> String.format(Locale.ROOT, "following the target: median frame %.1f ms against %.1f ms",
+                        medianMs, targetMs);
             };
         }
     }

@@ -40,7 +40,7 @@ class WarningsTest {
     void aTargetOutOfReachIsSaidWithTheThresholdTheToolsShow() {
         FrameStats s = frame(TessellationSettings.defaults().withPolicy(SplitPolicy.ERROR).withMaxError(0.5));
         ViewState.BudgetChoice atCeiling = new ViewState.BudgetChoice(0.5, BudgetController.Limit.CEILING, 23.4, 16.7,
-                0.5);
+                0.5, 0.5, 1000, 10_000, 0.1, "");
         String w = Warnings.of(s, atCeiling);
         assertTrue(w != null && w.contains("Over budget: median 23.4 ms against 16.7 ms even at your threshold (0.50 px)"),
                 w);
@@ -48,7 +48,8 @@ class WarningsTest {
         // whatever one frame's own time (issue 18: the warning named 32 px while the tools showed 10-19 px).
         for (BudgetController.Limit l : new BudgetController.Limit[] {BudgetController.Limit.TARGET,
             BudgetController.Limit.FLOOR, BudgetController.Limit.PIECE_BUDGET}) {
-            assertNull(Warnings.of(s, new ViewState.BudgetChoice(0.25, l, 23.4, 16.7, 0.5)), l.name());
+            assertNull(Warnings.of(s, new ViewState.BudgetChoice(0.25, l, 23.4, 16.7, 0.5, 0.25, 1000,
+                    10_000, 0.1, "")), l.name());
         }
     }
 
