@@ -76,7 +76,7 @@ final class TimingSection implements ToolSection {
         if (!pause.isSelected()) {
             chart.show(state.frameTimes.snapshot(), -1);
         }
-        paths.ms = state.pathMs();
+        paths.samples.offer(state.pathMs());
         paths.repaint();
     }
 
@@ -103,18 +103,28 @@ final class TimingSection implements ToolSection {
         return pause;
     }
 
-    /** Each path's engine time on the last measured frame: one row per path, its name, a bar and its value. */
+    /**
+     * Each path's engine time over the last comparisons: one row per path, its name, a bar to the median
+     * and a whisker from the least to the greatest sample, and the numbers.
+     */
     static final class PathBars extends JComponent {
         private static final long serialVersionUID = 1L;
         private static final String[] NAMES = {"perspective", "affine", "tessellated", "spans"};
-        transient double[] ms;
+        final transient PathSamples samples = new PathSamples();
 
         PathBars() {
             setPreferredSize(new Dimension(330, 4 * 15 + 16));
-            setToolTipText("Each path's engine time on the last measured frame (the paths neither shown nor the "
-                    + "reference drawn too, to time them), so the cost of a path shows next to its error. Every "
-                    + "path is timed recording the UV output the comparison reads, which bench does not: "
-                    + "10-30 % more than bench's times");
+            setToolTipText("Each path's engine time over the last " + PathSamples.CAPACITY + " comparisons (about "
+                    + "every 0.4 s): the bar is the median, the whisker runs from the least to the greatest, so one "
+                    + "slow frame neither hides nor decides. The paths neither shown nor the reference are drawn too, "
+                    + "to time them. Every path is timed recording the UV output the comparison reads, which bench "
+                    + "does not: 10-30 % more than bench's times");
+        }
+
+        /** A row's numbers: "12.3 ms (10.1-15.0)", the median and the spread of the samples. */
+        static String text(PathSamples s, int path) {
+            return s.count() == 1 ? String.format(Locale.ROOT, "%.1f ms", s.median(path))
+                    : String.format(Locale.ROOT, "%.1f ms (%.1f\u2013%.1f)", s.median(path), s.min(path), s.max(path));
         }
 
         @Override
@@ -123,28 +133,35 @@ final class TimingSection implements ToolSection {
             try {
                 g.setFont(g.getFont().deriveFont(11f));
                 g.setColor(Color.GRAY);
-                g.drawString("each path's engine time, last measured frame", 0, 11);
-                if (ms == null) {
+                int n = samples.count();
+                g.drawString(n == 0 ? "each path's engine time" : "each path's engine time, median (range) of "
+                        + Counts.of(n, "comparison"), 0, 11);
+                if (n == 0) {
                     g.drawString("(nothing measured in this scene yet)", 0, 27);
                     return;
                 }
                 double top = 1;
-                for (double p : ms) {
-                    top = Math.max(top, p);
+                for (RenderMode mode : RenderMode.values()) {
+                    top = Math.max(top, samples.max(mode.ordinal()));
                 }
                 int nameW = g.getFontMetrics().stringWidth("tessellated") + 8;
-                int valueW = g.getFontMetrics().stringWidth("000.0 ms") + 6;
+                int valueW = g.getFontMetrics().stringWidth("000.0 ms (000.0\u2013000.0)") + 6;
                 int barMax = Math.max(10, getWidth() - nameW - valueW);
                 for (RenderMode mode : RenderMode.values()) {
                     int y = 16 + mode.ordinal() * 15;
-                    double v = ms[mode.ordinal()];
+                    int p = mode.ordinal();
                     g.setColor(getForeground());
-                    g.drawString(NAMES[mode.ordinal()], 0, y + 10);
+                    g.drawString(NAMES[p], 0, y + 10);
                     g.setColor(new Color(0x59A14F));
-                    int bar = (int) Math.round(v / top * barMax);
+                    int bar = (int) Math.round(samples.median(p) / top * barMax);
                     g.fillRect(nameW, y + 2, bar, 10);
+                    int lo = nameW + (int) Math.round(samples.min(p) / top * barMax);
+                    int hi = nameW + (int) Math.round(samples.max(p) / top * barMax);
                     g.setColor(getForeground());
-                    g.drawString(String.format(Locale.ROOT, "%.1f ms", v), nameW + bar + 4, y + 10);
+                    g.drawLine(lo, y + 7, hi, y + 7);
+                    g.drawLine(lo, y + 4, lo, y + 10);
+                    g.drawLine(hi, y + 4, hi, y + 10);
+                    g.drawString(text(samples, p), Math.max(nameW + bar, hi) + 4, y + 10);
                 }
             } finally {
                 g.dispose();
