@@ -29,8 +29,7 @@ final class BudgetSection implements ToolSection {
     BudgetSection(ViewController owner) {
         this.state = owner.state();
         target = new NumberField("Target ms", "ms", MIN_TARGET_MS, 1000, this::publish, owner::message).decimals(1);
-        auto.setToolTipText("Adjust the split threshold every frame to hold the target frame time (tessellated "
-                + "path); the max edge or max error set above is the loosest it may go");
+        auto.setToolTipText(AUTO_TIP);
         target.setToolTipText("Frame time to hold, milliseconds per frame: the whole frame the status bar's frames "
                 + "per second count (overlay, the tools' measuring and presenting included), 0.1 to 1000: type it and "
                 + "press Enter");
@@ -52,6 +51,8 @@ final class BudgetSection implements ToolSection {
         sync(null);
     }
 
+    private static final String AUTO_TIP = "Adjust the split threshold every frame to hold the target frame time "
+            + "(tessellated path); the max edge or max error set above is the loosest it may go";
     static final String WHY = "Why";
     static final String CHANGE = "Last change";
     static final String AGAINST = "Against per-pixel";
@@ -71,6 +72,15 @@ final class BudgetSection implements ToolSection {
             ViewState.Budget b = state.budget();
             auto.setSelected(b.on());
             target.show(b.targetMs());
+            if (settings != null) {
+                // Auto chooses the tessellated path's threshold: in another path it has nothing to choose.
+                boolean applies = settings.render().mode().splits();
+                auto.setEnabled(applies);
+                target.setEnabled(applies);
+                auto.setToolTipText(ToolsForm.wrap(applies ? AUTO_TIP : "Not used now: the " + settings.render().mode()
+                        .id() + " path splits nothing, so there is no threshold to choose; press 3 for the tessellated "
+                        + "path", ToolsForm.TIP_LINE));
+            }
         } finally {
             syncing = false;
         }

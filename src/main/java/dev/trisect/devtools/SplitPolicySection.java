@@ -1,5 +1,7 @@
 package dev.trisect.devtools;
 
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.RenderSettings;
 import dev.trisect.render.SplitPolicy;
 import dev.trisect.render.TessellationSettings;
 import dev.trisect.view.internal.ViewController;
@@ -8,11 +10,15 @@ import java.util.function.UnaryOperator;
 import javax.swing.BoxLayout;
 import javax.swing.ButtonGroup;
 import javax.swing.JComponent;
+import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JRadioButton;
 import javax.swing.JSlider;
 
-/** Developer tools: the tessellated path's split policy and its limits. */
+/**
+ * Developer tools: the tessellated path's split policy and its limits, and the span path's Max error.
+ * A control the current path and policy do not use is disabled, its tooltip saying why.
+ */
 final class SplitPolicySection implements ToolSection {
     /** Max-error slider: 0..SCALE maps logarithmically onto MIN_ERROR..MAX_ERROR pixels. */
     private static final int SCALE = 1000;
@@ -61,12 +67,87 @@ final class SplitPolicySection implements ToolSection {
         policies.add(edgePolicy);
         policies.add(errorPolicy);
         form.row(policies);
-        form.row(ToolsForm.label("Max edge", maxEdge.getToolTipText()), maxEdgeValue);
+        JLabel edgeLabel = ToolsForm.label("Max edge", maxEdge.getToolTipText());
+        JLabel errorLabel = ToolsForm.label("Max error", maxError.getToolTipText());
+        JLabel depthLabel = ToolsForm.label("Max depth", maxDepth.getToolTipText());
+        form.row(edgeLabel, maxEdgeValue);
         form.row(maxEdge);
-        form.row(ToolsForm.label("Max error", maxError.getToolTipText()), maxErrorValue);
+        form.row(errorLabel, maxErrorValue);
         form.row(maxError);
-        form.row(ToolsForm.label("Max depth", maxDepth.getToolTipText()), maxDepthValue);
+        form.row(depthLabel, maxDepthValue);
         form.row(maxDepth);
+        policyControls = new Control(edgePolicy.getToolTipText() + "; Error: " + errorPolicy.getToolTipText(),
+                edgePolicy, errorPolicy);
+        edgeControls = new Control(maxEdge.getToolTipText(), edgeLabel, maxEdge, maxEdgeValue);
+        errorControls = new Control(maxError.getToolTipText(), errorLabel, maxError, maxErrorValue);
+        depthControls = new Control(maxDepth.getToolTipText(), depthLabel, maxDepth, maxDepthValue);
+    }
+
+    private final Control policyControls;
+    private final Control edgeControls;
+    private final Control errorControls;
+    private final Control depthControls;
+
+    /**
+     * A control and its label and field, enabled when the path and policy use it; disabled, each part's
+     * tooltip says why instead of what it does.
+     */
+    static final class Control {
+        private final String tip;
+        private final JComponent[] parts;
+
+        Control(String tip, JComponent... parts) {
+            this.tip = tip;
+            this.parts = parts;
+        }
+
+        /** Enables the parts, or disables them with {@code why} (null: they apply) in their tooltips. */
+        void applies(String why) {
+            for (JComponent p : parts) {
+                p.setEnabled(why == null);
+                p.setToolTipText(ToolsForm.wrap(why == null ? tip : "Not used now: " + why, ToolsForm.TIP_LINE));
+            }
+        }
+
+        /** The tooltip of the control's first part, for tests. */
+        String tooltip() {
+            return parts[parts.length - 1].getToolTipText();
+        }
+
+        boolean enabled() {
+            return parts[parts.length - 1].isEnabled();
+        }
+    }
+
+    /**
+     * Why a control does not apply to {@code r}, or null when it does: the paths that split nothing (and
+     * the span path, which spaces knots by Max error alone), and the threshold the other policy uses.
+     */
+    static String notUsed(String control, RenderSettings r) {
+        RenderMode m = r.mode();
+        if (!m.splits() && !(m.knots() && control.equals("Max error"))) {
+            return m.knots() ? "the span path (4) splits nothing: its knots are spaced by Max error alone"
+                    : "the " + m.id() + " path splits nothing; the tessellated path (3) uses the split policy"
+                    + (control.equals("Max error") ? ", the span path (4) Max error" : "");
+        }
+        SplitPolicy p = r.tessellation().policy();
+        if (m.splits() && control.equals("Max edge") && p.measuresError()) {
+            return "the Error policy splits by the error bound, not by length: choose Edge to use Max edge";
+        }
+        if (m.splits() && control.equals("Max error") && !p.measuresError()) {
+            return "the Edge policy splits by length, not by the error bound: choose Error to use Max error";
+        }
+        return null;
+    }
+
+    /** The controls of {@code name} ("Policy", "Max edge", "Max error", "Max depth"), for tests. */
+    Control control(String name) {
+        return switch (name) {
+            case "Policy" -> policyControls;
+            case "Max edge" -> edgeControls;
+            case "Max error" -> errorControls;
+            default -> depthControls;
+        };
     }
 
     @Override
@@ -109,10 +190,10 @@ final class SplitPolicySection implements ToolSection {
             maxEdge.setValue((int) Math.round(t.maxEdge()));
             maxError.setValue(errorToSlider(error));
             maxDepth.setValue(t.maxDepth());
-            maxEdge.setEnabled(t.policy() == SplitPolicy.EDGE);
-            maxEdgeValue.setEnabled(maxEdge.isEnabled());
-            maxError.setEnabled(t.policy().measuresError() || s.render().mode().knots());
-            maxErrorValue.setEnabled(maxError.isEnabled());
+            policyControls.applies(notUsed("Policy", s.render()));
+            edgeControls.applies(notUsed("Max edge", s.render()));
+            errorControls.applies(notUsed("Max error", s.render()));
+            depthControls.applies(notUsed("Max depth", s.render()));
             // The values in force, not the sliders' steps: a typed 0.333 px shows as typed.
             maxEdgeValue.show(t.maxEdge());
             maxErrorValue.show(error);

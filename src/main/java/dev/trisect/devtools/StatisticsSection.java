@@ -20,7 +20,8 @@ final class StatisticsSection implements ToolSection {
             {"Render threads", "Threads that fill each frame"},
             {"ms transform", "Milliseconds per frame transforming vertices to clip space"},
             {"ms clip", "Milliseconds culling and clipping triangles"},
-            {"ms tessellate", "Milliseconds splitting triangles into pieces and projecting them"},
+            {"ms tessellate", "Milliseconds splitting triangles into pieces and projecting them; a dash in the paths "
+                    + "that split nothing, with the time they spend projecting"},
             {"ms raster", "Milliseconds clearing and filling the frame"},
             {"ms overlay", "Milliseconds drawing polygon borders, measured: they are drawn after the frame is filled"},
             {"ms total", "Milliseconds for the whole frame in the engine"},
@@ -53,7 +54,9 @@ final class StatisticsSection implements ToolSection {
         form.set("Frame size", front.width() + "x" + front.height());
         form.set("ms transform", ms(st.transformNanos()));
         form.set("ms clip", ms(st.clipNanos()));
-        form.set("ms tessellate", ms(st.tessellateNanos()));
+        // A path that splits nothing only projects its triangles there: no tessellate time to show.
+        form.set("ms tessellate", front.drawnRender != null && !front.drawnRender.mode().splits()
+                ? "- (projecting " + ms(st.tessellateNanos()) + ")" : ms(st.tessellateNanos()));
         form.set("ms raster", ms(st.rasterNanos()));
         form.set("ms overlay", ms(st.overlayNanos() + front.overlayNanos));
         form.set("ms total", ms(st.totalNanos() + front.overlayNanos));

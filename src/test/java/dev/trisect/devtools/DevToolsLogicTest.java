@@ -134,22 +134,48 @@ class DevToolsLogicTest {
     }
 
     @Test
+    void controlsThePathDoesNotUseAreDisabledAndSayWhy() throws Exception {
+        javax.swing.SwingUtilities.invokeAndWait(() -> {
+            dev.trisect.view.internal.ViewController c = controller();
+            DevToolsPanel panel = new DevToolsPanel(c);
+            SplitPolicySection split = panel.section(SplitPolicySection.class);
+            c.update(s -> s.withRender(s.render().withMode(dev.trisect.render.RenderMode.SPANS)));
+            panel.syncFromSettings();
+            assertFalse(split.control("Max edge").enabled(), "Max edge in the span path");
+            assertTrue(split.control("Max edge").tooltip().contains("span path (4) splits nothing"),
+                    split.control("Max edge").tooltip());
+            assertTrue(split.control("Max error").enabled(), "the span path's knot spacing");
+            assertFalse(panel.section(BudgetSection.class).autoSwitch().isEnabled(), "Auto has nothing to choose");
+            c.update(s -> s.withRender(s.render().withMode(dev.trisect.render.RenderMode.TESSELLATED)));
+            panel.syncFromSettings();
+            assertTrue(split.control("Max edge").enabled() && split.control("Max depth").enabled());
+            assertFalse(split.control("Max error").enabled(), "the Edge policy does not use Max error");
+            assertTrue(split.control("Max error").tooltip().contains("choose Error"), split.control("Max error").tooltip());
+            assertTrue(panel.section(BudgetSection.class).autoSwitch().isEnabled());
+        });
+    }
+
+    private static dev.trisect.view.internal.ViewController controller() {
+        return new dev.trisect.view.internal.ViewController(new ViewState(DemoScenes.boxes()),
+                new dev.trisect.view.internal.ViewController.Surface() {
+                    @Override
+                    public void repaint() {
+                    }
+
+                    @Override
+                    public void inspector(boolean on) {
+                    }
+
+                    @Override
+                    public void showDevTools(boolean on) {
+                    }
+                }, 1);
+    }
+
+    @Test
     void everyTooltipOfTheToolsWrapsIntoShortLines() throws Exception {
         javax.swing.SwingUtilities.invokeAndWait(() -> {
-            dev.trisect.view.internal.ViewController c = new dev.trisect.view.internal.ViewController(
-                    new ViewState(DemoScenes.boxes()), new dev.trisect.view.internal.ViewController.Surface() {
-                        @Override
-                        public void repaint() {
-                        }
-
-                        @Override
-                        public void inspector(boolean on) {
-                        }
-
-                        @Override
-                        public void showDevTools(boolean on) {
-                        }
-                    }, 1);
+            dev.trisect.view.internal.ViewController c = controller();
             List<String> tips = new ArrayList<>();
             collectTips(new DevToolsPanel(c), tips);
             assertTrue(tips.size() > 30, tips.size() + " tooltips");

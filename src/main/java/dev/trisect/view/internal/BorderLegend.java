@@ -78,9 +78,10 @@ record BorderLegend(DoubleToIntFunction ramp, String left, String right, List<Sw
                     new Swatch(OverlayColours.PIECE, "piece outline (filled affinely)"), perPixel));
             case DEPTH -> new BorderLegend(f -> OverlayColours.depth((int) Math.round(f * maxLevel), maxLevel),
                     "level 0", "level " + maxLevel + " (cap)", perPixel);
+            // The scale is Max error whatever the policy: say which value, and that Edge does not hold it.
             case BOUND -> new BorderLegend(f -> OverlayColours.bound(f * 1.25), "bound 0",
-                    "\u2265 1.25\u00d7 max error", concat(new Swatch(OverlayColours.bound(1),
-                    "at max error; red above it (under Edge, where nothing holds the error)"), perPixel));
+                    "\u2265 1.25\u00d7 max error", concat(new Swatch(OverlayColours.bound(1), boundScale(r)),
+                    perPixel));
         };
     }
 
@@ -89,6 +90,18 @@ record BorderLegend(DoubleToIntFunction ramp, String left, String right, List<Sw
         all.add(first);
         all.addAll(rest);
         return List.copyOf(all);
+    }
+
+    /**
+     * Where the error-bound colouring's scale comes from: Max error, which the Error policy holds and
+     * the Edge policy does not (there the colours show how far a piece's bound is from a value nothing
+     * enforces, and red can appear).
+     */
+    static String boundScale(RenderSettings r) {
+        String px = String.format(Locale.ROOT, "%.3g px", r.tessellation().maxError());
+        return r.tessellation().policy().measuresError()
+                ? "yellow at Max error, " + px + " (the Error policy holds it)"
+                : "yellow at Max error, " + px + " (Split policy section; Edge does not hold it: red above)";
     }
 
     /**

@@ -120,6 +120,16 @@ class FramePainterTest {
     }
 
     @Test
+    void theErrorBoundColouringSaysWhereItsScaleComesFrom() {
+        RenderSettings edge = RenderSettings.defaults().withBorders(true)
+                .withBorderStyle(new BorderStyle(BorderStyle.Colouring.BOUND, true));
+        String words = BorderLegend.of(edge, 0).swatches().get(0).text();
+        assertTrue(words.contains("Max error, 0.500 px") && words.contains("Edge does not hold it"), words);
+        RenderSettings error = edge.withTessellation(edge.tessellation().withPolicy(dev.trisect.render.SplitPolicy.ERROR));
+        assertTrue(BorderLegend.of(error, 0).swatches().get(0).text().contains("the Error policy holds it"));
+    }
+
+    @Test
     void theSplitViewGivesThePerPixelPathOneName() {
         assertArrayEquals(new String[] {"per-pixel (this path)", "per-pixel (reference)"},
                 FramePainter.splitLabels(RenderMode.PERSPECTIVE));
