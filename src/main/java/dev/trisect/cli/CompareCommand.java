@@ -122,6 +122,8 @@ final class CompareCommand extends SceneCommand {
         String json = new JsonObject()
                 .put("mode", path.mode.id())
                 .put("against", against.id())
+                // The demo opens with trilinear, the command line defaults to nearest: say which was used.
+                .put("filter", settings.filter().id())
                 .putAll(c.json())
                 .toString();
         Results.deliver(common.out(), batch, b -> {

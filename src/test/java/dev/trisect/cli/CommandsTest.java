@@ -147,6 +147,10 @@ class CommandsTest {
     void affineIsFarFromPerspectiveAndPerspectiveFromItselfNot() {
         CliRun affine = CliRun.of("compare", "--scene", "floor", "--size", "320x180", "--mode", "affine");
         assertTrue(number(affine.out(), "max_displacement") > 10, affine.out());
+        // Which filter the metrics were measured with (the demo opens with trilinear, compare defaults to nearest).
+        assertTrue(affine.out().contains("\"filter\":\"nearest\""), affine.out());
+        assertTrue(CliRun.of("compare", "--scene", "floor", "--size", "320x180", "--mode", "affine", "--filter",
+                "trilinear").out().contains("\"filter\":\"trilinear\""));
         CliRun same = CliRun.of("compare", "--scene", "floor", "--size", "320x180", "--mode", "perspective");
         assertEquals(0.0, number(same.out(), "max_texel_error"), same.out());
         // The exact displacement of the per-pixel path is only the float rounding of its texel coordinates:
