@@ -12,7 +12,7 @@ import dev.trisect.texture.TextureFilter;
  * The pixel loops of the bilinear and trilinear filters over a set-up triangle's spans (its
  * {@link TriangleSetup} and the spans a {@link SpanSolver} solved). One loop per filter and path, so
  * each inner loop is monomorphic: the choice is made once per triangle, never per pixel. Depth test,
- * depth write and the UV output are exactly those of the nearest loops in {@link NearestSpans}; only
+ * depth write and the UV output are exactly those of the nearest loops ({@link PerPixelNearest}, {@link FixedNearest}); only
  * the colour differs (docs/conventions.md, "Texture filtering"). Every sample is taken by
  * {@link LaneSampler} on the chain's {@link TexelLanes}: the packed blend with 8-bit weights.
  *
@@ -141,7 +141,7 @@ final class FilteredSpans {
             int stepX = 0;
             int stepY = 0;
             boolean interpolate = false;
-            // The column as a double counter, not (double) x: see NearestSpans.perPixel.
+            // The column as a double counter, not (double) x: see PerPixelNearest.
             double xd = spanStart;
             for (int x = spanStart; x < spanEnd; x++, xd++) {
                 double q = qRow + qDx * xd;
@@ -268,7 +268,7 @@ final class FilteredSpans {
             double sRow = sBase + sDy * y;
             double tRow = tBase + tDy * y;
             int rowOffset = y * width;
-            // The column as a double counter, not (double) x: see NearestSpans.perPixel.
+            // The column as a double counter, not (double) x: see PerPixelNearest.
             double xd = spanStart;
             for (int x = spanStart; x < spanEnd; x++, xd++) {
                 double q = qRow + qDx * xd;
@@ -374,7 +374,7 @@ final class FilteredSpans {
             long s2 = (long) Math.floor(sAnchor * ks2) - half + ds2 * skip;
             long t2 = (long) Math.floor(tAnchor * kt2) - half + dt2 * skip;
             int rowOffset = y * width;
-            // The column as a double counter, not (double) x: see NearestSpans.perPixel.
+            // The column as a double counter, not (double) x: see PerPixelNearest.
             double xd = spanStart;
             for (int x = spanStart; x < spanEnd; x++, xd++, s0 += ds0, t0 += dt0, s += ds, t += dt, s2 += ds2,
                     t2 += dt2) {

@@ -9,7 +9,7 @@ import dev.trisect.texture.internal.TexelLanes;
 
 /**
  * The bilinear and trilinear pixel loop of the span path: the knots, the exact coordinates at them and
- * the 32.32 fixed-point steps between them of {@link KnotSpans#nearest}, sampled as {@link FilteredSpans}
+ * the 32.32 fixed-point steps between them of {@link KnotNearest}, sampled as {@link FilteredSpans}
  * samples ({@link LaneSampler}, the packed blend with 8-bit weights).
  *
  * <p>Trilinear takes one level of detail per segment: at each knot, OpenGL's lambda from the exact
@@ -25,7 +25,7 @@ import dev.trisect.texture.internal.TexelLanes;
  * {@link Sampler#position} per level, as the per-pixel loop does for them.
  */
 final class KnotFilteredSpans {
-    private static final double FIXED_SCALE = KnotSpans.FIXED_SCALE;
+    private static final double FIXED_SCALE = KnotNearest.FIXED_SCALE;
     /** From 32.32 to the sampler's 24.8. */
     private static final int TO_SAMPLER = 32 - Sampler.FRACTION_BITS;
 
@@ -110,7 +110,7 @@ final class KnotFilteredSpans {
             long ds = 0;
             long dt = 0;
             int rowOffset = y * width;
-            // The column as a double counter, not (double) x: see NearestSpans.perPixel.
+            // The column as a double counter, not (double) x: see PerPixelNearest.
             double xd = from;
             for (int x = from; x < to; x++, xd++, s += ds, t += dt) {
                 if (x == b) {

@@ -7,9 +7,12 @@ import dev.trisect.texture.TextureFilter;
 /**
  * Fills screen-space triangles into a {@link Framebuffer}, restricted to a rectangle of the frame:
  * for each triangle, {@link TriangleSetup} (bounds and attribute planes), {@link SpanSolver} (the
- * covered pixels of each row), then the pixel loop of the texture filter and path
- * ({@link NearestSpans}, {@link FilteredSpans}; in the span path {@link KnotSpans} and
- * {@link KnotFilteredSpans}, with knots placed by {@link KnotSpacing}).
+ * covered pixels of each row), then the pixel loop of the texture filter and path, chosen once per
+ * triangle: the nearest loops generated from templates, one per colour source ({@link ColourSources})
+ * and UV setting ({@link PerPixelNearest}, {@link FixedNearest}, in the span path {@link KnotNearest},
+ * in the tessellated path {@link TreeNearest}), and the filtered loops ({@link FilteredSpans},
+ * {@link KnotFilteredSpans}, {@link TreeFilteredFill}); the span path's knots are placed by
+ * {@link KnotSpacing}.
  *
  * <p>Coverage is exact integer arithmetic on snapped corners: a pixel belongs to a triangle when its
  * centre is inside, and a centre exactly on an edge goes to the triangle for which that edge is a top
@@ -95,18 +98,26 @@ public final class Rasterizer {
         int[] spans = solver.spans();
         Texture texture = textures[triangles.materials()[tri]];
         int uvId = triangles.ids()[tri] + 1;
+        boolean uv = frame.uv() != null;
         if (knots) {
             return filter == TextureFilter.NEAREST
-                    ? KnotSpans.nearest(t, spans, frame, texture, uvId, spanError, x0, x1)
+                    ? KnotNearest.fill(nearestSource(texture), uv, t, spans, frame, texture, uvId, spanError, x0, x1)
                     : KnotFilteredSpans.fill(t, spans, frame, texture.mipChain(), uvId, spanError,
                     filter == TextureFilter.TRILINEAR, x0, x1);
         } else if (filter != TextureFilter.NEAREST) {
             return FilteredSpans.fill(t, spans, frame, texture.mipChain(), uvId, divide, filter);
         } else if (!divide && t.fixedPointSafe) {
-            return NearestSpans.affineFixed(t, spans, frame, texture, uvId);
+            return FixedNearest.fill(nearestSource(texture), uv, t, spans, frame, texture, uvId);
         } else {
-            return NearestSpans.perPixel(t, spans, frame, texture, uvId, divide);
+            return PerPixelNearest.fill(nearestSource(texture), uv, divide, t, spans, frame, texture, uvId);
         }
+    }
+
+    /** The colour source of nearest sampling from {@code texture}: masks wrap a power-of-two side. */
+    private static int nearestSource(Texture texture) {
+        int tw = texture.width();
+        int th = texture.height();
+        return (tw & (tw - 1)) == 0 && (th & (th - 1)) == 0 ? ColourSources.NEAREST_POT : ColourSources.NEAREST_ANY;
     }
 
     /**
@@ -144,8 +155,8 @@ public final class Rasterizer {
             Texture texture = textures[materials[g]];
             int uvId = ids[g] + 1;
             if (filter == TextureFilter.NEAREST) {
-                written += trees.nearest(t, spans, groups, roots[g], groups.nodeCount(g), frame, texture,
-                        uvId);
+                written += TreeNearest.fill(nearestSource(texture), frame.uv() != null, trees, t, spans, groups,
+                        roots[g], groups.nodeCount(g), frame, texture, uvId);
             } else {
                 written += filteredTrees.fill(trees, t, spans, groups, roots[g], groups.nodeCount(g), frame,
                         texture.mipChain(), uvId, filter == TextureFilter.TRILINEAR);

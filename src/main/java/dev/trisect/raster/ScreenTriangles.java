@@ -91,17 +91,9 @@ public final class ScreenTriangles {
      */
     public void shrinkTo(int triangles) {
         int n = Math.max(Math.max(triangles, count), 1);
-        if (n >= ids.length) {
-            return;
+        if (n < ids.length) {
+            resize(n);
         }
-        fixed = Arrays.copyOf(fixed, n * FIXED_STRIDE);
-        screen = Arrays.copyOf(screen, n * SCREEN_STRIDE);
-        attributes = Arrays.copyOf(attributes, n * 3 * cornerStride);
-        ids = Arrays.copyOf(ids, n);
-        materials = Arrays.copyOf(materials, n);
-        perPixel = Arrays.copyOf(perPixel, n);
-        levels = Arrays.copyOf(levels, n);
-        links = Arrays.copyOf(links, 3 * n);
     }
 
     /** Snapped corners, sub-pixel units. Read-only outside this package. */
@@ -284,7 +276,11 @@ public final class ScreenTriangles {
     }
 
     private void grow() {
-        int n = ids.length * 2;
+        resize(ids.length * 2);
+    }
+
+    /** Reallocates every array for {@code n} triangles, keeping the first {@code min(n, count)}. */
+    private void resize(int n) {
         fixed = Arrays.copyOf(fixed, n * FIXED_STRIDE);
         screen = Arrays.copyOf(screen, n * SCREEN_STRIDE);
         attributes = Arrays.copyOf(attributes, n * 3 * cornerStride);

@@ -1,11 +1,10 @@
 package dev.trisect.raster;
 
-import dev.trisect.render.Framebuffer;
-import dev.trisect.texture.Texture;
 import java.util.Arrays;
 
 /**
- * The tessellated path's nearest fill, one pass per input triangle: the input triangle's rows, as
+ * The tessellated path's one-pass fill, the part every filter shares (its loops are {@link TreeNearest},
+ * generated from a template, and {@link TreeFilteredFill}), one pass per input triangle: the input triangle's rows, as
  * {@link SpanSolver} solved them from its own snapped corners, are each cut into the segments of its
  * pieces by descending the split tree ({@link SplitTrees}) along the row, left to right, and each run
  * of affine pieces along the row is filled by one loop with each piece's texel planes in 32.32 fixed
@@ -111,103 +110,6 @@ final class TreeFill {
     }
 
     /**
-     * Fills group {@code root}'s input triangle, set up as {@code setup} for a perspective fill (its
-     * planes hold 1/w, s/w, t/w) with spans {@code spans}, nearest sampling: one loop across each run of
-     * affine pieces of a row, loading the next piece's planes where the row crosses into it, the
-     * fallback and wide pieces between runs per pixel.
-     *
-     * @return pixels written
-     */
-    long nearest(TriangleSetup setup, int[] spans, SplitTrees trees, int root, int nodes, Framebuffer frame,
-                 Texture texture, int uvId) {
-        int[] st = stackFor(nodes);
-        int[] segs = segments;
-        double[] planes = trees.planes();
-        int ps = trees.planeStride();
-        long[] steps = trees.fixedSteps();
-        int[] firstColumns = trees.firstColumns();
-        byte[] kinds = trees.kinds();
-        double qBase = setup.qPlane.base;
-        double qDx = setup.qPlane.dx;
-        double qDy = setup.qPlane.dy;
-        int width = frame.width();
-        int[] color = frame.color();
-        float[] depth = frame.depth();
-        double[] uv = frame.uv();
-        int[] texels = texture.argb();
-        int tw = texture.width();
-        int th = texture.height();
-        boolean pot = (tw & (tw - 1)) == 0 && (th & (th - 1)) == 0;
-        int wMask = tw - 1;
-        int hMask = th - 1;
-        int topRow = th - 1;
-        long written = 0;
-        int[] sp = spans;
-        for (int y = setup.rowStart, j = 0; y < setup.rowEnd; y++, j += 2) {
-            int a = sp[j];
-            int b = sp[j + 1];
-            if (a >= b) {
-                continue;
-            }
-            double qRow = qBase + qDy * y;
-            int rowOffset = y * width;
-            int n = descend(root, a, b, y, trees, st, segs);
-            for (int g = 0; g < n; g += 3) {
-                int piece = segs[g + 2];
-                if (kinds[piece] != SplitTrees.AFFINE) {
-                    // Per pixel, as the per-pixel path (a fallback piece) or in doubles (a wide one).
-                    written += NearestSpans.perPixel(oneRow(setup, trees, piece, y, segs[g], segs[g + 1]),
-                            segmentSpan, frame, texture, uvId, kinds[piece] == SplitTrees.PER_PIXEL);
-                    continue;
-                }
-                // One loop across the run of affine pieces that starts here, loading the next piece's
-                // planes where the row crosses into it.
-                int runEnd = segs[affineRun(segs, g, n, kinds) - 2];
-                int end = segs[g + 1];
-                int po = ps * piece;
-                int fc = firstColumns[piece];
-                long ds = steps[SplitTrees.FIXED_STEP * piece];
-                long dt = steps[SplitTrees.FIXED_STEP * piece + 1];
-                long s = start(planes, po, y, fc, ds, segs[g]);
-                long t = start(planes, po + SplitTrees.PLANE, y, fc, dt, segs[g]);
-                // The column as a double counter, not (double) x: see NearestSpans.perPixel.
-                double xd = segs[g];
-                for (int x = segs[g]; x < runEnd; x++, xd++, s += ds, t += dt) {
-                    if (x == end) {
-                        g += 3;
-                        end = segs[g + 1];
-                        piece = segs[g + 2];
-                        po = ps * piece;
-                        fc = firstColumns[piece];
-                        ds = steps[SplitTrees.FIXED_STEP * piece];
-                        dt = steps[SplitTrees.FIXED_STEP * piece + 1];
-                        s = start(planes, po, y, fc, ds, x);
-                        t = start(planes, po + SplitTrees.PLANE, y, fc, dt, x);
-                    }
-                    float qf = (float) (qRow + qDx * xd);
-                    int i = rowOffset + x;
-                    if (qf > depth[i]) {
-                        depth[i] = qf;
-                        // An arithmetic shift floors, negative coordinates included.
-                        int si = (int) (s >> 32);
-                        int ti = (int) (t >> 32);
-                        int column = pot ? si & wMask : Math.floorMod(si, tw);
-                        int rowFromBottom = pot ? ti & hMask : Math.floorMod(ti, th);
-                        color[i] = texels[(topRow - rowFromBottom) * tw + column] | 0xFF000000;
-                        if (uv != null) {
-                            uv[3 * i] = s / FIXED_SCALE;
-                            uv[3 * i + 1] = t / FIXED_SCALE;
-                            uv[3 * i + 2] = uvId;
-                        }
-                        written++;
-                    }
-                }
-            }
-        }
-        return written;
-    }
-
-    /**
      * The end (exclusive, an index into {@code segs}) of the run of segments from {@code g} on whose
      * pieces are {@link SplitTrees#AFFINE} and which follow one another without a gap (a gap would be
      * a piece dropped off screen, which holds no pixel centre of the frame; the run ends there to be safe).
@@ -224,7 +126,7 @@ final class TreeFill {
     /**
      * A texel coordinate at column {@code x} of row {@code y} of a piece, in 32.32 fixed point, from its
      * plane at {@code planes[o..o+3)} (base, dx, dy): anchored at the piece's first column {@code fc}
-     * and stepped from there by {@code step}, exactly as {@link NearestSpans#affineFixed} and
+     * and stepped from there by {@code step}, exactly as {@link FixedNearest} and
      * {@link FilteredSpans} do for a piece's row, so that the pixel takes the bits it took when pieces
      * were filled one by one.
      */
@@ -241,7 +143,7 @@ final class TreeFill {
     /**
      * Pixels [a, b) of row y of {@code piece}, a per-pixel fallback piece or an affine piece too large
      * for fixed point, as a setup of one row for the loops that fill whole triangles
-     * ({@link NearestSpans#perPixel}, {@link FilteredSpans#fill}; its span in {@link #segmentSpan}):
+     * ({@link PerPixelNearest}, {@link FilteredSpans#fill}; its span in {@link #segmentSpan}):
      * the input triangle's depth, and its perspective-correct planes for a fallback piece (so that
      * the pixel is the per-pixel path's), the piece's own affine planes (doubles) for the other.
      */

@@ -89,7 +89,7 @@ final class TreeFilteredFill {
                 int weight = 0;
                 long ds0 = 0, dt0 = 0, ds = 0, dt = 0, ds2 = 0, dt2 = 0;
                 long s0 = 0, t0 = 0, s = 0, t = 0, s2 = 0, t2 = 0;
-                // The column as a double counter, not (double) x: see NearestSpans.perPixel.
+                // The column as a double counter, not (double) x: see PerPixelNearest.
                 double xd = runStart;
                 for (int x = runStart; x < runEnd; x++, xd++, s0 += ds0, t0 += dt0, s += ds, t += dt, s2 += ds2,
                         t2 += dt2) {

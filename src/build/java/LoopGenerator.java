@@ -1,0 +1,250 @@
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * Expands the pixel loops' templates into Java at build time (as OpenJDK's X-Buffer.java.template):
+ * one monomorphic loop per colour source and per setting of each other dimension (with or without
+ * the UV output; dividing by 1/w or not), and per template a dispatcher that picks the loop once per
+ * triangle. Maven runs it in the generate-sources phase as a single-file program
+ * ({@code java src/build/java/LoopGenerator.java src/main/templates target/generated-sources/loops}),
+ * so the templates are the one source of truth and the loops are never checked in; a file whose text
+ * did not change is not rewritten, so that an unchanged build compiles nothing again.
+ *
+ * <p>Template ({@code dev/trisect/raster/NAME.java.template}): the sections {@code //#header},
+ * {@code //#method} (expanded once per combination) and {@code //#footer}, and the lines
+ * {@code //#params} (the loop's parameters) and {@code //#dimensions} (of {@code source}, {@code uv},
+ * {@code divide}). In the method, a line ending in {@code //#uv} is kept only with the UV output,
+ * {@code //#!uv} only without it, likewise {@code //#divide} and {@code //#!divide}; {@code $SETUP$}
+ * (a line of its own) becomes the source's per-triangle set-up, {@code $FIXED$} its colour from
+ * 32.32 fixed-point texel coordinates {@code s}, {@code t}, {@code $DOUBLE$} from doubles,
+ * {@code $SOURCE_ID$} and {@code $UV$} the combination's source and UV setting, {@code $NAME$} the
+ * loop's name.
+ *
+ * <p>Colour source ({@code dev/trisect/raster/sources/NAME.source}): comment lines (its description),
+ * then the sections {@code //#setup}, {@code //#fixed} and {@code //#double}. Adding a source is its
+ * file and its line in {@link #SOURCES}.
+ */
+public final class LoopGenerator {
+    /** The colour sources, in the order of their ids in {@code ColourSources}: one line registers one. */
+    static final List<String> SOURCES = List.of(
+            "NearestPot",
+            "NearestAny");
+    /** The templates, each giving one class of loops. */
+    static final List<String> TEMPLATES = List.of("PerPixelNearest", "FixedNearest", "KnotNearest", "TreeNearest");
+    /** Where the raster package's templates are, below the templates' root; likewise its output. */
+    static final Path PACKAGE = Path.of("dev/trisect/raster");
+
+    private LoopGenerator() {
+    }
+
+    /**
+     * Writes the generated sources: {@code args[0]} the templates' root, {@code args[1]} the output
+     * root (a source folder).
+     */
+    public static void main(String[] args) throws IOException {
+        if (args.length != 2) {
+            System.err.println("usage: java LoopGenerator.java TEMPLATES_DIR OUTPUT_DIR");
+            System.exit(2);
+        }
+        Path out = Path.of(args[1]);
+        for (Map.Entry<Path, String> e : generate(Path.of(args[0])).entrySet()) {
+            Path file = out.resolve(e.getKey());
+            if (Files.isRegularFile(file) && Files.readString(file, StandardCharsets.UTF_8).equals(e.getValue())) {
+                continue;
+            }
+            Files.createDirectories(file.getParent());
+            Files.writeString(file, e.getValue(), StandardCharsets.UTF_8);
+        }
+    }
+
+    /** Every generated file, by its path relative to the output root, from the templates under {@code root}. */
+    static Map<Path, String> generate(Path root) throws IOException {
+        Path dir = root.resolve(PACKAGE);
+        List<Source> sources = new ArrayList<>();
+        for (String name : SOURCES) {
+            sources.add(Source.read(name, dir.resolve("sources").resolve(name + ".source")));
+        }
+        Map<Path, String> out = new LinkedHashMap<>();
+        out.put(PACKAGE.resolve("ColourSources.java"), colourSources(sources));
+        for (String t : TEMPLATES) {
+            String text = Files.readString(dir.resolve(t + ".java.template"), StandardCharsets.UTF_8);
+            out.put(PACKAGE.resolve(t + ".java"), expand(t, text, sources));
+        }
+        return out;
+    }
+
+    private static String banner(String from) {
+        return "// Generated at build time by src/build/java/LoopGenerator.java from src/main/templates/"
+                + PACKAGE.toString().replace('\\', '/') + "/" + from + ": edit that, not this.\n";
+    }
+
+    private static String colourSources(List<Source> sources) {
+        StringBuilder b = new StringBuilder(banner("sources/*.source"));
+        b.append("package dev.trisect.raster;\n\n");
+        b.append("/**\n * The colour sources of the pixel loops: what colour a fragment gets, chosen once per triangle.\n");
+        b.append(" * Each generated loop class ({@link PerPixelNearest}, {@link FixedNearest}, {@link KnotNearest},\n");
+        b.append(" * {@link TreeNearest}) has one loop per source and dispatches on these numbers.\n */\n");
+        b.append("final class ColourSources {\n");
+        for (int i = 0; i < sources.size(); i++) {
+            Source s = sources.get(i);
+            b.append("    /** ").append(s.description).append(" */\n");
+            b.append("    static final int ").append(s.constant()).append(" = ").append(i).append(";\n");
+        }
+        b.append("    /** How many sources there are. */\n");
+        b.append("    static final int COUNT = ").append(sources.size()).append(";\n\n");
+        b.append("    private ColourSources() {\n    }\n}\n");
+        return b.toString();
+    }
+
+    private static String expand(String name, String text, List<Source> sources) {
+        String header = section(text, "//#header", "//#params");
+        String params = line(text, "//#params ");
+        List<String> dims = List.of(line(text, "//#dimensions ").split(" "));
+        String method = section(text, "//#method", "//#footer");
+        String footer = text.substring(text.indexOf("//#footer") + "//#footer".length() + 1);
+        boolean divides = dims.contains("divide");
+        StringBuilder b = new StringBuilder(banner(name + ".java.template"));
+        b.append(header);
+        b.append(dispatcher(params, divides, sources));
+        for (Source s : sources) {
+            for (boolean uv : new boolean[] {true, false}) {
+                for (boolean divide : divides ? new boolean[] {true, false} : new boolean[] {false}) {
+                    b.append('\n');
+                    b.append("    /** ").append(s.name).append(divides ? divide ? ", dividing by 1/w" : ", affine" : "")
+                            .append(uv ? ", with" : ", without").append(" the UV output; pixels written. */\n");
+                    b.append(method(method, s, uv, divide, methodName(s, uv, divides, divide)));
+                }
+            }
+        }
+        b.append(footer);
+        return b.toString();
+    }
+
+    private static String dispatcher(String params, boolean divides, List<Source> sources) {
+        StringBuilder args = new StringBuilder();
+        for (String p : params.split(",")) {
+            String[] words = p.trim().split(" ");
+            args.append(args.length() == 0 ? "" : ", ").append(words[words.length - 1]);
+        }
+        StringBuilder b = new StringBuilder("\n");
+        b.append("    /**\n     * The loop of colour source {@code source} ({@link ColourSources}), with the UV output when\n");
+        b.append("     * {@code uv}").append(divides ? ", dividing by the interpolated 1/w when {@code divide}" : "")
+                .append(": chosen once per triangle.\n     *\n     * @return pixels written\n     */\n");
+        b.append("    static long fill(int source, boolean uv, ").append(divides ? "boolean divide," : "")
+                .append(divides ? "\n            " : "").append(params).append(") {\n");
+        b.append("        switch (source) {\n");
+        for (Source s : sources) {
+            b.append("            case ColourSources.").append(s.constant()).append(":\n");
+            if (divides) {
+                b.append("                if (divide) {\n");
+                b.append("                    return uv ? ").append(methodName(s, true, true, true)).append('(').append(args)
+                        .append(")\n                            : ").append(methodName(s, false, true, true)).append('(')
+                        .append(args).append(");\n                }\n");
+            }
+            b.append("                return uv ? ").append(methodName(s, true, divides, false)).append('(').append(args)
+                    .append(")\n                        : ").append(methodName(s, false, divides, false)).append('(')
+                    .append(args).append(");\n");
+        }
+        b.append("            default:\n");
+        b.append("                throw new IllegalArgumentException(\"no colour source \" + source);\n");
+        b.append("        }\n    }\n");
+        return b.toString();
+    }
+
+    private static String methodName(Source s, boolean uv, boolean divides, boolean divide) {
+        String n = Character.toLowerCase(s.name.charAt(0)) + s.name.substring(1);
+        return n + (divides ? divide ? "Divide" : "Affine" : "") + (uv ? "Uv" : "");
+    }
+
+    private static String method(String template, Source s, boolean uv, boolean divide, String name) {
+        StringBuilder b = new StringBuilder();
+        for (String l : template.split("\n", -1)) {
+            if (l.isEmpty() && b.length() > 0 && template.endsWith(l)) {
+                continue;
+            }
+            String kept = keep(l, "uv", uv);
+            kept = kept == null ? null : keep(kept, "divide", divide);
+            if (kept == null) {
+                continue;
+            }
+            if (kept.trim().equals("$SETUP$")) {
+                String indent = kept.substring(0, kept.indexOf('$'));
+                for (String setup : s.setup) {
+                    b.append(indent).append(setup).append('\n');
+                }
+                continue;
+            }
+            b.append(kept.replace("$NAME$", name).replace("$FIXED$", s.fixed).replace("$DOUBLE$", s.colourOfDoubles)
+                    .replace("$SOURCE_ID$", "ColourSources." + s.constant()).replace("$UV$", Boolean.toString(uv)))
+                    .append('\n');
+        }
+        return b.toString();
+    }
+
+    /** The line without its marker if it is kept for {@code value} of dimension {@code dim}; null if dropped. */
+    private static String keep(String line, String dim, boolean value) {
+        String on = " //#" + dim;
+        String off = " //#!" + dim;
+        if (line.endsWith(on)) {
+            return value ? line.substring(0, line.length() - on.length()) : null;
+        }
+        if (line.endsWith(off)) {
+            return value ? null : line.substring(0, line.length() - off.length());
+        }
+        return line;
+    }
+
+    private static String section(String text, String start, String end) {
+        int a = text.indexOf(start);
+        int z = text.indexOf(end);
+        if (a < 0 || z < a) {
+            throw new IllegalArgumentException("template without " + start + " before " + end);
+        }
+        return text.substring(a + start.length() + 1, z);
+    }
+
+    private static String line(String text, String prefix) {
+        int a = text.indexOf(prefix);
+        if (a < 0) {
+            throw new IllegalArgumentException("template without " + prefix.trim());
+        }
+        return text.substring(a + prefix.length(), text.indexOf('\n', a)).trim();
+    }
+
+    /** A colour source read from its file. */
+    private record Source(String name, String description, List<String> setup, String fixed, String colourOfDoubles) {
+        static Source read(String name, Path file) throws IOException {
+            StringBuilder description = new StringBuilder();
+            Map<String, List<String>> sections = new LinkedHashMap<>();
+            List<String> current = null;
+            for (String l : Files.readAllLines(file, StandardCharsets.UTF_8)) {
+                if (l.startsWith("//#")) {
+                    current = new ArrayList<>();
+                    sections.put(l.substring(3).trim(), current);
+                } else if (current == null && l.startsWith("//")) {
+                    description.append(description.length() == 0 ? "" : " ").append(l.substring(2).trim());
+                } else if (current != null && !l.isBlank()) {
+                    current.add(l);
+                }
+            }
+            for (String s : List.of("setup", "fixed", "double")) {
+                if (!sections.containsKey(s)) {
+                    throw new IllegalArgumentException(file + ": no //#" + s + " section");
+                }
+            }
+            return new Source(name, description.toString(), sections.get("setup"),
+                    String.join(" ", sections.get("fixed")), String.join(" ", sections.get("double")));
+        }
+
+        /** NearestPot gives NEAREST_POT. */
+        String constant() {
+            return name.replaceAll("([a-z0-9])([A-Z])", "$1_$2").toUpperCase(java.util.Locale.ROOT);
+        }
+    }
+}
