@@ -240,8 +240,12 @@ public final class ScreenTriangles {
 
     /** Corner attributes from the vertex at {@code v[from..]}: 1/w, then the varyings. */
     private void corner(double[] v, int from, int to) {
-        attributes[to] = 1 / v[from + VertexLayout.W];
-        System.arraycopy(v, from + VertexLayout.FIRST_VARYING, attributes, to + 1, cornerStride - 1);
+        double[] at = attributes;
+        at[to] = 1 / v[from + VertexLayout.W];
+        // A loop, not System.arraycopy: for two or three values the call costs more than the copy.
+        for (int k = 1, f = from + VertexLayout.FIRST_VARYING; k < cornerStride; k++, f++) {
+            at[to + k] = v[f];
+        }
     }
 
     /** Appends everything of a triangle but its attributes; returns where they go in {@link #attributes}. */
