@@ -337,9 +337,9 @@ final class ChunkGeometry {
             w.batchMaterials = Arrays.copyOf(w.batchMaterials, w.batchMaterials.length * 2);
         }
         int o = count * stride;
-        System.arraycopy(src, a, w.batch, o, cs);
-        System.arraycopy(src, b, w.batch, o + cs, cs);
-        System.arraycopy(src, c, w.batch, o + 2 * cs, cs);
+        VertexLayout.copy(src, a, w.batch, o, cs);
+        VertexLayout.copy(src, b, w.batch, o + cs, cs);
+        VertexLayout.copy(src, c, w.batch, o + 2 * cs, cs);
         w.batchIds[count] = id;
         w.batchMaterials[count] = material;
         return count + 1;

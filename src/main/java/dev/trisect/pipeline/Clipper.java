@@ -127,9 +127,9 @@ final class Clipper {
      */
     int clip(double[] src, int a, int b, int c, int planes) {
         double[] in = current;
-        System.arraycopy(src, a, in, 0, stride);
-        System.arraycopy(src, b, in, stride, stride);
-        System.arraycopy(src, c, in, 2 * stride, stride);
+        VertexLayout.copy(src, a, in, 0, stride);
+        VertexLayout.copy(src, b, in, stride, stride);
+        VertexLayout.copy(src, c, in, 2 * stride, stride);
         int n = 3;
         for (int plane = NEAR; plane <= TOP && n > 0; plane <<= 1) {
             if ((planes & plane) != 0) {
@@ -171,7 +171,7 @@ final class Clipper {
             double dq = distance(in, q, plane);
             boolean pInside = dp >= 0;
             if (pInside) {
-                System.arraycopy(in, p, out, m * stride, stride);
+                VertexLayout.copy(in, p, out, m * stride, stride);
                 m++;
             }
             if (pInside != (dq >= 0)) {

@@ -386,7 +386,7 @@ public final class Tessellator {
     private int load(double[] input, int offset) {
         int o = reserveVertex();
         double[] v = vertices;
-        System.arraycopy(input, offset, v, o, clipStride);
+        VertexLayout.copy(input, offset, v, o, clipStride);
         project(o);
         return o;
     }

@@ -101,6 +101,17 @@ public final class VertexLayout {
         return FIRST_VARYING + varyings + 2;
     }
 
+    /**
+     * Copies {@code count} doubles (a vertex, or part of one) from {@code src[from..]} to {@code dst[to..]}
+     * by a plain loop: for a vertex's six to twenty doubles, of a length the compiler does not know,
+     * cheaper than {@link System#arraycopy}'s call.
+     */
+    public static void copy(double[] src, int from, double[] dst, int to, int count) {
+        for (int k = 0; k < count; k++) {
+            dst[to + k] = src[from + k];
+        }
+    }
+
     @Override
     public String toString() {
         return "VertexLayout[" + varyings + " varyings]";
