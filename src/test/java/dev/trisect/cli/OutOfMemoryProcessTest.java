@@ -30,9 +30,10 @@ class OutOfMemoryProcessTest {
      * The two messages of a command that renders: the frame itself does not fit (found when it is
      * allocated), or the work in it does not; which one depends on the collector's layout of the heap.
      */
-    private static final String RENDERING = "1\\|trisect: (out of memory \\(lower --max-frame-pieces or --size, or "
+    private static final String RENDERING = "1\\|trisect: (out of memory \\(use a smaller --size, or "
             + "give Java more with -Xmx\\)|not enough memory for a \\d+x\\d+ frame \\(use a smaller --size, or give "
-            + "Java more with -Xmx\\))";
+            + "Java more with -Xmx\\)|out of memory: the scene needs more than the heap holds \\(give Java more "
+            + "with -Xmx, e\\.g\\. java -Xmx4g -jar trisect\\.jar\\))";
     private static final String OTHER = "trisect: out of memory (give Java more with -Xmx, e.g. java -Xmx4g -jar "
             + "trisect.jar)";
 
