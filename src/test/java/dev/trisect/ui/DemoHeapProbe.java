@@ -19,7 +19,7 @@ import javax.swing.SwingWorker;
  * with the floor; after each file it waits until a frame of the file's triangles is on screen and
  * {@link FrameRenderer#TRIM_FRAMES} twice over more have followed. Prints one line per file; exits 0
  * when every file was drawn, 1 at the first that was not (a failed load, a failed frame, or no frame
- * within 120 s).
+ * within 120 s), each with the heap in use after a full collection once it is drawn.
  *
  * <p>{@code DemoHeapProbe --make DIR} writes the models instead: DIR/grid1m.obj (1,000,000 triangles
  * and 2 more), DIR/grid2m.obj (2,000,000), DIR/small.obj (2).
@@ -37,6 +37,8 @@ public final class DemoHeapProbe {
             return;
         }
         DemoWindow w = DemoApp.openForTest(DemoScenes.byName("floor").orElseThrow(), FrameRenderer.defaultThreads());
+        // Frames keep coming (a still view idles), so that each model is seen drawn for a while.
+        w.view().addUpdateListener((seconds, frame) -> true);
         AtomicReference<String> failed = new AtomicReference<>();
         w.view().addMessageListener(m -> {
             if (m.startsWith("rendering failed")) {
@@ -59,14 +61,24 @@ public final class DemoHeapProbe {
                 break;
             }
             String drawn = awaitFrames(w, triangles, failed);
-            System.out.printf("%s: %s (%d triangles, %.1f s)%n", file.getFileName(), drawn == null ? "drawn" : drawn,
-                    triangles, (System.nanoTime() - start) / 1e9);
+            double seconds = (System.nanoTime() - start) / 1e9;
+            System.out.printf("%s: %s (%d triangles, %.1f s; heap in use after a full collection %.0f MiB)%n",
+                    file.getFileName(), drawn == null ? "drawn" : drawn, triangles, seconds, heapAfterGc() / 1048576.0);
             if (drawn != null) {
                 status = 1;
                 break;
             }
         }
         System.exit(status);
+    }
+
+    private static long heapAfterGc() throws InterruptedException {
+        for (int i = 0; i < 3; i++) {
+            System.gc();
+            Thread.sleep(50);
+        }
+        Runtime rt = Runtime.getRuntime();
+        return rt.totalMemory() - rt.freeMemory();
     }
 
     /** Null once frames of {@code triangles} have been on screen long enough; else what went wrong. */

@@ -50,6 +50,11 @@ public final class RenderLoop implements Runnable {
     private float[] displacement;
     /** The scene of the last frame drawn: another one releases the renderer's storage first. */
     private Scene drawnScene;
+    /**
+     * Frames still to draw after a scene was replaced, even in a still view: until every frame slot has
+     * been drawn with the new scene, the others hold the old one's draws (its meshes) from being collected.
+     */
+    private int settleFrames;
     private final CameraDriver cameras;
     private final BudgetHook budget = new BudgetHook();
     private final HoverHighlight highlight = new HoverHighlight();
@@ -213,6 +218,10 @@ public final class RenderLoop implements Runnable {
                 back = buffers.publish(back);
                 repaint.run();
                 state.progress(new ViewState.Progress(frames, fps, compareMs));
+                if (settleFrames > 0) {
+                    settleFrames--;
+                    demand.request();
+                }
                 LoopListener l = listener;
                 if (l != null) {
                     l.frameDone(report.withFps(fps));
@@ -264,6 +273,7 @@ public final class RenderLoop implements Runnable {
             reference = null;
             displacement = null;
             drawnScene = scene;
+            settleFrames = 2;
         }
         DrawnFrame drawn = new DrawnFrame(scene.snapshot(), camera, fw, fh, back.draws);
         Draws draws = back.draws;
