@@ -68,6 +68,9 @@ final class DemoWindow {
     final Action screenshotCommand;
     final Action openCommand;
     final Action exitCommand;
+    final Action helpCommand;
+    /** The F1 panel, made when first shown. */
+    private javax.swing.JDialog help;
     final FileMenu fileMenu;
 
     DemoWindow(SceneAsset scene, int threads) {
@@ -89,6 +92,8 @@ final class DemoWindow {
                 this::saveScreenshot);
         fileMenu = new FileMenu(this, recent);
         openCommand = fileMenu.open;
+        helpCommand = command("Keys and mouse", "Show every key and mouse gesture of the demo in a panel",
+                KeyStroke.getKeyStroke(KeyEvent.VK_F1, 0), this::toggleHelp);
         exitCommand = command("Exit", "Close Trisect", KeyStroke.getKeyStroke(KeyEvent.VK_Q, InputEvent.CTRL_DOWN_MASK),
                 () -> frame.dispatchEvent(new WindowEvent(frame, WindowEvent.WINDOW_CLOSING)));
 
@@ -215,6 +220,7 @@ final class DemoWindow {
         viewMenu.add(MenuItems.check(view.action(ViewAction.DEV_TOOLS)));
         viewMenu.add(MenuItems.check(view.action(ViewAction.BORDERS)));
         viewMenu.add(MenuItems.item(view.action(ViewAction.BORDER_COLOUR)));
+        viewMenu.add(MenuItems.check(view.action(ViewAction.STAT_OVERLAY)));
         viewMenu.add(MenuItems.check(view.action(ViewAction.AUTO_ORBIT)));
         viewMenu.add(MenuItems.item(view.action(ViewAction.RESET_CAMERA)));
         viewMenu.add(MenuItems.item(view.action(ViewAction.TEXTURE_FILTER)));
@@ -230,10 +236,14 @@ final class DemoWindow {
         radioGroup(render, ViewAction.PERSPECTIVE, ViewAction.AFFINE, ViewAction.TESSELLATED, ViewAction.SPANS);
         render.addSeparator();
         render.add(MenuItems.item(view.action(ViewAction.SPLIT_POLICY)));
+        JMenu helpMenu = new JMenu("Help");
+        helpMenu.setMnemonic(KeyEvent.VK_H);
+        helpMenu.add(MenuItems.item(helpCommand));
         bar.add(file);
         bar.add(viewMenu);
         bar.add(render);
-        for (JMenu m : List.of(file, viewMenu, render)) {
+        bar.add(helpMenu);
+        for (JMenu m : List.of(file, viewMenu, render, helpMenu)) {
             for (java.awt.Component item : m.getMenuComponents()) {
                 if (item instanceof JMenuItem i && i.getToolTipText() != null) {
                     i.setToolTipText(wrapped(i.getToolTipText()));
@@ -264,11 +274,27 @@ final class DemoWindow {
         }
     }
 
+    /** Shows the F1 panel beside the window, or hides it. */
+    private void toggleHelp() {
+        if (help == null) {
+            help = DemoHelp.panel(frame);
+        }
+        if (!help.isVisible()) {
+            help.setLocation(frame.getX() + frame.getWidth() - help.getWidth() - 20, frame.getY() + 60);
+        }
+        help.setVisible(!help.isVisible());
+    }
+
+    /** The F1 panel, or null before it was first shown; for tests. */
+    javax.swing.JDialog helpPanel() {
+        return help;
+    }
+
     /** The demo's own keys on the window (the view binds its own while it has the keyboard). */
     private void bindKeys(JComponent root) {
         InputMap in = root.getInputMap(JComponent.WHEN_IN_FOCUSED_WINDOW);
         ActionMap act = root.getActionMap();
-        for (Action a : List.of(screenshotCommand, openCommand, exitCommand)) {
+        for (Action a : List.of(screenshotCommand, openCommand, exitCommand, helpCommand)) {
             in.put((KeyStroke) a.getValue(Action.ACCELERATOR_KEY), a);
             act.put(a, a);
         }

@@ -43,7 +43,12 @@ public enum ViewAction {
     /** F7: this path left of a divider, the per-pixel path right of it (opens the developer tools). */
     SHOW_SPLIT("view-split"),
     /** Ctrl+C: copy the pixel inspector's readout to the clipboard as text. */
-    COPY_INSPECTION("copy-inspection");
+    COPY_INSPECTION("copy-inspection"),
+    /**
+     * U: the statistics overlay over the view: frames per second, the frame's milliseconds by stage,
+     * pieces, and the path, split policy, threshold and texture filter.
+     */
+    STAT_OVERLAY("stat-overlay");
 
     final String id;
 

@@ -30,6 +30,9 @@ public final class FramePainter {
         Graphics2D g2 = (Graphics2D) g.create();
         try {
             paint(g2, front, w, h, pinned);
+            if (controller.state().statOverlay()) {
+                StatOverlay.paint(g2, front, controller.state().progress().fps());
+            }
         } finally {
             g2.dispose();
         }

@@ -34,6 +34,8 @@ public final class ViewCommands {
     public final Command step;
     public final Command splitPolicy;
     public final Command copyInspection;
+    /** The in-view statistics overlay (U). */
+    public final Command statOverlay;
     /** Perspective, affine, tessellated, spans, by {@link RenderMode} ordinal. */
     public final List<Command> modes;
     /** Image, Difference, Split: what the view shows, by {@link ViewKind} ordinal. */
@@ -88,6 +90,13 @@ public final class ViewCommands {
         copyInspection = add("copy-inspection", Command.action("Copy inspector readout", "Copy the pixel inspector's "
                 + "numbers of the inspected pixel to the clipboard as text", KeyStroke.getKeyStroke(KeyEvent.VK_C,
                 java.awt.event.InputEvent.CTRL_DOWN_MASK), c::copyInspection));
+        statOverlay = add("stat-overlay", Command.toggle("Statistics overlay", "Show over the view: frames per "
+                + "second, the frame's milliseconds by stage (geometry, tessellation, fill, overlay), pieces and "
+                + "fallback pieces, and the path, policy, threshold and filter", key(KeyEvent.VK_U), cmd -> {
+                    state.statOverlay(cmd.selected());
+                    // A settings change, so that a still view draws (and paints) once more.
+                    c.update(s -> s);
+                }));
         String[] modeTips = {
             "Per-pixel perspective: u/w, v/w, 1/w interpolated and divided at every pixel (the reference)",
             "Affine: u, v interpolated linearly on screen (fast, visibly warped)",

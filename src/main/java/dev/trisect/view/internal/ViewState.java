@@ -62,6 +62,7 @@ public final class ViewState {
     private volatile double[] pathMs;
     /** Whether developer tools are showing, so that their numbers are worth measuring. */
     private volatile boolean toolsOpen;
+    private volatile boolean statOverlay;
 
     private volatile Budget budget = new Budget(false, Budget.DEFAULT_TARGET_MS);
     /** What the budget controller chose for the last frame; null when it is off. */
@@ -263,6 +264,16 @@ public final class ViewState {
         if (drawn == scene) {
             pathMs = ms;
         }
+    }
+
+    /** Whether the statistics overlay (U) is painted over the view. */
+    public boolean statOverlay() {
+        return statOverlay;
+    }
+
+    /** Shows or hides the statistics overlay. */
+    public void statOverlay(boolean on) {
+        statOverlay = on;
     }
 
     public boolean toolsOpen() {
