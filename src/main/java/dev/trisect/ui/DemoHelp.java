@@ -74,6 +74,7 @@ final class DemoHelp {
         JEditorPane text = new JEditorPane("text/html", html());
         text.setEditable(false);
         text.setFocusable(false);
+        text.setCaretPosition(0);
         d.add(new JScrollPane(text));
         d.setFocusableWindowState(false);
         d.setSize(640, 560);
