@@ -12,7 +12,8 @@ import javax.swing.SwingUtilities;
  * Checks the frame budget as a user sees it: the demo at 1280x720 with the developer tools open, Auto on
  * with each target from 10 to 100 ms in turn, and after 5 s the frames per second the status bar shows
  * against 1000 / target — within 15 %, or the tools' Frame budget section says why not (the controller is
- * held by your threshold, the finest threshold or the piece budget). Prints one row per target and exits
+ * held by your threshold, the finest threshold or the piece budget); where 5 s hold fewer frames than
+ * one of the controller's windows it waits for its first decision. Prints one row per target and exits
  * 1 if any target is neither met nor explained. A timing check, so not a test: run by
  * {@code scripts/auto-target.sh} (needs a display; on a shared machine expect the rates to move).
  */
@@ -38,6 +39,11 @@ public final class AutoTargetCheck {
             for (double target : TARGETS) {
                 SwingUtilities.invokeAndWait(() -> window.view().setFrameTimeTarget(target));
                 Thread.sleep(SETTLE_SECONDS * 1000L);
+                // On a loaded machine 5 s may hold fewer frames than one window of the controller: wait
+                // (up to 30 s more) until it has decided once, and say how long that took.
+                for (int wait = 0; wait < 60 && !decided(c.state().budgetChoice()); wait++) {
+                    Thread.sleep(500);
+                }
                 String[] pace = new String[1];
                 SwingUtilities.invokeAndWait(() -> pace[0] = window.paceText());
                 double fps = fps(pace[0]);
@@ -55,6 +61,10 @@ public final class AutoTargetCheck {
             SwingUtilities.invokeAndWait(() -> window.frame().dispose());
         }
         System.exit(failures == 0 ? 0 : 1);
+    }
+
+    private static boolean decided(ViewState.BudgetChoice c) {
+        return c != null && !Double.isNaN(c.medianMs());
     }
 
     /** The frames per second in the status bar's right side ("tessellated, ...  24 fps  1280x720"). */
