@@ -155,6 +155,15 @@ class ExamplesGuiTest {
         int g = crate >> 8 & 0xFF;
         int b = crate & 0xFF;
         assertTrue(r > g && g > b && r > 60, "the crate's wood at the centre: " + Integer.toHexString(crate));
+        // Escape closes it, as Ctrl+Q and Ctrl+W do (and the demo's window).
+        var at = onEdt(view::getLocationOnScreen);
+        robot.mouseMove(at.x + 20, at.y + 20);
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        GuiTests.waitFor("the keyboard", () -> onEdt(frame::isFocused));
+        robot.keyPress(KeyEvent.VK_ESCAPE);
+        robot.keyRelease(KeyEvent.VK_ESCAPE);
+        GuiTests.waitFor("the window closed by Escape", () -> !onEdt(frame::isDisplayable));
     }
 
     @Test

@@ -11,6 +11,7 @@ import dev.trisect.scene.SceneObject;
 import dev.trisect.texture.ProceduralTextures;
 import dev.trisect.view.CameraControls;
 import dev.trisect.view.TrisectView;
+import dev.trisect.view.ViewFrame;
 import java.awt.BorderLayout;
 import java.util.HashMap;
 import java.util.Locale;
@@ -61,6 +62,7 @@ public final class ClickPicking {
             });
             JFrame frame = new JFrame("Click picking");
             frame.setDefaultCloseOperation(JFrame.DISPOSE_ON_CLOSE);
+            ViewFrame.closeOnKeys(frame);
             frame.add(view, BorderLayout.CENTER);
             frame.add(status, BorderLayout.SOUTH);
             frame.pack();

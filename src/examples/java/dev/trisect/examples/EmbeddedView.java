@@ -10,6 +10,7 @@ import dev.trisect.scene.Scene;
 import dev.trisect.scene.SceneObject;
 import dev.trisect.texture.ProceduralTextures;
 import dev.trisect.view.TrisectView;
+import dev.trisect.view.ViewFrame;
 import dev.trisect.view.ViewAction;
 import java.awt.BorderLayout;
 import java.awt.Component;
@@ -88,6 +89,7 @@ public final class EmbeddedView {
 
         JFrame frame = new JFrame("Trisect embedded");
         frame.setDefaultCloseOperation(JFrame.DISPOSE_ON_CLOSE);
+        ViewFrame.closeOnKeys(frame);
         frame.add(view, BorderLayout.CENTER);
         frame.add(controls, BorderLayout.EAST);
         frame.pack();

@@ -39,7 +39,7 @@ final class DemoHelp {
         {"F1", "this table of keys and mouse gestures, in a panel"},
         {"Ctrl+O", "open an OBJ model"},
         {"Ctrl+S", "save the frame on screen as a PNG"},
-        {"Ctrl+Q", "exit"}};
+        {"Ctrl+Q, Ctrl+W, Escape", "exit"}};
 
     private DemoHelp() {
     }

@@ -10,6 +10,7 @@ import dev.trisect.render.TessellationSettings;
 import dev.trisect.view.FrameInfo;
 import dev.trisect.view.TrisectView;
 import dev.trisect.view.ViewAction;
+import dev.trisect.view.ViewFrame;
 import java.awt.BorderLayout;
 import java.awt.Dimension;
 import java.awt.Frame;
@@ -112,6 +113,8 @@ final class DemoWindow {
         bottom.add(pace, BorderLayout.EAST);
         frame.getContentPane().add(view, BorderLayout.CENTER);
         frame.getContentPane().add(bottom, BorderLayout.SOUTH);
+        // Ctrl+W and Escape close it too, as every example's window (ViewFrame.closeOnKeys); Ctrl+Q is Exit's.
+        ViewFrame.closeOnKeys(frame);
         bindKeys(frame.getRootPane());
         frame.addWindowListener(new WindowAdapter() {
             @Override

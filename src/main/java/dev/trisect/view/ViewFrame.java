@@ -38,7 +38,38 @@ public final class ViewFrame extends JFrame {
         getContentPane().add(view, BorderLayout.CENTER);
         pack();
         setLocationByPlatform(true);
+        closeOnKeys(this);
     }
+
+    /**
+     * Closes {@code window} on Ctrl+Q, Ctrl+W or Escape, as the demo's window closes, with the same
+     * event as its close button (its listeners hear {@code WINDOW_CLOSING}). The keys are bound in the
+     * window's root pane for the whole window; a component that uses one of them (a text field's
+     * Escape) keeps it while it has the keyboard. Event thread.
+     *
+     * @param window the window to close
+     */
+    public static void closeOnKeys(JFrame window) {
+        javax.swing.Action close = new javax.swing.AbstractAction("Close") {
+            private static final long serialVersionUID = 1L;
+
+            @Override
+            public void actionPerformed(java.awt.event.ActionEvent e) {
+                window.dispatchEvent(new java.awt.event.WindowEvent(window, java.awt.event.WindowEvent.WINDOW_CLOSING));
+            }
+        };
+        javax.swing.InputMap in = window.getRootPane().getInputMap(javax.swing.JComponent.WHEN_IN_FOCUSED_WINDOW);
+        for (javax.swing.KeyStroke k : CLOSE_KEYS) {
+            in.put(k, "trisect-close");
+        }
+        window.getRootPane().getActionMap().put("trisect-close", close);
+    }
+
+    /** The keys that close a window: Ctrl+Q, Ctrl+W and Escape. */
+    private static final javax.swing.KeyStroke[] CLOSE_KEYS = {
+        javax.swing.KeyStroke.getKeyStroke(java.awt.event.KeyEvent.VK_Q, java.awt.event.InputEvent.CTRL_DOWN_MASK),
+        javax.swing.KeyStroke.getKeyStroke(java.awt.event.KeyEvent.VK_W, java.awt.event.InputEvent.CTRL_DOWN_MASK),
+        javax.swing.KeyStroke.getKeyStroke(java.awt.event.KeyEvent.VK_ESCAPE, 0)};
 
     /**
      * The view in this window.
