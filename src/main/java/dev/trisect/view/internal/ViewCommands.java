@@ -94,8 +94,8 @@ public final class ViewCommands {
                 + "second, the frame's milliseconds by stage (geometry, tessellation, fill, overlay), pieces and "
                 + "fallback pieces, and the path, policy, threshold and filter", key(KeyEvent.VK_U), cmd -> {
                     state.statOverlay(cmd.selected());
-                    // A settings change, so that a still view draws (and paints) once more.
-                    c.update(s -> s);
+                    // A still view draws (and paints) once more, with or without it.
+                    state.demand.request();
                 }));
         String[] modeTips = {
             "Per-pixel perspective: u/w, v/w, 1/w interpolated and divided at every pixel (the reference)",
