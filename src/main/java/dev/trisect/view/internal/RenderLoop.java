@@ -272,8 +272,9 @@ public final class RenderLoop implements Runnable {
             renderer.release();
             reference = null;
             displacement = null;
+            // The first scene replaces none: no slot holds another's draws, and a still view draws it once.
+            settleFrames = drawnScene == null ? 0 : 2;
             drawnScene = scene;
-            settleFrames = 2;
         }
         DrawnFrame drawn = new DrawnFrame(scene.snapshot(), camera, fw, fh, back.draws);
         Draws draws = back.draws;
