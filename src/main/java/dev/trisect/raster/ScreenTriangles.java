@@ -242,7 +242,12 @@ public final class ScreenTriangles {
     private void corner(double[] v, int from, int to) {
         double[] at = attributes;
         at[to] = 1 / v[from + VertexLayout.W];
-        // A loop, not System.arraycopy: for two or three values the call costs more than the copy.
+        if (cornerStride == 3) {
+            // The textured layout, once per corner of every triangle: two stores, not a loop.
+            at[to + 1] = v[from + VertexLayout.S];
+            at[to + 2] = v[from + VertexLayout.T];
+            return;
+        }
         for (int k = 1, f = from + VertexLayout.FIRST_VARYING; k < cornerStride; k++, f++) {
             at[to + k] = v[f];
         }
