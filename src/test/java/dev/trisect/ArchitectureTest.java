@@ -25,7 +25,7 @@ import org.junit.jupiter.api.Test;
 class ArchitectureTest {
     /** Bottom to top. A package may use itself and the ones before it. */
     static final List<String> LAYERS = List.of(
-            "base", "math", "mesh", "texture", "render", "tessellate", "raster", "pipeline", "metrics", "scene", "content", "io",
+            "base", "math", "mesh", "texture", "render", "light", "tessellate", "raster", "pipeline", "metrics", "scene", "content", "io",
             "perf", "view.internal", "devtools", "view", "ui", "cli");
 
     /**

@@ -205,7 +205,8 @@ final class BenchCommand extends SceneCommand {
             try (InterruptNotice notice = new InterruptNotice(common.err(), progress,
                     modes.size() + (glref == null ? 0 : 1), "path")) {
                 Results.print(common.out(), lines);
-                FrameBench bench = new FrameBench(renderer, scene, textures, vp, Frames.allocate(frame.size));
+                FrameBench bench = new FrameBench(renderer, light.draws(scene.mesh(), textures, vp),
+                        Frames.allocate(frame.size));
                 for (RenderMode mode : modes) {
                     RenderSettings settings = path.settings(frame).withMode(mode);
                     FrameBench.Result r = bench.time(settings, warmup, frames, progress.task(mode.id()));
@@ -269,6 +270,7 @@ final class BenchCommand extends SceneCommand {
             ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true);
             pb.environment().put("LP_NUM_THREADS", Integer.toString(threads));
             pb.environment().put("GLREF_FILTER", path.filter.id());
+            pb.environment().putAll(light.glrefEnvironment());
             Process p;
             try {
                 p = pb.start();

@@ -10,6 +10,7 @@ import dev.trisect.metrics.HeatMap;
 import dev.trisect.metrics.HeatScale;
 import dev.trisect.metrics.ImageComparison;
 import dev.trisect.metrics.TexelToScreen;
+import dev.trisect.pipeline.Draws;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.render.Framebuffer;
 import dev.trisect.render.RenderMode;
@@ -107,12 +108,11 @@ final class CompareCommand extends SceneCommand {
         TexelToScreen exact = new TexelToScreen(scene.mesh(), scene.textureArray(), vp, frame.size.viewport());
         Comparison c;
         try (FrameRenderer renderer = common.renderer()) {
-            renderer.render(scene.mesh(), scene.textureArray(), vp, settings.withMode(against).withBorders(false),
-                    reference);
+            Draws draws = light.draws(scene.mesh(), scene.textureArray(), vp);
+            renderer.render(draws, settings.withMode(against).withBorders(false), reference);
             // Measure the rendered image, never the overlay: borders are drawn only after comparing,
             // and only into the --out image.
-            Frames.noteSkipped(common,
-                    renderer.render(scene.mesh(), scene.textureArray(), vp, settings.withBorders(false), test));
+            Frames.noteSkipped(common, renderer.render(draws, settings.withBorders(false), test));
             c = ImageComparison.compare(w, h, test.color(), test.uv(), reference.color(), reference.uv(),
                     exact, displacement);
             if (settings.borders()) {

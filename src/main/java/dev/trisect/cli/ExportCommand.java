@@ -7,6 +7,7 @@ import dev.trisect.content.SceneAsset;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -19,6 +20,9 @@ import picocli.CommandLine.Option;
 final class ExportCommand implements Callable<Integer> {
     @Mixin
     FrameOptions frame;
+
+    @Mixin
+    LightOptions light;
 
     @Mixin
     CommonOptions common;
@@ -78,14 +82,28 @@ final class ExportCommand implements Callable<Integer> {
         String cameraLine = String.format("camera: --eye %s --target %s --up %s --fov %s --near %s --far %s",
                 camera.eye(), camera.target(), camera.up(), camera.fovY(), camera.near(), camera.far());
         List<Path> maps = new ArrayList<>();
+        List<String> view = new ArrayList<>(List.of(cameraLine));
+        // Light and fog as the OpenGL reference reads them, so that it draws the same frame.
+        Map<String, String> env = light.glrefEnvironment();
+        if (!env.isEmpty()) {
+            StringBuilder glref = new StringBuilder("glref:");
+            env.forEach((k, v) -> glref.append(' ').append(k).append('=').append(v));
+            view.add(glref.toString());
+        }
         // The camera is printed even when the files fail: it is what was computed.
         Results.deliver(common.out(), batch, b -> maps.addAll(ObjWriter.write(b, to, scene.mesh(), scene.textures(),
                 scene.lines())),
-                written -> written ? List.of(String.format("wrote %s (%s, %s%s: %s)", to,
-                        Counts.of(scene.mesh().triangleCount(), "triangle"),
-                        scene.lines().isEmpty() ? "" : Counts.of(scene.lines().segmentCount(), "line segment") + ", ",
-                        Counts.of(maps.size(), "material"), maps),
-                        cameraLine) : List.of(cameraLine));
+                written -> {
+                    List<String> lines = new ArrayList<>();
+                    if (written) {
+                        lines.add(String.format("wrote %s (%s, %s%s: %s)", to,
+                                Counts.of(scene.mesh().triangleCount(), "triangle"),
+                                scene.lines().isEmpty() ? "" : Counts.of(scene.lines().segmentCount(), "line segment")
+                                        + ", ", Counts.of(maps.size(), "material"), maps));
+                    }
+                    lines.addAll(view);
+                    return lines;
+                });
         return 0;
     }
 }

@@ -56,8 +56,8 @@ final class RenderCommand extends SceneCommand {
         fb.recordUv(uvOut != null);
         FrameStats s;
         try (FrameRenderer renderer = common.renderer()) {
-            s = renderer.render(scene.draws(new Draws(), camera.viewProjection(frame.size.viewport()), frame.lineWidth()),
-                    settings, fb);
+            s = renderer.render(light.apply(scene.draws(new Draws(), camera.viewProjection(frame.size.viewport()),
+                    frame.lineWidth())), settings, fb);
         }
         Frames.noteSkipped(common, s);
         // The image and its UV output belong together: both are written, or neither is changed.

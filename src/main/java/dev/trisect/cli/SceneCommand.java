@@ -20,6 +20,9 @@ abstract class SceneCommand implements Callable<Integer> {
     PathOptions path;
 
     @Mixin
+    LightOptions light;
+
+    @Mixin
     CommonOptions common;
 
     /** Checks made before any work, such as output file names. */

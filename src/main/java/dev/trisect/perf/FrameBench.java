@@ -2,6 +2,7 @@ package dev.trisect.perf;
 
 import dev.trisect.content.SceneAsset;
 import dev.trisect.math.Mat4;
+import dev.trisect.pipeline.Draws;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.render.FrameStats;
 import dev.trisect.render.Framebuffer;
@@ -27,9 +28,7 @@ public final class FrameBench {
     }
 
     private final FrameRenderer renderer;
-    private final SceneAsset scene;
-    private final Texture[] textures;
-    private final Mat4 viewProjection;
+    private final Draws draws;
     private final Framebuffer frame;
 
     /**
@@ -39,11 +38,23 @@ public final class FrameBench {
      */
     public FrameBench(FrameRenderer renderer, SceneAsset scene, Texture[] textures, Mat4 viewProjection,
                       Framebuffer frame) {
+        this(renderer, one(scene, textures, viewProjection), frame);
+    }
+
+    /**
+     * @param draws what to draw, with its lights and fog
+     * @param frame the frame to draw into, whose size is the benchmark's
+     */
+    public FrameBench(FrameRenderer renderer, Draws draws, Framebuffer frame) {
         this.renderer = renderer;
-        this.scene = scene;
-        this.textures = textures;
-        this.viewProjection = viewProjection;
+        this.draws = draws;
         this.frame = frame;
+    }
+
+    private static Draws one(SceneAsset scene, Texture[] textures, Mat4 viewProjection) {
+        Draws d = new Draws();
+        d.add(scene.mesh(), textures, viewProjection);
+        return d;
     }
 
     /** The frame drawn into (it holds the last frame rendered). */
@@ -53,7 +64,7 @@ public final class FrameBench {
 
     /** Renders one frame with these settings, untimed. */
     public FrameStats render(RenderSettings settings) {
-        return renderer.render(scene.mesh(), textures, viewProjection, settings, frame);
+        return renderer.render(draws, settings, frame);
     }
 
     /** Renders {@code warmup} frames, then times {@code frames} frames (at least 1). */

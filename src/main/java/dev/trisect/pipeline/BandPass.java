@@ -1,5 +1,6 @@
 package dev.trisect.pipeline;
 
+import dev.trisect.light.FogPass;
 import dev.trisect.raster.BandBins;
 import dev.trisect.raster.Rasterizer;
 import dev.trisect.render.Framebuffer;
@@ -44,13 +45,15 @@ final class BandPass {
     }
 
     /**
-     * Clears {@code frame} and fills the screen triangles of chunks 0..chunkCount-1 into it, outlined
-     * by {@code outlines} when the settings have borders on.
+     * Clears {@code frame} and fills the screen triangles of chunks 0..chunkCount-1 into it, fogs each
+     * band when there is fog ({@link FogPass}, before the overlay: the borders are not part of the
+     * scene), and outlines it by {@code outlines} when the settings have borders on.
      *
+     * @param fog      the frame's fog, or null for none
      * @param textures the texture of each material, by material index
      */
     Result draw(Framebuffer frame, Chunks chunks, int chunkCount, Texture[] textures, RenderSettings settings,
-                Outlines outlines, WorkerPool pool) {
+                FogPass fog, Outlines outlines, WorkerPool pool) {
         for (Lane lane : lanes) {
             lane.pixels = 0;
             lane.fillNanos = 0;
@@ -90,6 +93,9 @@ final class BandPass {
                         chunk.bins.start(b + 1), textures, 0, y0, width, y1)
                         : rasterizer.fill(frame, chunk.out, chunk.bins.items(), chunk.bins.start(b),
                         chunk.bins.start(b + 1), textures, perspective, 0, y0, width, y1);
+            }
+            if (fog != null) {
+                fog.apply(frame, y0, y1);
             }
             lane.fillNanos += System.nanoTime() - t0;
             // The wait for the preparations is neither filling nor outlining: it is left out of both measures.

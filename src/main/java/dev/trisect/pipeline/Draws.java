@@ -1,8 +1,10 @@
 package dev.trisect.pipeline;
 
+import dev.trisect.light.FogPass;
 import dev.trisect.math.Mat4;
 import dev.trisect.mesh.Lines;
 import dev.trisect.mesh.Mesh;
+import dev.trisect.render.Fog;
 import dev.trisect.texture.Texture;
 import java.util.Arrays;
 import java.util.Objects;
@@ -36,8 +38,11 @@ public final class Draws {
     private int[] lineWidths = new int[2];
     private int lineCount;
     private long segmentCount;
+    private Fog fog;
+    /** The pass of the last fog set, kept across {@link #clear} for the next frame's same fog. */
+    private FogPass fogPass;
 
-    /** Removes every draw, keeping the storage. */
+    /** Removes every draw and the fog, keeping the storage. */
     public void clear() {
         Arrays.fill(lines, 0, lineCount, null);
         Arrays.fill(lineTransforms, 0, lineCount, null);
@@ -47,6 +52,29 @@ public final class Draws {
         Arrays.fill(transforms, 0, count, null);
         Arrays.fill(textures, 0, firstMaterial[count], null);
         count = 0;
+        fog = null;
+    }
+
+    /**
+     * Fogs the frame, until {@link #clear}.
+     *
+     * @param fog the fog, or null for none
+     */
+    public void setFog(Fog fog) {
+        if (fog != null && (fogPass == null || !fog.equals(fogPass.fog()))) {
+            fogPass = new FogPass(fog);
+        }
+        this.fog = fog;
+    }
+
+    /** The frame's fog, or null for none. */
+    public Fog fog() {
+        return fog;
+    }
+
+    /** The pass of the frame's fog, or null for none. */
+    FogPass fogPass() {
+        return fog == null ? null : fogPass;
     }
 
     /**

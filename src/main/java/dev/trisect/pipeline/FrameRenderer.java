@@ -167,8 +167,8 @@ public final class FrameRenderer implements AutoCloseable {
 
     /** The fill pass: every band cleared and filled, and outlined right after when the borders are on. */
     private void fillPass(FrameJob job) {
-        job.bands = bands.draw(job.frame, job.chunks, job.chunkCount(), job.draws.textures(), job.settings, outlines,
-                job.pool);
+        job.bands = bands.draw(job.frame, job.chunks, job.chunkCount(), job.draws.textures(), job.settings,
+                job.draws.fogPass(), outlines, job.pool);
     }
 
     /** The line pass: the draws' lines over the filled frame, depth-tested against it. */

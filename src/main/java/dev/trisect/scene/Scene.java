@@ -2,10 +2,12 @@ package dev.trisect.scene;
 
 import dev.trisect.math.Mat4;
 import dev.trisect.mesh.Mesh;
+import dev.trisect.render.Fog;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.Objects;
+import java.util.Optional;
 
 /**
  * Everything to draw: the top group of a tree of {@link Group}s and {@link SceneObject}s.
@@ -43,6 +45,7 @@ public final class Scene extends Group {
 
     /** Changes counted by {@link #version()}; written under {@link Node#LOCK}. */
     private volatile long version;
+    private volatile Fog fog;
 
     /** An empty scene. */
     public Scene() {
@@ -116,6 +119,31 @@ public final class Scene extends Group {
                 collect((Group) n, m, out);
             }
         }
+    }
+
+    /**
+     * Fogs the scene from the next frame on, or clears the fog: every pixel of every object is blended
+     * towards the fog's colour by its depth ({@link Fog}); the background is not.
+     *
+     * @param fog the fog, or null for none
+     */
+    public void setFog(Fog fog) {
+        LOCK.lock();
+        try {
+            this.fog = fog;
+            changed();
+        } finally {
+            LOCK.unlock();
+        }
+    }
+
+    /**
+     * The scene's fog.
+     *
+     * @return the fog, or empty for none
+     */
+    public Optional<Fog> fog() {
+        return Optional.ofNullable(fog);
     }
 
     /**

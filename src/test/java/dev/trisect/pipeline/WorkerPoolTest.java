@@ -264,10 +264,10 @@ class WorkerPoolTest {
                 Framebuffer fb = new Framebuffer(w, h);
                 if (broken) {
                     assertThrows(ArrayIndexOutOfBoundsException.class,
-                            () -> bands.draw(fb, chunks, 3, textures, s, outlines, pool));
+                            () -> bands.draw(fb, chunks, 3, textures, s, null, outlines, pool));
                     assertHelpersParked(name, 2);
                 } else {
-                    BandPass.Result result = bands.draw(fb, chunks, 3, textures, s, outlines, pool);
+                    BandPass.Result result = bands.draw(fb, chunks, 3, textures, s, null, outlines, pool);
                     assertTrue(result.pixels() > 0);
                     if (expected == null) {
                         expected = fb;

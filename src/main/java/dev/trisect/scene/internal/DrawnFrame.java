@@ -5,6 +5,7 @@ import dev.trisect.math.Vec3;
 import dev.trisect.math.Viewport;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.pipeline.Draws;
+import dev.trisect.render.Fog;
 import dev.trisect.scene.Camera;
 import dev.trisect.scene.Material;
 import dev.trisect.scene.Pick;
@@ -30,6 +31,13 @@ public final class DrawnFrame {
      * model-view-projection for {@code camera} and a {@code width x height} frame.
      */
     public DrawnFrame(List<Scene.Placed> placed, Camera camera, int width, int height, Draws draws) {
+        this(placed, null, camera, width, height, draws);
+    }
+
+    /**
+     * As {@link #DrawnFrame(List, Camera, int, int, Draws)}, fogged by {@code fog} (null for none).
+     */
+    public DrawnFrame(List<Scene.Placed> placed, Fog fog, Camera camera, int width, int height, Draws draws) {
         this.placed = placed;
         this.camera = camera;
         this.width = width;
@@ -45,6 +53,7 @@ public final class DrawnFrame {
             }
             draws.add(o.mesh(), textures, viewProjection.mul(o.world()));
         }
+        draws.setFog(fog);
     }
 
     /** The draws, as filled. */

@@ -1,0 +1,68 @@
+package dev.trisect.light;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trisect.render.Colour;
+import dev.trisect.render.Fog;
+import dev.trisect.render.Framebuffer;
+import org.junit.jupiter.api.Test;
+
+/** The fog pass on hand-computed pixels, and its table against OpenGL's equations at every depth. */
+class FogPassTest {
+    private static int channel(int argb, int shift) {
+        return (argb >> shift) & 0xFF;
+    }
+
+    @Test
+    void blendsCoveredPixelsTowardsTheFogByDepthAndLeavesTheBackground() {
+        Framebuffer frame = new Framebuffer(3, 1);
+        frame.clearRows(0, 1, 0x102030);
+        int[] c = frame.color();
+        float[] d = frame.depth();
+        // z = 4 between start 2 and end 10: f = 0.75. z = 1 (before the start): f = 1. Pixel 2: background.
+        c[0] = 0xFFC86400;
+        d[0] = 0.25f;
+        c[1] = 0xFFC86400;
+        d[1] = 1f;
+        new FogPass(Fog.linear(2, 10, new Colour(0, 0, 1))).apply(frame, 0, 1);
+        // 0.75·(200, 100, 0) + 0.25·(0, 0, 255) = (150, 75, 63.75)
+        assertEquals(150, channel(c[0], 16));
+        assertEquals(75, channel(c[0], 8));
+        assertEquals(64, channel(c[0], 0));
+        assertEquals(0xFF, channel(c[0], 24));
+        assertEquals(0xFFC86400, c[1]);
+        assertEquals(0xFF102030, c[2]);
+    }
+
+    @Test
+    void theFactorFollowsEveryEquationWithinItsBound() {
+        Fog[] fogs = {Fog.linear(0.5, 40, Colour.BLACK), Fog.exp(0.07, Colour.BLACK), Fog.exp2(0.05, Colour.BLACK),
+            Fog.exp(3, Colour.BLACK), Fog.linear(100, 101, Colour.BLACK)};
+        for (Fog fog : fogs) {
+            FogPass pass = new FogPass(fog);
+            for (double z = 0.001; z < 1e6; z *= 1.0007) {
+                float q = (float) (1 / z);
+                double exact = fog.factor(1.0 / q);
+                double tabled = pass.weight(q) / 4096.0;
+                assertTrue(Math.abs(tabled - exact) <= 2.0 / 4096, fog + " at z = " + z + ": " + tabled
+                        + " for " + exact);
+            }
+        }
+    }
+
+    @Test
+    void fogFactorsAreOpenGLs() {
+        Fog linear = Fog.linear(2, 10, Colour.BLACK);
+        assertEquals(0.75, linear.factor(4), 1e-12);
+        assertEquals(1, linear.factor(1), 1e-12);
+        assertEquals(0, linear.factor(11), 1e-12);
+        assertEquals(Math.exp(-0.5), Fog.exp(0.25, Colour.BLACK).factor(2), 1e-12);
+        assertEquals(Math.exp(-0.25), Fog.exp2(0.25, Colour.BLACK).factor(2), 1e-12);
+        assertThrows(IllegalArgumentException.class, () -> Fog.linear(3, 3, Colour.BLACK));
+        assertThrows(IllegalArgumentException.class, () -> Fog.exp(-1, Colour.BLACK));
+        assertThrows(IllegalArgumentException.class, () -> new Colour(0, -1, 0));
+        assertEquals(0x9DB8D3, Colour.of(0x9DB8D3).rgb());
+    }
+}

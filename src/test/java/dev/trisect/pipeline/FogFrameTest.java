@@ -1,0 +1,77 @@
+package dev.trisect.pipeline;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trisect.content.DemoScenes;
+import dev.trisect.content.SceneAsset;
+import dev.trisect.math.Mat4;
+import dev.trisect.math.Viewport;
+import dev.trisect.render.Colour;
+import dev.trisect.render.Fog;
+import dev.trisect.render.Framebuffer;
+import dev.trisect.render.RenderMode;
+import dev.trisect.render.RenderSettings;
+import dev.trisect.render.TessellationSettings;
+import dev.trisect.render.SplitPolicy;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Fog is per pixel in every path: each pixel of a fogged frame is the unfogged frame's pixel blended
+ * towards the fog colour by OpenGL's factor of that pixel's own depth, within 0.15 + 0.5 of a step of
+ * 1/255 (the pass's bound, then rounding); the
+ * background and the depth buffer stay as they were; and without fog nothing changes.
+ */
+class FogFrameTest {
+    private static final int W = 320;
+    private static final int H = 180;
+
+    @Test
+    void everyPathFogsEveryCoveredPixelByItsOwnDepth() {
+        SceneAsset scene = DemoScenes.byName("demo").orElseThrow();
+        Mat4 vp = scene.camera().viewProjection(new Viewport(W, H));
+        Colour haze = new Colour(0.6, 0.7, 0.8);
+        Fog[] fogs = {Fog.linear(3, 40, haze), Fog.exp(0.08, haze), Fog.exp2(0.05, haze)};
+        RenderSettings base = RenderSettings.defaults().withBackground(0x102030);
+        RenderSettings[] paths = {base.withMode(RenderMode.PERSPECTIVE), base.withMode(RenderMode.AFFINE),
+            base.withMode(RenderMode.SPANS), base.withMode(RenderMode.TESSELLATED).withTessellation(
+                TessellationSettings.defaults().withPolicy(SplitPolicy.ERROR).withMaxError(0.5))};
+        try (FrameRenderer r = new FrameRenderer(2)) {
+            Draws draws = new Draws();
+            for (RenderSettings path : paths) {
+                draws.clear();
+                draws.add(scene.mesh(), scene.textureArray(), vp);
+                Framebuffer clear = new Framebuffer(W, H);
+                r.render(draws, path, clear);
+                for (Fog fog : fogs) {
+                    draws.clear();
+                    draws.add(scene.mesh(), scene.textureArray(), vp);
+                    draws.setFog(fog);
+                    Framebuffer fogged = new Framebuffer(W, H);
+                    r.render(draws, path, fogged);
+                    int changed = 0;
+                    for (int i = 0; i < W * H; i++) {
+                        float q = clear.depth()[i];
+                        assertEquals(Float.floatToRawIntBits(q), Float.floatToRawIntBits(fogged.depth()[i]));
+                        int c = clear.color()[i];
+                        int f = fogged.color()[i];
+                        if (q == 0) {
+                            assertEquals(c, f, "the background is not fogged");
+                            continue;
+                        }
+                        double k = fog.factor(1.0 / q);
+                        double[] mix = {((c >> 16) & 0xFF) * k + 255 * haze.r() * (1 - k),
+                            ((c >> 8) & 0xFF) * k + 255 * haze.g() * (1 - k), (c & 0xFF) * k + 255 * haze.b() * (1 - k)};
+                        int[] got = {(f >> 16) & 0xFF, (f >> 8) & 0xFF, f & 0xFF};
+                        for (int ch = 0; ch < 3; ch++) {
+                            assertTrue(Math.abs(got[ch] - mix[ch]) <= 0.65, path.mode() + ", " + fog + ": pixel " + i
+                                    + " channel " + ch + " is " + got[ch] + ", exact " + mix[ch]);
+                        }
+                        changed += c != f ? 1 : 0;
+                    }
+                    assertTrue(changed > W * H / 4, fog + " changed only " + changed + " pixels");
+                }
+            }
+        }
+    }
+}
