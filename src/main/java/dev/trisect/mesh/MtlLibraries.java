@@ -56,6 +56,11 @@ final class MtlLibraries {
         return diffuse.getOrDefault(material, 0xFFFFFF);
     }
 
+    /** Whether a library read gives {@code material} a {@code Kd}. */
+    boolean hasDiffuse(String material) {
+        return diffuse.containsKey(material);
+    }
+
     /** The libraries read, absolute and normalized, in the order the OBJ named them. */
     List<Path> files() {
         return List.copyOf(librariesRead);

@@ -21,9 +21,12 @@ import java.util.Objects;
  *                         the order the OBJ names them; empty when none was read. Unmodifiable.
  * @param lines            the {@code l} elements, in the mesh's object space, each segment coloured by
  *                         its material's {@code Kd} (white without one); {@link Lines#EMPTY} for none
+ * @param materialColours  one entry per material, same order: its {@code Kd} as 0xRRGGBB (each channel
+ *                         {@code round(255 * clamp(k, 0, 1))}), or null where the material has none.
+ *                         Unmodifiable; may contain nulls.
  */
 public record ObjModel(Mesh mesh, List<Path> materialTextures, List<String> textureSources,
-                       List<Path> materialLibraries, Lines lines) {
+                       List<Path> materialLibraries, Lines lines, List<Integer> materialColours) {
 
     /**
      * Checks that there is one entry per material in each list and keeps unmodifiable copies.
@@ -33,11 +36,17 @@ public record ObjModel(Mesh mesh, List<Path> materialTextures, List<String> text
      * @param textureSources    where each material's texture was named, or null
      * @param materialLibraries the MTL files read
      * @param lines             the {@code l} elements
+     * @param materialColours   each material's {@code Kd}, or null
      * @throws IllegalArgumentException when a list's length is not the mesh's material count
      */
     public ObjModel {
         Objects.requireNonNull(mesh, "mesh");
         Objects.requireNonNull(lines, "lines");
+        materialColours = Collections.unmodifiableList(new ArrayList<>(materialColours));
+        if (materialColours.size() != mesh.materialCount()) {
+            throw new IllegalArgumentException(materialColours.size() + " material colours for "
+                    + mesh.materialCount() + " materials");
+        }
         materialLibraries = List.copyOf(materialLibraries);
         // List.copyOf rejects nulls, which mean "no texture" here.
         materialTextures = Collections.unmodifiableList(new ArrayList<>(materialTextures));
@@ -59,6 +68,21 @@ public record ObjModel(Mesh mesh, List<Path> materialTextures, List<String> text
     public ObjModel(Mesh mesh, List<Path> materialTextures, List<String> textureSources,
                     List<Path> materialLibraries) {
         this(mesh, materialTextures, textureSources, materialLibraries, Lines.EMPTY);
+    }
+
+    /**
+     * A model whose materials have no {@code Kd}.
+     *
+     * @param mesh              the triangles
+     * @param materialTextures  each material's texture file, or null
+     * @param textureSources    where each material's texture was named, or null
+     * @param materialLibraries the MTL files read
+     * @param lines             the {@code l} elements
+     */
+    public ObjModel(Mesh mesh, List<Path> materialTextures, List<String> textureSources,
+                    List<Path> materialLibraries, Lines lines) {
+        this(mesh, materialTextures, textureSources, materialLibraries, lines,
+                Collections.nCopies(mesh.materialCount(), null));
     }
 
     /**

@@ -107,12 +107,14 @@ public final class ObjReader {
         Mesh built = mesh.toMesh();
         List<Path> materialTextures = new ArrayList<>();
         List<String> sources = new ArrayList<>();
+        List<Integer> colours = new ArrayList<>();
         for (String name : mesh.materialNames()) {
             materialTextures.add(libraries.texture(name));
             sources.add(libraries.source(name));
+            colours.add(libraries.hasDiffuse(name) ? libraries.diffuse(name) : null);
         }
         return new ObjModel(built, materialTextures, sources, libraries.files(),
-                mesh.toLines(built.positions(), libraries::diffuse));
+                mesh.toLines(built.positions(), libraries::diffuse), colours);
     }
 
     /** A {@code v} ({@link ObjMeshArrays#V}) or {@code vn} ({@link ObjMeshArrays#VN}): x y z, then any numbers. */

@@ -158,8 +158,9 @@ public final class SceneObject extends Node {
 
     /**
      * An object from a Wavefront OBJ file and the textures its MTL files name ({@code map_Kd}). A
-     * material without a texture gets the built-in UV grid (as the command line and the demo show such
-     * files), and {@code notes} hears of it. The object is named after the file.
+     * material without a texture is its diffuse colour ({@code Kd}) where the MTL gives one, as
+     * {@link Material#colour(int)}; with neither it gets the built-in UV grid (as the command line and
+     * the demo show such files), and {@code notes} hears of it. The object is named after the file.
      *
      * @param obj   the OBJ file
      * @param notes receives one-line remarks for the user (never errors; those are thrown)
@@ -218,7 +219,10 @@ public final class SceneObject extends Node {
         }
         for (int i = 0; i < mesh.materialCount(); i++) {
             Path map = model.materialTextures().get(i);
-            if (map == null) {
+            Integer kd = model.materialColours().get(i);
+            if (map == null && kd != null) {
+                materials.add(Material.colour(kd));
+            } else if (map == null) {
                 if (grid == null) {
                     grid = Material.of(ProceduralTextures.uvGrid(512));
                 }
