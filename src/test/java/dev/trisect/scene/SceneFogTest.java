@@ -22,7 +22,9 @@ class SceneFogTest {
         BufferedImage clear = SceneRenderer.renderImage(scene, camera, 64, 48);
         assertTrue(scene.fog().isEmpty());
         // The box's front at z = 4.5 from the eye: exp(-0.2 · 4.5) = 0.4066 of red, the rest white.
+        long version = scene.version();
         scene.setFog(Fog.exp(0.2, Colour.WHITE));
+        assertTrue(scene.version() > version, "a view idling on a still scene redraws when the fog changes");
         BufferedImage fogged = SceneRenderer.renderImage(scene, camera, 64, 48);
         int centre = fogged.getRGB(32, 24) & 0xFFFFFF;
         double f = Math.exp(-0.2 * 4.5);
