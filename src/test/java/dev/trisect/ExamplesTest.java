@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.examples.HeadlessRender;
 import dev.trisect.examples.PickPixels;
+import dev.trisect.examples.WireframeAxes;
 import dev.trisect.render.RenderSettings;
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
@@ -36,6 +37,25 @@ class ExamplesTest {
         assertTrue(r > g && g > b && r > 60, "the crate's wood at the centre: " + Integer.toHexString(crate));
         int ground = image.getRGB(20, 390);
         assertTrue((ground & 0xFFFFFF) != 0, "the ground at the bottom");
+    }
+
+    @Test
+    void wireframeAxesDrawsItsLines(@TempDir Path dir) throws Exception {
+        Path png = dir.resolve("wire.png");
+        WireframeAxes.main(new String[] {png.toString()});
+        BufferedImage image = ImageIO.read(png.toFile());
+        int[] wanted = {0xFF0000, 0x00FF00, 0x0000FF, 0x606060, 0xFF40FF, 0xFFC040, 0x40C0FF};
+        int[] found = new int[wanted.length];
+        for (int y = 0; y < image.getHeight(); y++) {
+            for (int x = 0; x < image.getWidth(); x++) {
+                for (int i = 0; i < wanted.length; i++) {
+                    found[i] += (image.getRGB(x, y) & 0xFFFFFF) == wanted[i] ? 1 : 0;
+                }
+            }
+        }
+        for (int i = 0; i < wanted.length; i++) {
+            assertTrue(found[i] > 20, Integer.toHexString(wanted[i]) + ": " + found[i] + " pixels");
+        }
     }
 
     @Test

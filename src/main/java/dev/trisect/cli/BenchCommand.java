@@ -12,8 +12,10 @@ import dev.trisect.perf.BudgetChart;
 import dev.trisect.perf.BudgetRun;
 import dev.trisect.perf.FrameBench;
 import dev.trisect.perf.FrameTimes;
+import dev.trisect.perf.ScatteredLines;
 import dev.trisect.perf.Sweep;
 import dev.trisect.perf.SweepChart;
+import dev.trisect.pipeline.Draws;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
@@ -61,6 +63,11 @@ final class BenchCommand extends SceneCommand {
             description = "Also time the frame in OpenGL with this glref binary (built from tools/glref), using the "
                     + "same thread count; both renderers then use the first material's texture everywhere.")
     Path glref;
+
+    @Option(names = "--lines", paramLabel = "N", defaultValue = "0",
+            description = "Add N line segments scattered through the view (deterministic), drawn after the triangles "
+                    + "--line-width pixels wide, in Trisect and in glref alike (default: none).")
+    int scatteredLines;
 
     @Option(names = "--json", description = "One JSON line per path instead of a table.")
     boolean json;
@@ -142,12 +149,18 @@ final class BenchCommand extends SceneCommand {
     }
 
     @Override
-    int run(SceneAsset scene, Camera camera, OutputBatch batch) throws IOException, InterruptedException {
+    int run(SceneAsset given, Camera camera, OutputBatch batch) throws IOException, InterruptedException {
+        if (scatteredLines < 0) {
+            throw InputException.usage("--lines must be 0 or more, got " + scatteredLines);
+        }
+        SceneAsset scene = scatteredLines == 0 ? given : given.withLines(ScatteredLines.of(camera,
+                frame.size.viewport().aspect(), scatteredLines, 1, 0xFFFFFF));
         Texture[] textures = scene.textureArray();
         if (glref != null) {
             Arrays.fill(textures, textures[0]);
         }
         Mat4 vp = camera.viewProjection(frame.size.viewport());
+        int lineWidth = frame.lineWidth();
         List<String> lines = new ArrayList<>();
         int threads;
         try (FrameRenderer renderer = common.renderer();
@@ -194,8 +207,10 @@ final class BenchCommand extends SceneCommand {
                 return 0;
             }
             if (!json) {
-                lines.add(String.format(Locale.ROOT, "scene %s, %s, %s, %s, %s filter, %s after %s", scene.name(),
-                        frame.size, Counts.of(scene.mesh().triangleCount(), "triangle"), Counts.of(threads, "thread"),
+                lines.add(String.format(Locale.ROOT, "scene %s, %s, %s%s, %s, %s filter, %s after %s", scene.name(),
+                        frame.size, Counts.of(scene.mesh().triangleCount(), "triangle"), scene.lines().isEmpty() ? ""
+                                : ", " + Counts.of(scene.lines().segmentCount(), "line segment") + " " + lineWidth
+                                + " px wide", Counts.of(threads, "thread"),
                         path.filter.id(), Counts.of(frames, "frame"), Counts.of(warmup, "warm-up frame")));
                 lines.add(String.format(Locale.ROOT, "%-12s %10s %10s %10s %10s %8s %10s", "path", "median ms",
                         "min ms", "mean ms", "p95 ms", "fps", "pieces"));
@@ -205,8 +220,11 @@ final class BenchCommand extends SceneCommand {
             try (InterruptNotice notice = new InterruptNotice(common.err(), progress,
                     modes.size() + (glref == null ? 0 : 1), "path")) {
                 Results.print(common.out(), lines);
-                FrameBench bench = new FrameBench(renderer, light.draws(scene.mesh(), textures, vp),
-                        Frames.allocate(frame.size));
+                Draws draws = light.draws(scene.mesh(), textures, vp);
+                if (!scene.lines().isEmpty()) {
+                    draws.addLines(scene.lines(), vp, lineWidth);
+                }
+                FrameBench bench = new FrameBench(renderer, draws, Frames.allocate(frame.size));
                 for (RenderMode mode : modes) {
                     RenderSettings settings = path.settings(frame).withMode(mode);
                     FrameBench.Result r = bench.time(settings, warmup, frames, progress.task(mode.id()));
@@ -215,7 +233,7 @@ final class BenchCommand extends SceneCommand {
                     notice.measured();
                 }
                 if (glref != null) {
-                    Results.print(common.out(), List.of(glrefRow(scene, textures[0], camera, threads)));
+                    Results.print(common.out(), List.of(glrefRow(scene, textures[0], camera, threads, lineWidth)));
                 }
             }
         }
@@ -248,7 +266,7 @@ final class BenchCommand extends SceneCommand {
     private static final Pattern GLREF_OUT = Pattern.compile("ms_per_frame\\s+([0-9.]+)");
 
     /** Exports the scene, runs glref with LP_NUM_THREADS set, and reports its mean frame time. */
-    private String glrefRow(SceneAsset scene, Texture texture, Camera camera, int threads)
+    private String glrefRow(SceneAsset scene, Texture texture, Camera camera, int threads, int lineWidth)
             throws IOException, InterruptedException {
         if (!camera.up().normalize().equals(Vec3.UP)) {
             common.note("glref always uses up = 0,1,0; its frame differs from ours for --up " + camera.up());
@@ -257,7 +275,7 @@ final class BenchCommand extends SceneCommand {
         try {
             Path obj = dir.resolve("scene.obj");
             List<Path> maps = ObjWriter.write(obj, scene.mesh(), List.of(Arrays.stream(scene.textureArray())
-                    .map(t -> texture).toArray(Texture[]::new)));
+                    .map(t -> texture).toArray(Texture[]::new)), scene.lines());
             List<String> cmd = new ArrayList<>(List.of(glref.toString(), obj.toString(), maps.get(0).toString(),
                     dir.resolve("gl.ppm").toString(), Integer.toString(frame.size.width()),
                     Integer.toString(frame.size.height())));
@@ -271,6 +289,7 @@ final class BenchCommand extends SceneCommand {
             pb.environment().put("LP_NUM_THREADS", Integer.toString(threads));
             pb.environment().put("GLREF_FILTER", path.filter.id());
             pb.environment().putAll(light.glrefEnvironment());
+            pb.environment().put("GLREF_LINE_WIDTH", Integer.toString(lineWidth));
             Process p;
             try {
                 p = pb.start();

@@ -34,8 +34,17 @@ public final class ObjWriter {
      *                                         (they are written as one {@link OutputBatch})
      */
     public static List<Path> write(Path obj, Mesh mesh, List<Texture> textures) {
+        return write(obj, mesh, textures, Lines.EMPTY);
+    }
+
+    /**
+     * As {@link #write(Path, Mesh, List)}, with lines after the triangles.
+     *
+     * @param lines the segments, in the mesh's space
+     */
+    public static List<Path> write(Path obj, Mesh mesh, List<Texture> textures, Lines lines) {
         try (OutputBatch batch = new OutputBatch()) {
-            List<Path> maps = write(batch, obj, mesh, textures);
+            List<Path> maps = write(batch, obj, mesh, textures, lines);
             batch.commit();
             return maps;
         }

@@ -54,6 +54,9 @@ public final class FrameBench {
     private static Draws one(SceneAsset scene, Texture[] textures, Mat4 viewProjection) {
         Draws d = new Draws();
         d.add(scene.mesh(), textures, viewProjection);
+        if (!scene.lines().isEmpty()) {
+            d.addLines(scene.lines(), viewProjection, 1);
+        }
         return d;
     }
 

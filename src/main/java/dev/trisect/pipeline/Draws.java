@@ -36,6 +36,7 @@ public final class Draws {
     private Lines[] lines = new Lines[2];
     private Mat4[] lineTransforms = new Mat4[2];
     private int[] lineWidths = new int[2];
+    private double[] lineNearer = new double[2];
     private int lineCount;
     private long segmentCount;
     private Fog fog;
@@ -136,6 +137,17 @@ public final class Draws {
      * @throws IllegalArgumentException when the width is below 1
      */
     public void addLines(Lines lines, Mat4 modelViewProjection, int width) {
+        addLines(lines, modelViewProjection, width, 0);
+    }
+
+    /**
+     * As {@link #addLines(Lines, Mat4, int)}, with the lines' depth brought nearer by the fraction
+     * {@code nearer} of their 1/w before the depth test (as {@code glPolygonOffset} is used for a
+     * wireframe over its own faces: so that edges lying on them show on every pixel).
+     *
+     * @param nearer 0 for none; a wireframe takes {@link #WIRE_NEARER}
+     */
+    public void addLines(Lines lines, Mat4 modelViewProjection, int width, double nearer) {
         Objects.requireNonNull(lines, "lines is null");
         Objects.requireNonNull(modelViewProjection, "model-view-projection matrix is null");
         if (width < 1) {
@@ -145,11 +157,26 @@ public final class Draws {
             this.lines = Arrays.copyOf(this.lines, 2 * lineCount);
             lineTransforms = Arrays.copyOf(lineTransforms, 2 * lineCount);
             lineWidths = Arrays.copyOf(lineWidths, 2 * lineCount);
+            lineNearer = Arrays.copyOf(lineNearer, 2 * lineCount);
         }
+        lineNearer[lineCount] = nearer;
         this.lines[lineCount] = lines;
         lineTransforms[lineCount] = modelViewProjection;
         lineWidths[lineCount++] = width;
         segmentCount += lines.segmentCount();
+    }
+
+    /**
+     * The depth offset of a wireframe drawn over its own faces: 1/w times {@code 1 + WIRE_NEARER}. Large
+     * enough for an edge to pass its faces' depth half a pixel off it on a face that recedes by a few
+     * percent of its depth per pixel, small enough (1/64) that edges more than that behind a surface
+     * stay hidden.
+     */
+    public static final double WIRE_NEARER = 1.0 / 64;
+
+    /** The depth offset of line draw {@code i} (see {@link #addLines(Lines, Mat4, int, double)}). */
+    public double lineNearer(int i) {
+        return lineNearer[i];
     }
 
     /** Number of line draws. */

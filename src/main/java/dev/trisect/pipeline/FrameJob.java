@@ -28,6 +28,10 @@ final class FrameJob {
     long geometryDone;
     /** What the fill pass did: pixels written, fill and overlay times. */
     BandPass.Result bands;
+    /** {@link System#nanoTime()} when the fill pass ended. */
+    long bandsDone;
+    /** What the line pass did: segments, pixels, time. */
+    LinePass.Result lines = LinePass.Result.NONE;
 
     FrameJob(Draws draws, RenderSettings settings, Framebuffer frame, WorkerPool pool, Chunks chunks, long start) {
         this.draws = draws;

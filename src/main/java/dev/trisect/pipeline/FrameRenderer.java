@@ -152,11 +152,10 @@ public final class FrameRenderer implements AutoCloseable {
         for (FramePass pass : passes) {
             pass.run(job);
         }
-        long end = System.nanoTime();
         drawn = record(job.chunkCount(), frame.width(), frame.height(), settings);
         return new FrameStatsBuilder(pool.threads(), job.start)
                 .geometry(draws.triangleCount(), job.chunks, job.geometry, job.geometryDone)
-                .bands(job.bands, end, settings.borders());
+                .bands(job.bands, job.bandsDone, settings.borders(), job.lines, draws.segmentCount());
     }
 
     /** The geometry pass: the chunks' screen triangles. */
@@ -169,11 +168,12 @@ public final class FrameRenderer implements AutoCloseable {
     private void fillPass(FrameJob job) {
         job.bands = bands.draw(job.frame, job.chunks, job.chunkCount(), job.draws.textures(), job.settings,
                 job.draws.fogPass(), outlines, job.pool);
+        job.bandsDone = System.nanoTime();
     }
 
     /** The line pass: the draws' lines over the filled frame, depth-tested against it. */
     private void linePass(FrameJob job) {
-        lines.draw(job.draws, job.frame, job.pool);
+        job.lines = lines.draw(job.draws, job.frame, job.pool);
     }
 
     private FrameRecord record(int chunkCount, int width, int height, RenderSettings settings) {

@@ -74,6 +74,14 @@ final class FrameStatsBuilder {
      * overlay drawn in it or not.
      */
     FrameStats bands(BandPass.Result result, long end, boolean borders) {
+        return bands(result, end, borders, LinePass.Result.NONE, 0);
+    }
+
+    /**
+     * The band pass, done at {@code end}, then the line pass ({@code lines}, with {@code segmentsIn}
+     * segments given), which ends the frame.
+     */
+    FrameStats bands(BandPass.Result result, long end, boolean borders, LinePass.Result lines, long segmentsIn) {
         // Filling and outlining run interleaved on all threads, so neither has a wall time of its
         // own: the band pass's wall time is shared out in proportion to the time the threads spent
         // on each, an estimate that FrameStats names as such.
@@ -87,6 +95,7 @@ final class FrameStatsBuilder {
         long clipWall = cpu == 0 ? 0 : Math.round(geometryWall * (double) clipCpu / cpu);
         return new FrameStats(triangles, back, frustum, degenerate, invalid, clipped, pieces, offScreen, splits,
                 deepest, caps, fallback, pieceBudget, budgetDepth, result.pixels(), threads, transformed - start,
-                clipWall, geometryWall - clipWall, rasterDone - geometryDone, end - rasterDone, borders, end - start);
+                clipWall, geometryWall - clipWall, rasterDone - geometryDone, end - rasterDone, borders,
+                end + lines.nanos() - start, segmentsIn, lines.segments(), lines.pixels(), lines.nanos());
     }
 }

@@ -53,11 +53,13 @@ final class LinePass {
             int[] ends = lines.segments();
             int[] colours = lines.colours();
             int lineWidth = draws.lineWidth(d);
+            double nearer = 1 + draws.lineNearer(d);
             for (int s = 0; s < colours.length; s++) {
                 if (clip(ends[2 * s], ends[2 * s + 1], gx, gy)) {
                     double[] e = this.ends;
-                    raster.add(viewport.screenX(e[0], e[3]), viewport.screenY(e[1], e[3]), 1 / e[3],
-                            viewport.screenX(e[4], e[7]), viewport.screenY(e[5], e[7]), 1 / e[7], lineWidth, colours[s]);
+                    raster.add(viewport.screenX(e[0], e[3]), viewport.screenY(e[1], e[3]), nearer / e[3],
+                            viewport.screenX(e[4], e[7]), viewport.screenY(e[5], e[7]), nearer / e[7], lineWidth,
+                            colours[s]);
                 }
             }
         }
@@ -66,8 +68,8 @@ final class LinePass {
         float[] depth = frame.depth();
         int rows = FrameRenderer.BAND_ROWS;
         int bands = (height + rows - 1) / rows;
-        pool.run(bands, (thread, b) -> pixels[thread] += raster.draw(color, depth, b * rows,
-                Math.min(height, (b + 1) * rows)));
+        raster.bin(rows);
+        pool.run(bands, (thread, b) -> pixels[thread] += raster.drawBand(color, depth, b));
         long written = 0;
         for (long p : pixels) {
             written += p;

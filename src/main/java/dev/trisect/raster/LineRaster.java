@@ -25,14 +25,18 @@ import java.util.Arrays;
  * the same across the line's width, as llvmpipe interpolates. It is kept where it is not behind the
  * frame's ({@code GL_LEQUAL}: 1/w at least the stored one), and written with the colour.
  *
- * <p>Not thread-safe to set up; {@link #draw} may run on many threads at once over distinct rows.
+ * <p>Not thread-safe to set up; {@link #draw} and {@link #drawBand} may run on many threads at once over
+ * distinct rows.
  */
 public final class LineRaster {
     /** Sub-pixel steps per pixel (llvmpipe's FIXED_ONE): positions snap to 1/256 pixel. */
     private static final int FIXED_ONE = 256;
-    /** Longs per segment: c, dcdx, dcdy of each of the four edges. */
+    /** Longs per segment: c, dcdx, dcdy of each slanted edge (up to four). */
     private static final int LSTRIDE = 12;
-    /** Ints per segment: first and last column, first and last frame row, colour, x-major flag. */
+    /**
+     * Ints per segment: first and last column, first and last frame row, colour, and the x-major flag
+     * with the number of slanted edges (the rest are folded into the columns and rows) above it.
+     */
     private static final int ISTRIDE = 6;
     /** Doubles per segment: the major-axis coordinate of the depth origin, its 1/w, 1/w per pixel. */
     private static final int DSTRIDE = 3;
@@ -41,6 +45,8 @@ public final class LineRaster {
     private int[] ints = new int[ISTRIDE * 64];
     private double[] depth = new double[DSTRIDE * 64];
     private int count;
+    private final BandBins bins = new BandBins();
+    private int binRows = 1;
     /** The parallelogram's corners being set up, 1/256 pixel, window space. */
     private final long[] cx = new long[4];
     private final long[] cy = new long[4];
@@ -195,16 +201,51 @@ public final class LineRaster {
         }
         grow();
         int l = LSTRIDE * count;
+        // Window rows py hold the sample gy = 256 py; frame row = height - 1 - py.
+        long pyLo = height - 1 - row1;
+        long pyHi = height - 1 - row0;
+        long colLo = col0;
+        long colHi = col1;
+        int varying = 0;
         for (int e = 0; e < 4; e++) {
-            plane(cx[e], cy[e], cx[(e + 1) & 3], cy[(e + 1) & 3], l + 3 * e);
+            plane(cx[e], cy[e], cx[(e + 1) & 3], cy[(e + 1) & 3], l + 3 * varying);
+            long c = planes[l + 3 * varying];
+            long a = planes[l + 3 * varying + 1] * FIXED_ONE;
+            long b = planes[l + 3 * varying + 2] * FIXED_ONE;
+            // Inside: c - a * col + b * py >= 1. An edge along a column or a row bounds the columns or
+            // the rows of every pixel alike: folded in here, leaving the (at most two) slanted edges.
+            if (b == 0) {
+                if (a > 0) {
+                    colHi = Math.min(colHi, Math.floorDiv(c - 1, a));
+                } else if (a < 0) {
+                    colLo = Math.max(colLo, -Math.floorDiv(1 - c, a));
+                } else if (c < 1) {
+                    return false;
+                }
+            } else if (a == 0) {
+                if (b > 0) {
+                    pyLo = Math.max(pyLo, -Math.floorDiv(c - 1, b));
+                } else {
+                    pyHi = Math.min(pyHi, Math.floorDiv(c - 1, -b));
+                }
+            } else {
+                varying++;
+            }
+        }
+        if (colLo > colHi || pyLo > pyHi) {
+            return false;
         }
         int i = ISTRIDE * count;
+        row0 = (int) (height - 1 - pyHi);
+        row1 = (int) (height - 1 - pyLo);
+        col0 = (int) colLo;
+        col1 = (int) colHi;
         ints[i] = col0;
         ints[i + 1] = col1;
         ints[i + 2] = row0;
         ints[i + 3] = row1;
         ints[i + 4] = rgb | 0xFF000000;
-        ints[i + 5] = xMajor ? 1 : 0;
+        ints[i + 5] = (xMajor ? 1 : 0) | varying << 1;
         // 1/w along the major axis, from the segment's own ends (not the moved ones), in window space.
         // In doubles: the frame's triangles' 1/w planes are, and a line on a face must meet the face's
         // depth there to the last bits (its 1/w is the face's at every point of it).
@@ -282,12 +323,60 @@ public final class LineRaster {
         planes[at + 2] = dcdy;
     }
 
+    /**
+     * {@code floor(n / d)} for {@code d != 0} and {@code |n| < 2^53}: by a double division, off by at
+     * most one, then corrected exactly (a long division costs several times more).
+     */
+    private static long floorDiv(long n, long d) {
+        long q = (long) Math.floor((double) n / d);
+        long r = n - q * d;
+        if (d > 0) {
+            q += r < 0 ? -1 : r >= d ? 1 : 0;
+        } else {
+            q += r > 0 ? -1 : r <= d ? 1 : 0;
+        }
+        return q;
+    }
+
     private void grow() {
         if (count * ISTRIDE == ints.length) {
             planes = Arrays.copyOf(planes, 2 * planes.length);
             ints = Arrays.copyOf(ints, 2 * ints.length);
             depth = Arrays.copyOf(depth, 2 * depth.length);
         }
+    }
+
+    /**
+     * Sorts the segments set up into bands of {@code bandRows} rows (keeping their order), for
+     * {@link #drawBand}.
+     *
+     * @param bandRows rows per band
+     */
+    public void bin(int bandRows) {
+        bins.prepare(count);
+        for (int s = 0; s < count; s++) {
+            bins.rows(s, ints[ISTRIDE * s + 2], ints[ISTRIDE * s + 3], bandRows);
+        }
+        binRows = bandRows;
+        bins.build(count, BandBins.bandCount(height, bandRows));
+    }
+
+    /**
+     * Draws the segments of band {@code b} (as {@link #bin} sorted them), in order, into its rows.
+     *
+     * @param color  the frame's colours, ARGB, row 0 at the top
+     * @param depths the frame's 1/w
+     * @return pixels written
+     */
+    public long drawBand(int[] color, float[] depths, int b) {
+        int y0 = b * binRows;
+        int y1 = Math.min(height, y0 + binRows);
+        int[] items = bins.items();
+        long written = 0;
+        for (int k = bins.start(b), end = bins.start(b + 1); k < end; k++) {
+            written += rows(items[k], color, depths, y0, y1);
+        }
+        return written;
     }
 
     /**
@@ -300,33 +389,39 @@ public final class LineRaster {
     public long draw(int[] color, float[] depths, int y0, int y1) {
         long written = 0;
         for (int s = 0; s < count; s++) {
-            int i = ISTRIDE * s;
-            int from = Math.max(y0, ints[i + 2]);
-            int to = Math.min(y1 - 1, ints[i + 3]);
-            for (int y = from; y <= to; y++) {
-                written += row(s, y, color, depths);
-            }
+            written += rows(s, color, depths, y0, y1);
         }
         return written;
     }
 
-    /** One row of segment s: its columns solved exactly from the four edges, then the depth test. */
+    /** Segment s's rows within {@code [y0, y1)}. */
+    private long rows(int s, int[] color, float[] depths, int y0, int y1) {
+        long written = 0;
+        int i = ISTRIDE * s;
+        int from = Math.max(y0, ints[i + 2]);
+        int to = Math.min(y1 - 1, ints[i + 3]);
+        for (int y = from; y <= to; y++) {
+            written += row(s, y, color, depths);
+        }
+        return written;
+    }
+
+    /** One row of segment s: its columns solved exactly from its slanted edges, then the depth test. */
     private int row(int s, int y, int[] color, float[] depths) {
         int i = ISTRIDE * s;
         long lo = ints[i];
         long hi = ints[i + 1];
         long gy = (long) (height - 1 - y) * FIXED_ONE;
         int l = LSTRIDE * s;
-        for (int e = 0; e < 4; e++) {
+        int varying = ints[i + 5] >> 1;
+        for (int e = 0; e < varying; e++) {
             long a = planes[l + 3 * e + 1] * FIXED_ONE;
             long c = planes[l + 3 * e] + planes[l + 3 * e + 2] * gy;
-            // Inside: c - a * col >= 1.
+            // Inside: c - a * col >= 1 (a is not 0 for a slanted edge).
             if (a > 0) {
-                hi = Math.min(hi, Math.floorDiv(c - 1, a));
-            } else if (a < 0) {
-                lo = Math.max(lo, -Math.floorDiv(1 - c, a));
-            } else if (c < 1) {
-                return 0;
+                hi = Math.min(hi, floorDiv(c - 1, a));
+            } else {
+                lo = Math.max(lo, -floorDiv(1 - c, a));
             }
         }
         if (lo > hi) {
@@ -339,7 +434,7 @@ public final class LineRaster {
         int rgb = ints[i + 4];
         int base = y * width;
         int written = 0;
-        if (ints[i + 5] == 1) {
+        if ((ints[i + 5] & 1) == 1) {
             for (int x = (int) lo; x <= hi; x++) {
                 float q = (float) (q0 + (x + 0.5 - origin) * step);
                 int at = base + x;

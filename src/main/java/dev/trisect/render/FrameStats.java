@@ -46,13 +46,57 @@ import dev.trisect.base.internal.JsonObject;
  * @param bandTimesEstimated whether {@code rasterNanos} and {@code overlayNanos} are that estimate
  *                         (borders on) rather than measured
  * @param totalNanos       the whole frame
+ * @param segmentsIn       line segments of the frame's line draws
+ * @param segmentsDrawn    of those, the ones set up to draw: what clipping left, with length on screen
+ * @param linePixels       pixels the lines wrote (depth test passed); not in {@code pixelsWritten}
+ * @param lineNanos        the line pass (after the fill), measured; 0 without lines
  */
 public record FrameStats(long trianglesIn, long culledBackFace, long culledFrustum, long culledDegenerate,
                          long skippedInvalid, long clipped, long pieces, long piecesOffScreen, long splits,
                          int deepestSplit, long capsReached, long piecesFallback, long pieceBudget,
                          int budgetDepth, long pixelsWritten, int threads,
                          long transformNanos, long clipNanos, long tessellateNanos, long rasterNanos,
-                         long overlayNanos, boolean bandTimesEstimated, long totalNanos) {
+                         long overlayNanos, boolean bandTimesEstimated, long totalNanos, long segmentsIn,
+                         long segmentsDrawn, long linePixels, long lineNanos) {
+
+    /**
+     * The statistics of a frame without lines.
+     *
+     * @param trianglesIn        input triangles
+     * @param culledBackFace     dropped as seen from behind
+     * @param culledFrustum      dropped as outside the view volume
+     * @param culledDegenerate   dropped for having no area
+     * @param skippedInvalid     skipped for invalid coordinates
+     * @param clipped            cut by a plane
+     * @param pieces             triangles filled
+     * @param piecesOffScreen    pieces dropped off screen
+     * @param splits             edge cuts made
+     * @param deepestSplit       highest edge level reached
+     * @param capsReached        input triangles a cap stopped short
+     * @param piecesFallback     pieces filled per pixel
+     * @param pieceBudget        the frame's piece budget
+     * @param budgetDepth        the depth cap the budget forced, or -1
+     * @param pixelsWritten      pixels that passed the depth test
+     * @param threads            threads that filled the frame
+     * @param transformNanos     vertex transform
+     * @param clipNanos          culling and clipping
+     * @param tessellateNanos    splitting and projection
+     * @param rasterNanos        clearing and filling
+     * @param overlayNanos       border overlay
+     * @param bandTimesEstimated whether the band times are estimates
+     * @param totalNanos         the whole frame
+     */
+    public FrameStats(long trianglesIn, long culledBackFace, long culledFrustum, long culledDegenerate,
+                      long skippedInvalid, long clipped, long pieces, long piecesOffScreen, long splits,
+                      int deepestSplit, long capsReached, long piecesFallback, long pieceBudget,
+                      int budgetDepth, long pixelsWritten, int threads,
+                      long transformNanos, long clipNanos, long tessellateNanos, long rasterNanos,
+                      long overlayNanos, boolean bandTimesEstimated, long totalNanos) {
+        this(trianglesIn, culledBackFace, culledFrustum, culledDegenerate, skippedInvalid, clipped, pieces,
+                piecesOffScreen, splits, deepestSplit, capsReached, piecesFallback, pieceBudget, budgetDepth,
+                pixelsWritten, threads, transformNanos, clipNanos, tessellateNanos, rasterNanos, overlayNanos,
+                bandTimesEstimated, totalNanos, 0, 0, 0, 0);
+    }
 
     /**
      * Whether the frame's pieces exceeded its budget, so that its depth cap was lowered.
@@ -114,12 +158,16 @@ public record FrameStats(long trianglesIn, long culledBackFace, long culledFrust
                 .put("budget_depth", budgetDepth)
                 .put("pixels_written", pixelsWritten)
                 .put("threads", threads)
+                .put("segments_in", segmentsIn)
+                .put("segments_drawn", segmentsDrawn)
+                .put("line_pixels", linePixels)
                 .put("ms", new JsonObject()
                         .put("transform", transformNanos / 1e6, 3)
                         .put("clip", clipNanos / 1e6, 3)
                         .put("tessellate", tessellateNanos / 1e6, 3)
                         .put(bandTimesEstimated ? "raster_estimate" : "raster", rasterNanos / 1e6, 3)
                         .put(bandTimesEstimated ? "overlay_estimate" : "overlay", overlayNanos / 1e6, 3)
+                        .put("lines", lineNanos / 1e6, 3)
                         .put("total", totalNanos / 1e6, 3));
     }
 

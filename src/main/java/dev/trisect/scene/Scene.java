@@ -1,6 +1,7 @@
 package dev.trisect.scene;
 
 import dev.trisect.math.Mat4;
+import dev.trisect.mesh.Lines;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.render.Fog;
 import java.util.ArrayList;
@@ -39,8 +40,13 @@ public final class Scene extends Group {
      * @param mesh      its mesh, object space
      * @param materials its materials, one per mesh material
      * @param world     object space to world space at the snapshot's instant
+     * @param filled    whether its triangles are filled ({@link DrawStyle#fills})
+     * @param lines     its own lines, object space
+     * @param wire      its mesh's edges when its style draws them, else {@link Lines#EMPTY}
+     * @param lineWidth the width of its lines and wire, pixels
      */
-    public record Placed(SceneObject object, Mesh mesh, List<Material> materials, Mat4 world) {
+    public record Placed(SceneObject object, Mesh mesh, List<Material> materials, Mat4 world, boolean filled,
+                         Lines lines, Lines wire, int lineWidth) {
     }
 
     /** Changes counted by {@link #version()}; written under {@link Node#LOCK}. */
@@ -114,7 +120,7 @@ public final class Scene extends Group {
             }
             Mat4 m = world.mul(n.matrix());
             if (n instanceof SceneObject o) {
-                out.add(new Placed(o, o.lookMesh(), o.lookMaterials(), m));
+                out.add(o.placed(m));
             } else {
                 collect((Group) n, m, out);
             }

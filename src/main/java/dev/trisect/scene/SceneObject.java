@@ -1,8 +1,12 @@
 package dev.trisect.scene;
 
 import dev.trisect.base.InputException;
+import dev.trisect.math.Mat4;
 import dev.trisect.math.Transform;
+import dev.trisect.mesh.LineShapes;
+import dev.trisect.mesh.Lines;
 import dev.trisect.mesh.Mesh;
+import dev.trisect.mesh.MeshBuilder;
 import dev.trisect.mesh.ObjModel;
 import dev.trisect.mesh.ObjReader;
 import dev.trisect.texture.ProceduralTextures;
@@ -31,9 +35,21 @@ import java.util.function.Consumer;
  * object changes nothing of any other. Every method may be called from any thread.
  */
 public final class SceneObject extends Node {
-    /** Mesh and materials together, swapped as one value. */
-    private record Look(Mesh mesh, List<Material> materials) {
+    /**
+     * Everything drawn, swapped as one value: the mesh and its materials, the object's own lines, the
+     * lines' width, the mesh's style, its wire colour and (when the style draws it) its wireframe.
+     */
+    private record Look(Mesh mesh, List<Material> materials, Lines lines, int lineWidth, DrawStyle style,
+                        int wireColour, Lines wire) {
+        Look with(DrawStyle style, int wireColour) {
+            Lines edges = !style.wires() ? Lines.EMPTY
+                    : wire.isEmpty() || this.wireColour != wireColour ? LineShapes.edges(mesh, wireColour) : wire;
+            return new Look(mesh, materials, lines, lineWidth, style, wireColour, edges);
+        }
     }
+
+    /** The mesh of an object of lines alone: no triangles. */
+    private static final Mesh NO_TRIANGLES = new MeshBuilder().build();
 
     private volatile Look look;
 
@@ -62,7 +78,22 @@ public final class SceneObject extends Node {
      */
     public SceneObject(Mesh mesh, List<Material> materials) {
         super(null);
-        this.look = look(mesh, materials);
+        this.look = new Look(mesh, checked(mesh, materials), Lines.EMPTY, 1, DrawStyle.FILLED, 0xFFFFFF, Lines.EMPTY);
+    }
+
+    /**
+     * An object of lines alone, such as {@link LineShapes#axes}, a grid or a wire box: no triangles.
+     *
+     * @param lines the segments, object space
+     * @param width their width in whole pixels, 1 to 255
+     * @return the object
+     * @throws IllegalArgumentException when the width is out of range
+     */
+    public static SceneObject lines(Lines lines, int width) {
+        SceneObject o = new SceneObject(NO_TRIANGLES, Material.colour(0xFFFFFF));
+        o.setLines(lines);
+        o.setLineWidth(width);
+        return o;
     }
 
     /**
@@ -111,26 +142,109 @@ public final class SceneObject extends Node {
      * @param materials one per mesh material, in its order
      */
     public void setMaterials(List<Material> materials) {
-        Look next = look(look.mesh(), materials);
+        change(l -> new Look(l.mesh(), checked(l.mesh(), materials), l.lines(), l.lineWidth(), l.style(),
+                l.wireColour(), l.wire()));
+    }
+
+    /**
+     * The object's own lines, object space, drawn with it in every style ({@link Lines#EMPTY} unless set).
+     *
+     * @return the lines
+     */
+    public Lines lines() {
+        return look.lines();
+    }
+
+    /**
+     * Draws {@code lines} with the object from the next frame on, moved as its mesh is.
+     *
+     * @param lines the segments, object space
+     */
+    public void setLines(Lines lines) {
+        Objects.requireNonNull(lines, "lines is null: use Lines.EMPTY for none");
+        change(l -> new Look(l.mesh(), l.materials(), lines, l.lineWidth(), l.style(), l.wireColour(), l.wire()));
+    }
+
+    /**
+     * The width of the object's lines and wireframe, whole pixels.
+     *
+     * @return the width, 1 unless set
+     */
+    public int lineWidth() {
+        return look.lineWidth();
+    }
+
+    /**
+     * Sets the width of the object's lines and wireframe from the next frame on, as OpenGL's
+     * {@code glLineWidth} for aliased lines.
+     *
+     * @param width whole pixels, 1 to 255
+     * @throws IllegalArgumentException when out of range
+     */
+    public void setLineWidth(int width) {
+        if (width < 1 || width > 255) {
+            throw new IllegalArgumentException("line width must be 1 to 255 pixels, got " + width);
+        }
+        change(l -> new Look(l.mesh(), l.materials(), l.lines(), width, l.style(), l.wireColour(), l.wire()));
+    }
+
+    /**
+     * How the mesh is drawn: filled, as wire (its edges) or both.
+     *
+     * @return the style, {@link DrawStyle#FILLED} unless set
+     */
+    public DrawStyle drawStyle() {
+        return look.style();
+    }
+
+    /**
+     * Draws the mesh filled, as wire or both from the next frame on. The wireframe, each edge two
+     * triangles share once ({@link LineShapes#edges}), is made here, once per mesh and colour.
+     *
+     * @param style the style
+     */
+    public void setDrawStyle(DrawStyle style) {
+        Objects.requireNonNull(style, "style is null");
+        change(l -> l.with(style, l.wireColour()));
+    }
+
+    /**
+     * The colour of the wireframe.
+     *
+     * @return 0xRRGGBB, white unless set
+     */
+    public int wireColour() {
+        return look.wireColour();
+    }
+
+    /**
+     * Sets the colour of the wireframe from the next frame on.
+     *
+     * @param rgb 0xRRGGBB
+     */
+    public void setWireColour(int rgb) {
+        change(l -> l.with(l.style(), rgb & 0xFFFFFF));
+    }
+
+    /** Replaces the look by {@code next} of the current one, atomically against snapshots and other changes. */
+    private void change(java.util.function.UnaryOperator<Look> next) {
         LOCK.lock();
         try {
-            look = next;
+            look = next.apply(look);
             changed();
         } finally {
             LOCK.unlock();
         }
     }
 
-    /** Mesh and materials as one value, read under the lock by {@link Scene#snapshot()}. */
-    Mesh lookMesh() {
-        return look.mesh();
+    /** The look as one value, read under the lock by {@link Scene#snapshot()}. */
+    Scene.Placed placed(Mat4 world) {
+        Look l = look;
+        return new Scene.Placed(this, l.mesh(), l.materials(), world, l.style().fills(), l.lines(), l.wire(),
+                l.lineWidth());
     }
 
-    List<Material> lookMaterials() {
-        return look.materials();
-    }
-
-    private static Look look(Mesh mesh, List<Material> materials) {
+    private static List<Material> checked(Mesh mesh, List<Material> materials) {
         Objects.requireNonNull(mesh, "mesh is null");
         Objects.requireNonNull(materials, "materials list is null");
         List<Material> copy = new ArrayList<>(materials.size());
@@ -143,7 +257,7 @@ public final class SceneObject extends Node {
             throw new IllegalArgumentException("the mesh has " + mesh.materialCount() + " materials "
                     + mesh.materialNames() + " but " + copy.size() + " were given");
         }
-        return new Look(mesh, List.copyOf(copy));
+        return List.copyOf(copy);
     }
 
     /**

@@ -75,6 +75,17 @@ class LinesCommandTest {
         assertEquals(before.mesh().triangleCount(), after.mesh().triangleCount());
     }
 
+    @Test
+    void benchTimesTheFrameWithScatteredLines() {
+        CliRun r = CliRun.of("bench", "--scene", "floor", "--size", "64x48", "--modes", "perspective", "--frames", "1",
+                "--warmup", "0", "--lines", "200");
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.out().contains("200 line segments 1 px wide"), r.out());
+        CliRun bad = CliRun.of("bench", "--scene", "floor", "--lines", "-1");
+        assertEquals(2, bad.status(), bad.err());
+        assertTrue(bad.err().contains("--lines must be 0 or more, got -1"), bad.err());
+    }
+
     @ParameterizedTest
     @ValueSource(strings = {"0", "256", "-1"})
     void aLineWidthOutOfRangeIsAUsageError(String width) throws IOException {

@@ -4,6 +4,7 @@ import dev.trisect.math.Mat4;
 import dev.trisect.math.Vec3;
 import dev.trisect.math.Viewport;
 import dev.trisect.mesh.Mesh;
+import dev.trisect.mesh.MeshBuilder;
 import dev.trisect.pipeline.Draws;
 import dev.trisect.render.Fog;
 import dev.trisect.scene.Camera;
@@ -20,6 +21,13 @@ import java.util.List;
  * and the view. Valid while its {@link Draws} are not refilled.
  */
 public final class DrawnFrame {
+    private static final Mesh NO_TRIANGLES = new MeshBuilder().build();
+    private static final Texture[] NO_TEXTURES = new Texture[NO_TRIANGLES.materialCount()];
+
+    static {
+        java.util.Arrays.fill(NO_TEXTURES, Texture.solid("none", 0xFF000000));
+    }
+
     private final List<Scene.Placed> placed;
     private final Camera camera;
     private final int width;
@@ -51,7 +59,15 @@ public final class DrawnFrame {
             for (int i = 0; i < textures.length; i++) {
                 textures[i] = materials.get(i).texture();
             }
-            draws.add(o.mesh(), textures, viewProjection.mul(o.world()));
+            Mat4 mvp = viewProjection.mul(o.world());
+            // One draw per object, so that draw k is object k: an object drawn as wire alone draws no triangles.
+            draws.add(o.filled() ? o.mesh() : NO_TRIANGLES, o.filled() ? textures : NO_TEXTURES, mvp);
+            if (!o.lines().isEmpty()) {
+                draws.addLines(o.lines(), mvp, o.lineWidth());
+            }
+            if (!o.wire().isEmpty()) {
+                draws.addLines(o.wire(), mvp, o.lineWidth(), o.filled() ? Draws.WIRE_NEARER : 0);
+            }
         }
         draws.setFog(fog);
     }
