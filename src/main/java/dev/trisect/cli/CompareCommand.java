@@ -113,7 +113,7 @@ final class CompareCommand extends SceneCommand {
             // Measure the rendered image, never the overlay: borders are drawn only after comparing,
             // and only into the --out image.
             Frames.noteSkipped(common, renderer.render(draws, settings.withBorders(false), test));
-            c = ImageComparison.compare(w, h, test.color(), test.uv(), reference.color(), reference.uv(),
+            c = ImageComparison.compare(w, h, test.colour(), test.uv(), reference.colour(), reference.uv(),
                     exact, displacement);
             if (settings.borders()) {
                 renderer.drawBorders(test, settings.borderStyle(), settings.tessellation());
@@ -135,7 +135,7 @@ final class CompareCommand extends SceneCommand {
                 ImageFiles.write(b, heatmap, w, h, argb);
             }
             if (out != null) {
-                ImageFiles.write(b, out, w, h, test.color());
+                ImageFiles.write(b, out, w, h, test.colour());
             }
         }, List.of(json));
         return 0;

@@ -62,7 +62,7 @@ final class RenderCommand extends SceneCommand {
         Frames.noteSkipped(common, s);
         // The image and its UV output belong together: both are written, or neither is changed.
         Results.deliver(common.out(), batch, b -> {
-            ImageFiles.write(b, out, fb.width(), fb.height(), fb.color());
+            ImageFiles.write(b, out, fb.width(), fb.height(), fb.colour());
             if (uvOut != null) {
                 Pfm.write(b, uvOut, fb.width(), fb.height(), fb.uv());
             }

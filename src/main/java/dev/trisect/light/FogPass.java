@@ -121,7 +121,7 @@ public final class FogPass {
      * @param y1    one past the last row
      */
     public void apply(Framebuffer frame, int y0, int y1) {
-        int[] color = frame.color();
+        int[] color = frame.colour();
         float[] depth = frame.depth();
         int[] t = table;
         int last = t.length - 2;

@@ -133,7 +133,7 @@ public final class Sweep {
             FrameBench.Result timed = bench.time(settings, warmup, frames,
                     (d, t) -> progress.frameDone(offset + d, total));
             renderer.render(scene.mesh(), textures, viewProjection, settings, test);
-            Comparison c = ImageComparison.compare(width, height, test.color(), test.uv(), reference.color(),
+            Comparison c = ImageComparison.compare(width, height, test.colour(), test.uv(), reference.colour(),
                     reference.uv(), exact, null);
             done[0] += perSetting;
             progress.frameDone(done[0], total);

@@ -64,7 +64,7 @@ final class LinePass {
             }
         }
         java.util.Arrays.fill(pixels, 0);
-        int[] color = frame.color();
+        int[] color = frame.colour();
         float[] depth = frame.depth();
         int rows = FrameRenderer.BAND_ROWS;
         int bands = (height + rows - 1) / rows;

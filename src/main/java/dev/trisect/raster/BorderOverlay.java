@@ -62,7 +62,7 @@ public final class BorderOverlay {
         int[] items = plan.bins.items();
         int[] walks = plan.walks;
         double[] lines = plan.lines;
-        color = frame.color();
+        color = frame.colour();
         depth = frame.depth();
         width = frame.width();
         long painted = 0;

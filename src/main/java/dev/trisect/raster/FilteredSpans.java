@@ -119,7 +119,7 @@ final class FilteredSpans {
         int ss2 = 0;
         int ts2 = 0;
         int width = frame.width();
-        int[] color = frame.color();
+        int[] color = frame.colour();
         float[] depth = frame.depth();
         double[] uv = frame.uv();
         long written = 0;
@@ -256,7 +256,7 @@ final class FilteredSpans {
         int wMask = lv[TexelLanes.WIDTH_MASK];
         int hMask = lv[TexelLanes.HEIGHT_MASK];
         int width = frame.width();
-        int[] color = frame.color();
+        int[] color = frame.colour();
         float[] depth = frame.depth();
         double[] uv = frame.uv();
         long written = 0;
@@ -321,7 +321,7 @@ final class FilteredSpans {
         double tDx = setup.tPlane.dx;
         double tDy = setup.tPlane.dy;
         int width = frame.width();
-        int[] color = frame.color();
+        int[] color = frame.colour();
         float[] depth = frame.depth();
         double[] uv = frame.uv();
         int level2 = weight == 0 ? level : level + 1;

@@ -79,7 +79,7 @@ final class KnotFilteredSpans {
         int ss2 = 0;
         int ts2 = 0;
         int width = frame.width();
-        int[] color = frame.color();
+        int[] color = frame.colour();
         float[] depth = frame.depth();
         double[] uv = frame.uv();
         long written = 0;

@@ -93,7 +93,7 @@ public final class KnotTicks {
 
     /** One tick at column x of row y, clipped to rows [y0, y1). */
     private int tick(Framebuffer frame, int x, int y, int colour, double alpha, int y0, int y1) {
-        int[] color = frame.color();
+        int[] color = frame.colour();
         float[] depth = frame.depth();
         int width = frame.width();
         int painted = 0;

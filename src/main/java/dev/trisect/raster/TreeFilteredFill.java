@@ -48,7 +48,7 @@ final class TreeFilteredFill {
         double qDx = setup.qPlane.dx;
         double qDy = setup.qPlane.dy;
         int width = frame.width();
-        int[] color = frame.color();
+        int[] color = frame.colour();
         float[] depth = frame.depth();
         double[] uv = frame.uv();
         TexelLanes lanes = TexelLanes.of(mips);

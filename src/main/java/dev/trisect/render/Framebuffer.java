@@ -18,7 +18,7 @@ import java.awt.image.BufferedImage;
 public final class Framebuffer {
     private final int width;
     private final int height;
-    private final int[] color;
+    private final int[] colour;
     private final float[] depth;
     private double[] uv;
     /** Calls of {@link #clearRows} so far: see {@link #clearCount()}. */
@@ -34,7 +34,7 @@ public final class Framebuffer {
         }
         this.width = width;
         this.height = height;
-        this.color = new int[width * height];
+        this.colour = new int[width * height];
         this.depth = new float[width * height];
     }
 
@@ -61,8 +61,8 @@ public final class Framebuffer {
      *
      * @return the colour buffer, {@code width * height} ARGB values, live (not a copy)
      */
-    public int[] color() {
-        return color;
+    public int[] colour() {
+        return colour;
     }
 
     /**
@@ -108,7 +108,7 @@ public final class Framebuffer {
         clears.incrementAndGet();
         int from = y0 * width;
         int to = y1 * width;
-        java.util.Arrays.fill(color, from, to, background | 0xFF000000);
+        java.util.Arrays.fill(colour, from, to, background | 0xFF000000);
         java.util.Arrays.fill(depth, from, to, 0f);
         if (uv != null) {
             java.util.Arrays.fill(uv, 3 * from, 3 * to, 0.0);
@@ -136,7 +136,7 @@ public final class Framebuffer {
      */
     public BufferedImage toImage() {
         BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
-        image.setRGB(0, 0, width, height, color, 0, width);
+        image.setRGB(0, 0, width, height, colour, 0, width);
         return image;
     }
 
@@ -153,7 +153,7 @@ public final class Framebuffer {
         int sum = 0;
         // 16 four-byte values to a 64-byte line.
         for (int i = y0 * width, end = y1 * width; i < end; i += 16) {
-            sum += color[i] + Float.floatToRawIntBits(depth[i]);
+            sum += colour[i] + Float.floatToRawIntBits(depth[i]);
         }
         return sum;
     }

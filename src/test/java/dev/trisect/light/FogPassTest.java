@@ -19,7 +19,7 @@ class FogPassTest {
     void blendsCoveredPixelsTowardsTheFogByDepthAndLeavesTheBackground() {
         Framebuffer frame = new Framebuffer(3, 1);
         frame.clearRows(0, 1, 0x102030);
-        int[] c = frame.color();
+        int[] c = frame.colour();
         float[] d = frame.depth();
         // z = 4 between start 2 and end 10: f = 0.75. z = 1 (before the start): f = 1. Pixel 2: background.
         c[0] = 0xFFC86400;

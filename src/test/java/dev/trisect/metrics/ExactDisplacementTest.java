@@ -118,9 +118,9 @@ class ExactDisplacementTest {
         Framebuffer perspective = render(mesh, RenderMode.PERSPECTIVE);
         float[] exact = new float[W * H];
         float[] estimate = new float[W * H];
-        Comparison c = ImageComparison.compare(W, H, affine.color(), affine.uv(), perspective.color(),
+        Comparison c = ImageComparison.compare(W, H, affine.colour(), affine.uv(), perspective.colour(),
                 perspective.uv(), new TexelToScreen(mesh, TEXTURE, VP, VIEWPORT), exact);
-        Comparison e = ImageComparison.compare(W, H, affine.color(), affine.uv(), perspective.color(),
+        Comparison e = ImageComparison.compare(W, H, affine.colour(), affine.uv(), perspective.colour(),
                 perspective.uv(), estimate);
 
         assertTrue(c.displacementExact());
@@ -158,7 +158,7 @@ class ExactDisplacementTest {
     void thePerspectivePathShowsEveryTexelWhereItBelongs() {
         Mesh mesh = triangle(UVS);
         Framebuffer perspective = render(mesh, RenderMode.PERSPECTIVE);
-        Comparison c = ImageComparison.compare(W, H, perspective.color(), perspective.uv(), perspective.color(),
+        Comparison c = ImageComparison.compare(W, H, perspective.colour(), perspective.uv(), perspective.colour(),
                 perspective.uv(), new TexelToScreen(mesh, TEXTURE, VP, VIEWPORT), null);
         assertTrue(c.comparedPixels() > W * H / 8);
         // The texel coordinates are kept in doubles: only double rounding remains.
@@ -232,7 +232,7 @@ class ExactDisplacementTest {
         Framebuffer fb = render(mesh, RenderMode.AFFINE);
         TexelToScreen maps = new TexelToScreen(mesh, TEXTURE, VP, VIEWPORT);
         float[] out = new float[W * H];
-        Comparison c = ImageComparison.compare(W, H, fb.color(), fb.uv(), fb.color(), fb.uv(), maps, out);
+        Comparison c = ImageComparison.compare(W, H, fb.colour(), fb.uv(), fb.colour(), fb.uv(), maps, out);
         assertTrue(maps.isDegenerate(0));
         assertTrue(c.comparedPixels() > W * H / 8);
         assertEquals(c.comparedPixels(), c.degenerateUvPixels());

@@ -31,7 +31,7 @@ class BorderColouringTest {
         try (FrameRenderer renderer = new FrameRenderer(2)) {
             FrameStats s = renderer.render(scene.mesh(), scene.textureArray(),
                     scene.camera().viewProjection(new Viewport(W, H)), r, fb);
-            return new Frame(fb.color().clone(), s);
+            return new Frame(fb.colour().clone(), s);
         }
     }
 

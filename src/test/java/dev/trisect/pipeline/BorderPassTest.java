@@ -38,11 +38,11 @@ class BorderPassTest {
                             .withTessellation(TessellationSettings.defaults().withMaxEdge(6));
                     Framebuffer with = TestScenes.render(renderer, mesh, cam, s.withBorders(true), W, H);
                     Framebuffer after = TestScenes.render(renderer, mesh, cam, s.withBorders(false), W, H);
-                    int[] plain = after.color().clone();
+                    int[] plain = after.colour().clone();
                     renderer.drawBorders(after, style, s.tessellation());
-                    assertArrayEquals(with.color(), after.color(), mode.id() + " " + style);
+                    assertArrayEquals(with.colour(), after.colour(), mode.id() + " " + style);
                     if (!style.onlyFallback()) {
-                        assertNotEquals(Arrays.hashCode(plain), Arrays.hashCode(after.color()), "outlines drawn");
+                        assertNotEquals(Arrays.hashCode(plain), Arrays.hashCode(after.colour()), "outlines drawn");
                     }
                 }
             }
@@ -64,7 +64,7 @@ class BorderPassTest {
                 one = TestScenes.render(single, mesh, cam, s, 2 * W, 2 * H);
             }
             try (FrameRenderer three = new FrameRenderer(3)) {
-                assertArrayEquals(one.color(), TestScenes.render(three, mesh, cam, s, 2 * W, 2 * H).color(),
+                assertArrayEquals(one.colour(), TestScenes.render(three, mesh, cam, s, 2 * W, 2 * H).colour(),
                         style.toString());
             }
         }

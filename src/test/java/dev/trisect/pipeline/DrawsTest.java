@@ -58,8 +58,8 @@ class DrawsTest {
                 FrameStats stats = r.render(draws, PERSPECTIVE, f);
                 assertEquals(4, stats.trianglesIn());
                 // The near square (z = -4, x in [-1, 1]) covers x 75..125; the far one reaches 110..130 beyond it.
-                assertEquals(0xFF0000, f.color()[100 * 200 + 100] & 0xFFFFFF, "near wins at the centre");
-                assertEquals(0x00FF00, f.color()[100 * 200 + 127] & 0xFFFFFF, "far shows beside it");
+                assertEquals(0xFF0000, f.colour()[100 * 200 + 100] & 0xFFFFFF, "near wins at the centre");
+                assertEquals(0x00FF00, f.colour()[100 * 200 + 127] & 0xFFFFFF, "far shows beside it");
                 int nearId = (int) f.uv()[3 * (100 * 200 + 100) + 2] - 1;
                 int farId = (int) f.uv()[3 * (100 * 200 + 127) + 2] - 1;
                 int nearDraw = nearFirst ? 0 : 2;
@@ -108,7 +108,7 @@ class DrawsTest {
         int y1 = -1;
         for (int y = 0; y < f.height(); y++) {
             for (int x = 0; x < f.width(); x++) {
-                if ((f.color()[y * f.width() + x] & 0xFFFFFF) == rgb) {
+                if ((f.colour()[y * f.width() + x] & 0xFFFFFF) == rgb) {
                     x0 = Math.min(x0, x);
                     y0 = Math.min(y0, y);
                     x1 = Math.max(x1, x);

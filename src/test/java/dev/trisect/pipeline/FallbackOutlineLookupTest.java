@@ -33,11 +33,11 @@ class FallbackOutlineLookupTest {
             FrameStats st = r.render(demo.mesh(), demo.textureArray(), demo.camera().viewProjection(new Viewport(W, H)),
                     RenderSettings.defaults(), fb);
             assertTrue(st.piecesFallback() > 0 && st.capsReached() == 0, "slivers only");
-            int[] before = fb.color().clone();
+            int[] before = fb.colour().clone();
             float[] depth = fb.depth().clone();
             // The fallback pieces' outlines alone, opaque magenta: the pixels they light.
             r.drawBorders(fb, BorderStyle.fallbackOnly(), RenderSettings.defaults().tessellation());
-            int[] after = fb.color();
+            int[] after = fb.colour();
             int marked = 0;
             int slivers = 0;
             Random random = new Random(3);

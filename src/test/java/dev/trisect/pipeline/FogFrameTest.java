@@ -53,8 +53,8 @@ class FogFrameTest {
                     for (int i = 0; i < W * H; i++) {
                         float q = clear.depth()[i];
                         assertEquals(Float.floatToRawIntBits(q), Float.floatToRawIntBits(fogged.depth()[i]));
-                        int c = clear.color()[i];
-                        int f = fogged.color()[i];
+                        int c = clear.colour()[i];
+                        int f = fogged.colour()[i];
                         if (q == 0) {
                             assertEquals(c, f, "the background is not fogged");
                             continue;

@@ -67,7 +67,7 @@ class FrameBudgetTest {
         assertTrue(one[0].budgetReached(), one[0].toJson());
         assertEquals(one[0].budgetDepth(), three[0].budgetDepth());
         assertEquals(one[0].pieces(), three[0].pieces());
-        assertArrayEquals(a.color(), b.color());
+        assertArrayEquals(a.colour(), b.colour());
         assertArrayEquals(a.uv(), b.uv());
     }
 

@@ -35,7 +35,7 @@ class FramePassesTest {
             assertNotNull(job.geometry, "the geometry pass ran first");
             assertNotNull(job.bands, "the fill pass ran first");
             long written = 0;
-            for (int c : job.frame.color()) {
+            for (int c : job.frame.colour()) {
                 written += c != job.settings.background() ? 1 : 0;
             }
             seen.add(job.chunkCount() + " chunks, " + written + " pixels");
@@ -43,7 +43,7 @@ class FramePassesTest {
         // A pass that draws: a white column down the middle, over the filled frame.
         FramePass column = job -> {
             for (int y = 0; y < job.frame.height(); y++) {
-                job.frame.color()[y * job.frame.width() + job.frame.width() / 2] = 0xFFFFFF;
+                job.frame.colour()[y * job.frame.width() + job.frame.width() / 2] = 0xFFFFFF;
             }
         };
         RenderSettings s = RenderSettings.defaults().withMode(RenderMode.TESSELLATED);
@@ -56,8 +56,8 @@ class FramePassesTest {
             assertEquals(1, seen.size(), "once per frame");
             assertTrue(seen.get(0).matches("[1-9]\\d* chunks, [1-9]\\d* pixels"), seen.get(0));
             for (int i = 0; i < W * H; i++) {
-                int expected = i % W == W / 2 ? 0xFFFFFF : a.color()[i];
-                assertEquals(expected, b.color()[i], "pixel " + i);
+                int expected = i % W == W / 2 ? 0xFFFFFF : a.colour()[i];
+                assertEquals(expected, b.colour()[i], "pixel " + i);
             }
             assertArrayEquals(a.depth(), b.depth(), "the later pass drew colour only");
         }
@@ -76,7 +76,7 @@ class FramePassesTest {
                 Framebuffer b = new Framebuffer(W, H);
                 b.recordUv(true);
                 FrameStats sb = more.render(scene.mesh(), scene.textureArray(), vp, s, b);
-                assertArrayEquals(a.color(), b.color(), mode.id());
+                assertArrayEquals(a.colour(), b.colour(), mode.id());
                 assertArrayEquals(a.depth(), b.depth(), mode.id());
                 assertArrayEquals(a.uv(), b.uv(), mode.id());
                 assertEquals(sa.pieces(), sb.pieces(), mode.id());

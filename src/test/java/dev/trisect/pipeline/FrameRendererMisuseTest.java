@@ -30,12 +30,12 @@ class FrameRendererMisuseTest {
             Framebuffer drawn = new Framebuffer(64, 48);
             r.render(scene.mesh(), scene.textureArray(), vp, settings, drawn);
             Framebuffer other = new Framebuffer(1000, 10);
-            int[] before = other.color().clone();
+            int[] before = other.colour().clone();
             IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                     () -> r.drawBorders(other, BorderStyle.plain(), settings.tessellation()));
             assertEquals("the framebuffer is 1000x10 but the frame last drawn was 64x48: outline the framebuffer that"
                     + " was rendered", e.getMessage());
-            assertTrue(java.util.Arrays.equals(before, other.color()), "nothing drawn into it");
+            assertTrue(java.util.Arrays.equals(before, other.colour()), "nothing drawn into it");
             assertTrue(r.drawBorders(drawn, BorderStyle.plain(), settings.tessellation()) >= 0, "the drawn one is fine");
         }
     }

@@ -313,7 +313,7 @@ class GoldenFramesTest {
 
     private static String hashes(Framebuffer fb) {
         Digest colour = new Digest();
-        for (int c : fb.color()) {
+        for (int c : fb.colour()) {
             colour.putInt(c);
         }
         Digest depth = new Digest();

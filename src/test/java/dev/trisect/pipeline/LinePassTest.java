@@ -30,7 +30,7 @@ class LinePassTest {
         try (FrameRenderer r = new FrameRenderer(threads)) {
             r.render(draws, RenderSettings.defaults(), fb);
         }
-        return fb.color();
+        return fb.colour();
     }
 
     private static int lit(int[] color) {
@@ -71,7 +71,7 @@ class LinePassTest {
             try (FrameRenderer r = new FrameRenderer(threads)) {
                 r.render(scene.draws(new Draws(), c.viewProjection(new Viewport(W, H)), 2), RenderSettings.defaults(), fb);
             }
-            images[threads - 1] = fb.color();
+            images[threads - 1] = fb.colour();
         }
         assertArrayEquals(images[0], images[1]);
         assertArrayEquals(images[0], images[2]);

@@ -62,7 +62,7 @@ class LinesAgainstOpenGlTest {
             int ours = 0;
             int theirs = 0;
             for (int i = 0; i < W * H; i++) {
-                boolean a = fb.color()[i] == MAGENTA;
+                boolean a = fb.colour()[i] == MAGENTA;
                 boolean b = reference[i];
                 both += a && b ? 1 : 0;
                 either += a || b ? 1 : 0;

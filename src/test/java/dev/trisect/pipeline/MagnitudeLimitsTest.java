@@ -85,11 +85,11 @@ class MagnitudeLimitsTest {
     void upOfAnyFiniteMagnitudeGivesTheSameFrame() {
         Mesh floor = TestScenes.floor(8);
         Camera unit = TestScenes.floorCamera();
-        int[] expected = TestScenes.render(RENDERER, floor, unit, RenderSettings.defaults(), W, H).color().clone();
+        int[] expected = TestScenes.render(RENDERER, floor, unit, RenderSettings.defaults(), W, H).colour().clone();
         for (double m : new double[] {1e300, 1e160, 1e-160, 1e-300}) {
             Camera scaled = new Camera(unit.eye(), unit.target(), unit.up().scale(m), unit.fovY(), unit.near(),
                     unit.far());
-            int[] got = TestScenes.render(RENDERER, floor, scaled, RenderSettings.defaults(), W, H).color();
+            int[] got = TestScenes.render(RENDERER, floor, scaled, RenderSettings.defaults(), W, H).colour();
             org.junit.jupiter.api.Assertions.assertArrayEquals(expected, got, "up scaled by " + m);
         }
         IllegalArgumentException zero = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,

@@ -118,7 +118,7 @@ class NoCracksTest {
             try (FrameRenderer three = new FrameRenderer(3)) {
                 many = TestScenes.render(three, mesh, cam, s, W, H);
             }
-            assertArrayEquals(one.color(), many.color(), mode.id());
+            assertArrayEquals(one.colour(), many.colour(), mode.id());
             assertArrayEquals(one.uv(), many.uv(), mode.id());
         }
     }

@@ -104,7 +104,7 @@ class ScratchTrimTest {
             assertEquals(0, r.retainedOutlinePlans());
             Framebuffer after = new Framebuffer(320, 200);
             r.render(scene.mesh(), scene.textureArray(), vp, withBorders, after);
-            org.junit.jupiter.api.Assertions.assertArrayEquals(before.color(), after.color());
+            org.junit.jupiter.api.Assertions.assertArrayEquals(before.colour(), after.colour());
         }
     }
 }

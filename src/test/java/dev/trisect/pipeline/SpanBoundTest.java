@@ -139,10 +139,10 @@ class SpanBoundTest {
         RENDERER.render(mesh, TEX, vp, spans(0.5), a);
         Framebuffer b = new Framebuffer(320, 180);
         RENDERER.render(mesh, TEX, vp, spans(0.5).withTessellation(TessellationSettings.defaults().withMaxError(8)), b);
-        assertArrayEquals(a.color(), b.color(), "max error is the error policy's, not the knots'");
+        assertArrayEquals(a.colour(), b.colour(), "max error is the error policy's, not the knots'");
         Framebuffer c = new Framebuffer(320, 180);
         RENDERER.render(mesh, TEX, vp, spans(8), c);
-        assertTrue(!java.util.Arrays.equals(a.color(), c.color()), "the knot error spaces the knots");
+        assertTrue(!java.util.Arrays.equals(a.colour(), c.colour()), "the knot error spaces the knots");
     }
 
     /**
@@ -167,7 +167,7 @@ class SpanBoundTest {
                 if (first == null) {
                     first = fb;
                 } else {
-                    assertArrayEquals(first.color(), fb.color(), threads + " threads: colour");
+                    assertArrayEquals(first.colour(), fb.colour(), threads + " threads: colour");
                     assertArrayEquals(first.uv(), fb.uv(), threads + " threads: UV output");
                 }
             }

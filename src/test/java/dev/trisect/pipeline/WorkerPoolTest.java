@@ -227,7 +227,7 @@ class WorkerPoolTest {
             assertTrue(missing.getMessage().contains("is null"), missing.getMessage());
             Framebuffer after = new Framebuffer(160, 120);
             r.render(scene.mesh(), good, vp, s, after);
-            assertArrayEquals(expected.color(), after.color(), "the frame after a failed one is right");
+            assertArrayEquals(expected.colour(), after.colour(), "the frame after a failed one is right");
         }
         r.close();
         IllegalStateException e = assertThrows(IllegalStateException.class,
@@ -272,7 +272,7 @@ class WorkerPoolTest {
                     if (expected == null) {
                         expected = fb;
                     } else {
-                        assertArrayEquals(expected.color(), fb.color(), "the pass after a failed one is whole");
+                        assertArrayEquals(expected.colour(), fb.colour(), "the pass after a failed one is whole");
                     }
                 }
             }

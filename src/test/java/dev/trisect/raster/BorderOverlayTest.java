@@ -51,7 +51,7 @@ class BorderOverlayTest {
         int yellow = 0;
         for (int y = 0; y < H; y++) {
             for (int x = 0; x < W; x++) {
-                if (fb.color()[y * W + x] == BorderOverlay.YELLOW) {
+                if (fb.colour()[y * W + x] == BorderOverlay.YELLOW) {
                     yellow++;
                     assertTrue(distanceToEdges(t, x + 0.5, y + 0.5) <= 0.75, "pixel " + x + "," + y + " is off the edges");
                 }
@@ -84,8 +84,8 @@ class BorderOverlayTest {
             t.add(x, y, 0.5, 0, 0, x + rnd.nextGaussian() * 25, y + rnd.nextGaussian() * 25, 0.4, 0, 0,
                     x + rnd.nextGaussian() * 25, y + rnd.nextGaussian() * 25, 0.6, 0, 0, k, 0);
         }
-        assertArrayEquals(draw(t, H).color(), draw(t, 7).color());
-        assertArrayEquals(draw(t, H).color(), draw(t, 1).color());
+        assertArrayEquals(draw(t, H).colour(), draw(t, 7).colour());
+        assertArrayEquals(draw(t, H).colour(), draw(t, 1).colour());
     }
 
     @Test
@@ -97,12 +97,12 @@ class BorderOverlayTest {
         Framebuffer fb = draw(t, H);
         for (int y = 22; y < 38; y++) {
             for (int x = 32; x < 48; x++) {
-                assertEquals(0xFF808080, fb.color()[y * W + x], "hidden outline shows at " + x + "," + y);
+                assertEquals(0xFF808080, fb.colour()[y * W + x], "hidden outline shows at " + x + "," + y);
             }
         }
         // The near triangle's own hypotenuse still shows.
         int yellow = 0;
-        for (int c : fb.color()) {
+        for (int c : fb.colour()) {
             yellow += c == BorderOverlay.YELLOW ? 1 : 0;
         }
         assertTrue(yellow > 40);
@@ -119,7 +119,7 @@ class BorderOverlayTest {
         Framebuffer fb = draw(t, H);
         for (int y = 0; y < H; y++) {
             for (int x = 0; x < 60; x++) {
-                assertTrue(fb.color()[y * W + x] != OverlayColours.FALLBACK, "the hidden sliver's outline at " + x
+                assertTrue(fb.colour()[y * W + x] != OverlayColours.FALLBACK, "the hidden sliver's outline at " + x
                         + "," + y);
             }
         }
@@ -127,7 +127,7 @@ class BorderOverlayTest {
         ScreenTriangles alone = new ScreenTriangles();
         alone.add(40, 5, 0.05, 0, 0, 40.03, 30, 0.2, 0, 0, 40, 55, 0.05, 0, 0, 0, 0, true);
         int magenta = 0;
-        for (int c : draw(alone, H).color()) {
+        for (int c : draw(alone, H).colour()) {
             magenta += c == OverlayColours.FALLBACK ? 1 : 0;
         }
         assertTrue(magenta > 40, "a sliver in view is outlined: " + magenta);
@@ -144,7 +144,7 @@ class BorderOverlayTest {
         int magentaRight = 0;
         for (int y = 0; y < H; y++) {
             for (int x = 0; x < W; x++) {
-                int c = fb.color()[y * W + x];
+                int c = fb.colour()[y * W + x];
                 assertTrue(c != OverlayColours.FALLBACK || x >= 40, "magenta only on the fallback piece");
                 assertTrue(c != OverlayColours.PIECE || x < 40, "yellow only on the ordinary piece");
                 yellowLeft += c == OverlayColours.PIECE ? 1 : 0;
@@ -188,11 +188,11 @@ class BorderOverlayTest {
         t.add(70, 12, 0.5, 0, 0, 68, 52, 0.5, 0, 0, 12, 50, 0.5, 0, 0, 1, 0, true);
         for (BorderStyle style : new BorderStyle[] {BorderStyle.plain(),
                 new BorderStyle(BorderStyle.Colouring.YELLOW, true), BorderStyle.fallbackOnly()}) {
-            assertArrayEquals(drawEachAlone(t, style).color(), drawTogether(t, style).color(), style.toString());
+            assertArrayEquals(drawEachAlone(t, style).colour(), drawTogether(t, style).colour(), style.toString());
         }
         // The diagonal is magenta where the later (fallback) piece draws over the earlier's yellow.
         Framebuffer fb = drawTogether(t, BorderStyle.plain());
-        assertEquals(OverlayColours.FALLBACK, fb.color()[31 * W + 40]);
+        assertEquals(OverlayColours.FALLBACK, fb.colour()[31 * W + 40]);
     }
 
     @Test
@@ -223,9 +223,9 @@ class BorderOverlayTest {
                 overlay.draw(fb, plan, band, 0, y, W, Math.min(H, y + bandRows));
             }
             for (int x = 10; x < 70; x++) {
-                assertEquals(earlier, fb.color()[10 * W + x], "shared edge at " + x + ",10, bands of " + bandRows);
+                assertEquals(earlier, fb.colour()[10 * W + x], "shared edge at " + x + ",10, bands of " + bandRows);
             }
-            for (int c : fb.color()) {
+            for (int c : fb.colour()) {
                 assertTrue(c != later, "the hidden piece's outline shows, bands of " + bandRows);
             }
         }

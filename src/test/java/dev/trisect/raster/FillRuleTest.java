@@ -267,7 +267,7 @@ class FillRuleTest {
                             Math.min(W, tx + 11), Math.min(H, ty + 7));
                 }
             }
-            assertArrayEquals(whole.color(), tiled.color());
+            assertArrayEquals(whole.colour(), tiled.colour());
             assertArrayEquals(whole.depth(), tiled.depth());
             assertArrayEquals(whole.uv(), tiled.uv());
         }
@@ -291,7 +291,7 @@ class FillRuleTest {
             Framebuffer fb = new Framebuffer(W, H);
             fb.clearRows(0, H, 0);
             new Rasterizer().fill(fb, t, all(t), 0, 2, new Texture[] {red, blue}, true, 0, 0, W, H);
-            assertEquals(0xFFFF0000, fb.color()[10 * W + 10], "nearer (red) wins, order " + order);
+            assertEquals(0xFFFF0000, fb.colour()[10 * W + 10], "nearer (red) wins, order " + order);
         }
         ScreenTriangles tie = new ScreenTriangles();
         tie.add(2, 2, 0.5, 0, 0, 60, 2, 0.5, 0, 0, 2, 40, 0.5, 0, 0, 0, 1);
@@ -299,7 +299,7 @@ class FillRuleTest {
         Framebuffer fb = new Framebuffer(W, H);
         fb.clearRows(0, H, 0);
         new Rasterizer().fill(fb, tie, all(tie), 0, 2, new Texture[] {red, blue}, true, 0, 0, W, H);
-        assertEquals(0xFF0000FF, fb.color()[10 * W + 10], "equal depth: the first drawn stays (less-than)");
+        assertEquals(0xFF0000FF, fb.colour()[10 * W + 10], "equal depth: the first drawn stays (less-than)");
     }
 
     private static Texture checker(int w, int h) {

@@ -75,8 +75,8 @@ class FilteredSpansTest {
             Framebuffer perPixel = fill(t, textures, TextureFilter.TRILINEAR, true);
             Framebuffer perPiece = fill(t, textures, TextureFilter.TRILINEAR, false);
             assertArrayEquals(perPixel.depth(), perPiece.depth());
-            int[] a = perPixel.color();
-            int[] b = perPiece.color();
+            int[] a = perPixel.colour();
+            int[] b = perPiece.colour();
             for (int i = 0; i < a.length; i++) {
                 for (int shift = 0; shift < 24; shift += 8) {
                     int d = Math.abs((a[i] >>> shift & 0xFF) - (b[i] >>> shift & 0xFF));
@@ -105,8 +105,8 @@ class FilteredSpansTest {
             ScreenTriangles plain = new ScreenTriangles();
             plain.add(c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], c[8], c[9], c[10], c[11], c[12], c[13], c[14],
                     k, 0);
-            assertArrayEquals(fill(plain, textures, TextureFilter.TRILINEAR, true).color(),
-                    fill(flagged, textures, TextureFilter.TRILINEAR, false).color(), "triangle " + k);
+            assertArrayEquals(fill(plain, textures, TextureFilter.TRILINEAR, true).colour(),
+                    fill(flagged, textures, TextureFilter.TRILINEAR, false).colour(), "triangle " + k);
         }
     }
 
@@ -141,7 +141,7 @@ class FilteredSpansTest {
                 long py = (long) Math.floor(tt * Sampler.ONE) - Sampler.ONE / 2;
                 int want = TexelLanes.argb(LaneSampler.bilinear(lanes.lanes(), 0, lanes.stride(0), tex.width(),
                         tex.height(), px, py));
-                int got = fb.color()[i];
+                int got = fb.colour()[i];
                 assertEquals(Integer.toHexString(want), Integer.toHexString(got), "triangle " + k + " pixel " + i);
                 int exact = Sampler.bilinear(tex.argb(), tex.width(), tex.height(), Sampler.position(s),
                         Sampler.position(tt));
@@ -164,8 +164,8 @@ class FilteredSpansTest {
         t.add(0, 0, 1, 0, 0, 90, 0, 1, 657, 0, 0, 60, 1, 0, -438, 0, 0);
         Texture[] textures = {checker(64, 64)};
         for (boolean perspective : new boolean[] {true, false}) {
-            int[] tri = fill(t, textures, TextureFilter.TRILINEAR, perspective).color();
-            int[] bi = fill(t, textures, TextureFilter.BILINEAR, perspective).color();
+            int[] tri = fill(t, textures, TextureFilter.TRILINEAR, perspective).colour();
+            int[] bi = fill(t, textures, TextureFilter.BILINEAR, perspective).colour();
             int greyTri = 0;
             int greyBi = 0;
             int covered = 0;
@@ -306,7 +306,7 @@ class FilteredSpansTest {
         for (int py = r.setup().rowStart, j = 0; py < r.setup().rowEnd; py++, j += 2) {
             for (int px = r.spans()[j]; px < r.spans()[j + 1]; px++) {
                 assertEquals(Integer.toHexString(expectedTrilinear(r, mips, px, py)),
-                        Integer.toHexString(fb.color()[py * W + px]), what + " pixel " + px + "," + py);
+                        Integer.toHexString(fb.colour()[py * W + px]), what + " pixel " + px + "," + py);
                 double q = r.setup().qPlane.base + r.setup().qPlane.dy * py + r.setup().qPlane.dx * px;
                 double exact = Lod.lambdaPerspective((r.setup().sPlane.base + r.setup().sPlane.dy * py + r.setup().sPlane.dx * px) / q,
                         (r.setup().tPlane.base + r.setup().tPlane.dy * py + r.setup().tPlane.dx * px) / q, 1 / q, r.setup().sPlane.dx, r.setup().sPlane.dy,
@@ -414,7 +414,7 @@ class FilteredSpansTest {
                                 Math.min(W, tx + 11), Math.min(H, ty + 7));
                     }
                 }
-                assertArrayEquals(whole.color(), tiled.color(), filter + " " + perspective);
+                assertArrayEquals(whole.colour(), tiled.colour(), filter + " " + perspective);
                 assertArrayEquals(whole.uv(), tiled.uv());
                 // The UV output does not depend on the filter.
                 assertArrayEquals(fill(t, textures, TextureFilter.NEAREST, perspective).uv(), whole.uv());

@@ -237,7 +237,7 @@ class KnotSpansTest {
                     long s8 = Math.round(fb.uv()[3 * i] * FIXED) >> 24;
                     long t8 = Math.round(fb.uv()[3 * i + 1] * FIXED) >> 24;
                     assertEquals(LaneSampler.trilinearPowerOfTwo(lanes.lanes(), lanes.levels(), selection, s8, t8),
-                            fb.color()[i], "triangle " + k + " pixel " + x + "," + y);
+                            fb.colour()[i], "triangle " + k + " pixel " + x + "," + y);
                     pixels++;
                 }
             }
@@ -266,7 +266,7 @@ class KnotSpansTest {
                             Math.min(H, ty + 7));
                 }
             }
-            assertArrayEquals(whole.color(), tiled.color(), filter.id());
+            assertArrayEquals(whole.colour(), tiled.colour(), filter.id());
             assertArrayEquals(whole.uv(), tiled.uv(), filter.id());
             assertArrayEquals(whole.depth(), tiled.depth(), filter.id());
             // The UV output does not depend on the filter.

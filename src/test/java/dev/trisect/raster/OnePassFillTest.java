@@ -139,7 +139,7 @@ class OnePassFillTest {
                         continue;
                     }
                     String at = what + ", pixel (" + x + ", " + y + "), piece " + p;
-                    assertEquals(expected.color()[i], onePass.color()[i], at + ": colour");
+                    assertEquals(expected.colour()[i], onePass.colour()[i], at + ": colour");
                     for (int k = 0; k < 3; k++) {
                         assertEquals(expected.uv()[3 * i + k], onePass.uv()[3 * i + k], at + ": uv " + k);
                     }

@@ -48,7 +48,7 @@ class OutlineLinksTest {
                 OutlinePlan every = plan(unmatched, style);
                 sharedWalks += checkWalks(linked, plan, every);
                 assertSamePlan(oracle, plan, "trial " + trial + " " + style);
-                assertArrayEquals(draw(byCorners, oracle).color(), draw(linked, plan).color(), "trial " + trial);
+                assertArrayEquals(draw(byCorners, oracle).colour(), draw(linked, plan).colour(), "trial " + trial);
             }
         }
         assertTrue(sharedWalks > 2000, "the trials share edges: " + sharedWalks);

@@ -57,7 +57,7 @@ class SceneRendererTest {
         int y1 = -1;
         for (int y = 0; y < f.height(); y++) {
             for (int x = 0; x < f.width(); x++) {
-                if ((f.color()[y * f.width() + x] & 0xFFFFFF) != 0) {
+                if ((f.colour()[y * f.width() + x] & 0xFFFFFF) != 0) {
                     x0 = Math.min(x0, x);
                     y0 = Math.min(y0, y);
                     x1 = Math.max(x1, x);
@@ -119,7 +119,7 @@ class SceneRendererTest {
             r.render(scene, demo.camera(), s, a);
             fr.render(demo.mesh(), demo.textureArray(), demo.camera().viewProjection(new Viewport(160, 90)), s, b);
         }
-        assertArrayEquals(b.color(), a.color());
+        assertArrayEquals(b.colour(), a.colour());
     }
 
     @Test
@@ -145,7 +145,7 @@ class SceneRendererTest {
             assertSame(tex, p.texture());
             assertEquals(2, p.texelX());
             assertEquals(2, p.texelY());
-            assertEquals(tex.argb()[p.texelY() * 4 + p.texelX()], f.color()[100 * 200 + 120]);
+            assertEquals(tex.argb()[p.texelY() * 4 + p.texelX()], f.colour()[100 * 200 + 120]);
             // Which of the square's two triangles holds the point: above or below its diagonal.
             assertEquals(p.u() > p.v() ? 0 : 1, p.triangle());
             assertSame(left, r.pick(60, 100).orElseThrow().object());

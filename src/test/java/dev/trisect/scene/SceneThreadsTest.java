@@ -26,7 +26,7 @@ class SceneThreadsTest {
     private static int left(Framebuffer f, int rgb) {
         for (int x = 0; x < f.width(); x++) {
             for (int y = 0; y < f.height(); y++) {
-                if ((f.color()[y * f.width() + x] & 0xFFFFFF) == rgb) {
+                if ((f.colour()[y * f.width() + x] & 0xFFFFFF) == rgb) {
                     return x;
                 }
             }

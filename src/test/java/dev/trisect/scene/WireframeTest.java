@@ -28,7 +28,7 @@ class WireframeTest {
         try (SceneRenderer r = new SceneRenderer(1)) {
             stats[0] = r.render(scene, camera, RenderSettings.defaults(), fb);
         }
-        return fb.color();
+        return fb.colour();
     }
 
     private static int count(int[] color, int argb) {

@@ -176,7 +176,7 @@ class DemoWindowGuiTest {
                 && state().settings() == wanted);
         long serial = onEdt(() -> front().serial) + 1;
         waitFor("one more frame", () -> onEdt(() -> front().serial >= serial));
-        return onEdt(() -> front().frame.color().clone());
+        return onEdt(() -> front().frame.colour().clone());
     }
 
     private static int yellow(int[] pixels) {

@@ -129,11 +129,11 @@ class TrisectViewGuiTest {
         edt(() -> view.action(ViewAction.SHOW_DIFFERENCE).actionPerformed(null));
         waitFor("a heat map on screen", () -> onEdt(() -> c.front() != null
                 && c.front().view == dev.trisect.view.internal.ViewKind.DIFFERENCE));
-        int[] legendless = onEdt(() -> c.front().frame.color().clone());
+        int[] legendless = onEdt(() -> c.front().frame.colour().clone());
         BufferedImage saved = onEdt(() -> view.frameImage());
         BufferedImage same = onEdt(() -> {
             // The frame did not change between the two reads (the view holds the frame on screen).
-            return c.front().frame.color()[0] == legendless[0] ? view.frameImage() : null;
+            return c.front().frame.colour()[0] == legendless[0] ? view.frameImage() : null;
         });
         assertNotNull(same);
         int differ = 0;

@@ -49,7 +49,7 @@ public final class FrameSlot {
 
     public FrameSlot(int width, int height) {
         frame = new Framebuffer(width, height);
-        int[] pixels = frame.color();
+        int[] pixels = frame.colour();
         // An INT_RGB image over the framebuffer's own array: Java2D blits it on its fast path.
         DirectColorModel rgb = new DirectColorModel(24, 0xFF0000, 0x00FF00, 0x0000FF);
         WritableRaster raster = Raster.createPackedRaster(new DataBufferInt(pixels, pixels.length), width, height,

@@ -45,7 +45,7 @@ final class HoverHighlight {
         }
         int w = frame.width();
         int hgt = frame.height();
-        int[] color = frame.color();
+        int[] color = frame.colour();
         if (marks.length < w * hgt) {
             marks = new byte[w * hgt];
         }

@@ -203,7 +203,7 @@ public final class InspectorPainter {
      */
     private static void paintMagnifier(Graphics2D g, FrameSlot f, PixelInspector.Inspection in, int mx, int my) {
         int cell = MAGNIFIER_SIZE / MAGNIFIED;
-        int[] argb = f.frame.color();
+        int[] argb = f.frame.colour();
         for (int j = 0; j < MAGNIFIED; j++) {
             for (int i = 0; i < MAGNIFIED; i++) {
                 int x = in.x() + i - MAGNIFIED / 2;

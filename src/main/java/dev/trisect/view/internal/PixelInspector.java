@@ -82,10 +82,10 @@ public final class PixelInspector {
         int i = y * frame.width() + x;
         double[] uv = frame.uv();
         int id = (int) uv[3 * i + 2] - 1;
-        int argb = frame.color()[i];
+        int argb = frame.colour()[i];
         PieceInfo outline = borders ? record.fallbackOutlineAt(x, y, frame.depth()[i]) : null;
         DrawnFrame.Owner outlineOwner = outline == null ? null : drawn.ownerOf(outline.triangle());
-        int refArgb = reference == null ? 0 : reference.color()[i];
+        int refArgb = reference == null ? 0 : reference.colour()[i];
         if (id < 0) {
             return new Inspection(x, y, argb, -1, null, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN,
                     Double.NaN, null, Double.NaN, 0, 0, 0, null, outline, outlineOwner, refArgb, null);

@@ -334,7 +334,7 @@ public final class RenderLoop implements Runnable {
             long t0 = System.nanoTime();
             // The exact displacement: the loop knows the geometry (maps are built per visible triangle).
             TexelToScreen exact = new TexelToScreen(draws, viewport);
-            Comparison c = ImageComparison.compare(fw, fh, fb.color(), fb.uv(), reference.color(), reference.uv(),
+            Comparison c = ImageComparison.compare(fw, fh, fb.colour(), fb.uv(), reference.colour(), reference.uv(),
                     exact, displacement);
             compareMs = (System.nanoTime() - t0) / 1e6;
             lastCompare = now;
@@ -372,12 +372,12 @@ public final class RenderLoop implements Runnable {
             back.overlayNanos = 0;
         }
         if (settings.view() == ViewKind.DIFFERENCE) {
-            HeatMap.render(displacement, fb.uv(), reference.uv(), fw, fh, settings.heatScale(), fb.color());
+            HeatMap.render(displacement, fb.uv(), reference.uv(), fw, fh, settings.heatScale(), fb.colour());
         } else if (settings.view() == ViewKind.SPLIT) {
             int divider = (int) Math.round(settings.splitFraction() * fw);
             if (divider < fw) {
-                int[] dst = fb.color();
-                int[] src = reference.color();
+                int[] dst = fb.colour();
+                int[] src = reference.colour();
                 for (int y = 0; y < fh; y++) {
                     System.arraycopy(src, y * fw + divider, dst, y * fw + divider, fw - divider);
                 }

@@ -23,7 +23,7 @@ class FramePainterTest {
     /** Pixels of the bottom-left 200 x 100 (where the outline legend goes) that {@code test} accepts. */
     private static int count(RenderSettings render, java.util.function.IntPredicate test) {
         FrameSlot f = new FrameSlot(400, 300);
-        Arrays.fill(f.frame.color(), 0xFF808080);
+        Arrays.fill(f.frame.colour(), 0xFF808080);
         f.render = render;
         BufferedImage v = new BufferedImage(400, 300, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = v.createGraphics();

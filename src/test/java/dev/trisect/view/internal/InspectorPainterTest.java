@@ -15,7 +15,7 @@ import org.junit.jupiter.api.Test;
 class InspectorPainterTest {
     private static BufferedImage painted(int w, int h, int x, int y) {
         FrameSlot f = new FrameSlot(w, h);
-        Arrays.fill(f.frame.color(), 0xFF808080);
+        Arrays.fill(f.frame.colour(), 0xFF808080);
         // A full readout: a triangle, its piece, both paths' texel coordinates, the displacement, the mip level.
         PieceInfo piece = new PieceInfo(8, 3, 2, false, new double[] {10, 10, 60, 10, 35, 40}, new double[9]);
         f.inspection = new PixelInspector.Inspection(x, y, 0xFF808080, 3, null, 2.5, 10.25, 3.5, 10.25, 3.5, 0.125,

@@ -88,7 +88,7 @@ class PixelInspectorTest {
             r.render(floor.mesh(), floor.textureArray(), vp, v.render().withMode(RenderMode.PERSPECTIVE), ref);
         }
         assertEquals(ref.uv()[3 * i], in.refS(), 0.0);
-        assertEquals(ref.color()[i], in.refArgb(), "the per-pixel path's colour beside this path's");
+        assertEquals(ref.colour()[i], in.refArgb(), "the per-pixel path's colour beside this path's");
         double[] c = in.triangle2d();
         assertTrue(c != null && c.length >= 6, "the input triangle (its part before the near plane) on screen");
         boolean covers = false;

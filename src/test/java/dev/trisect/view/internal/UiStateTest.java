@@ -157,7 +157,7 @@ class UiStateTest {
     @Test
     void frameSlotImageShowsTheFramebufferWithoutCopying() {
         FrameSlot s = new FrameSlot(3, 2);
-        s.frame.color()[4] = 0xFF123456;
+        s.frame.colour()[4] = 0xFF123456;
         assertEquals(0xFF123456, s.image.getRGB(1, 1));
         assertEquals(java.awt.image.BufferedImage.TYPE_INT_RGB, s.image.getType(), "Java2D's fast INT_RGB path");
     }

@@ -67,7 +67,7 @@ class ViewMatchesCliTest {
                 args.toArray(String[]::new)), err.toString());
         BufferedImage cli = ImageIO.read(Files.newInputStream(out));
         assertEquals(f.width(), cli.getWidth());
-        int[] view = f.frame.color();
+        int[] view = f.frame.colour();
         int differ = 0;
         for (int y = 0; y < f.height(); y++) {
             for (int x = 0; x < f.width(); x++) {
@@ -92,11 +92,11 @@ class ViewMatchesCliTest {
         SceneAsset scene = AssetScenes.assetOf(state.scene()).orElseThrow();
         FrameSlot plain = viewFrame(state, ViewSettings.defaults());
         assertTrue(plain.stats.piecesFallback() > 0, "the demo at start has slivers filled per pixel");
-        assertEquals(0, count(plain.frame.color(), OverlayColours.FALLBACK), "no fallback marks without B");
+        assertEquals(0, count(plain.frame.colour(), OverlayColours.FALLBACK), "no fallback marks without B");
         assertEquals(0, differingPixels(scene, plain));
         RenderSettings borders = ViewSettings.defaults().render().withBorders(true).withBorderStyle(BorderStyle.plain());
         FrameSlot outlined = viewFrame(state, ViewSettings.defaults().withRender(borders));
-        assertTrue(count(outlined.frame.color(), OverlayColours.FALLBACK) > 0, "with B the fallback marks show");
+        assertTrue(count(outlined.frame.colour(), OverlayColours.FALLBACK) > 0, "with B the fallback marks show");
         assertEquals(0, differingPixels(scene, outlined));
         FrameSlot faded = viewFrame(state, ViewSettings.defaults().withRender(
                 borders.withBorderStyle(new BorderStyle(BorderStyle.Colouring.BOUND, true))));
@@ -112,10 +112,10 @@ class ViewMatchesCliTest {
                 .tessellation().withPolicy(SplitPolicy.ERROR).withMaxError(0.05).withMaxDepth(2));
         FrameSlot off = viewFrame(state, ViewSettings.defaults().withRender(capped));
         assertTrue(off.stats.capsReached() > 0 && off.stats.piecesFallback() > 0);
-        assertEquals(0, count(off.frame.color(), OverlayColours.FALLBACK), "no outline without B");
+        assertEquals(0, count(off.frame.colour(), OverlayColours.FALLBACK), "no outline without B");
         assertEquals(0, differingPixels(scene, off));
         FrameSlot on = viewFrame(state, ViewSettings.defaults().withRender(capped.withBorders(true)));
-        assertTrue(count(on.frame.color(), OverlayColours.FALLBACK) > 100, "the capped pieces in magenta with B");
+        assertTrue(count(on.frame.colour(), OverlayColours.FALLBACK) > 100, "the capped pieces in magenta with B");
         assertEquals(0, differingPixels(scene, on));
     }
 }
