@@ -5,7 +5,9 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
+import java.util.TreeSet;
 
 /**
  * Expands the pixel loops' templates into Java at build time (as OpenJDK's X-Buffer.java.template):
@@ -34,7 +36,11 @@ public final class LoopGenerator {
     /** The colour sources, in the order of their ids in {@code ColourSources}: one line registers one. */
     static final List<String> SOURCES = List.of(
             "NearestPot",
-            "NearestAny");
+            "NearestAny",
+            "BilinearPot",
+            "BilinearAny",
+            "TrilinearPot",
+            "TrilinearAny");
     /** The templates, each giving one class of loops. */
     static final List<String> TEMPLATES = List.of("PerPixelNearest", "FixedNearest", "KnotNearest", "TreeNearest");
     /** Where the raster package's templates are, below the templates' root; likewise its output. */
@@ -68,7 +74,7 @@ public final class LoopGenerator {
         Path dir = root.resolve(PACKAGE);
         List<Source> sources = new ArrayList<>();
         for (String name : SOURCES) {
-            sources.add(Source.read(name, dir.resolve("sources").resolve(name + ".source")));
+            sources.add(Source.read(name, dir.resolve("sources")));
         }
         Map<Path, String> out = new LinkedHashMap<>();
         out.put(PACKAGE.resolve("ColourSources.java"), colourSources(sources));
@@ -110,7 +116,7 @@ public final class LoopGenerator {
         String footer = text.substring(text.indexOf("//#footer") + "//#footer".length() + 1);
         boolean divides = dims.contains("divide");
         StringBuilder b = new StringBuilder(banner(name + ".java.template"));
-        b.append(header);
+        b.append(withImports(header, sources));
         b.append(dispatcher(params, divides, sources));
         for (Source s : sources) {
             for (boolean uv : new boolean[] {true, false}) {
@@ -118,12 +124,28 @@ public final class LoopGenerator {
                     b.append('\n');
                     b.append("    /** ").append(s.name).append(divides ? divide ? ", dividing by 1/w" : ", affine" : "")
                             .append(uv ? ", with" : ", without").append(" the UV output; pixels written. */\n");
-                    b.append(method(method, s, uv, divide, methodName(s, uv, divides, divide)));
+                    b.append(method(method, name, s, uv, divide, methodName(s, uv, divides, divide)));
                 }
             }
         }
         b.append(footer);
         return b.toString();
+    }
+
+    /** The header with the sources' imports after its package line. */
+    private static String withImports(String header, List<Source> sources) {
+        TreeSet<String> imports = new TreeSet<>();
+        for (Source s : sources) {
+            imports.addAll(s.imports());
+        }
+        int end = header.indexOf('\n', header.indexOf("package ")) + 1;
+        StringBuilder b = new StringBuilder(header.substring(0, end));
+        for (String i : imports) {
+            if (!header.contains(i)) {
+                b.append(b.length() == end ? "\n" : "").append(i).append('\n');
+            }
+        }
+        return b.append(header.substring(end)).toString();
     }
 
     private static String dispatcher(String params, boolean divides, List<Source> sources) {
@@ -162,7 +184,8 @@ public final class LoopGenerator {
         return n + (divides ? divide ? "Divide" : "Affine" : "") + (uv ? "Uv" : "");
     }
 
-    private static String method(String template, Source s, boolean uv, boolean divide, String name) {
+    private static String method(String template, String templateName, Source s, boolean uv, boolean divide,
+                                 String name) {
         StringBuilder b = new StringBuilder();
         for (String l : template.split("\n", -1)) {
             if (l.isEmpty() && b.length() > 0 && template.endsWith(l)) {
@@ -173,18 +196,32 @@ public final class LoopGenerator {
             if (kept == null) {
                 continue;
             }
-            if (kept.trim().equals("$SETUP$")) {
+            String hook = kept.trim();
+            if (hook.matches("\\$[A-Z]+\\$")) {
+                // A hook line: the source's section of that name, indented as the line, or nothing.
                 String indent = kept.substring(0, kept.indexOf('$'));
-                for (String setup : s.setup) {
-                    b.append(indent).append(setup).append('\n');
+                for (String line : s.lines(hook.substring(1, hook.length() - 1).toLowerCase(Locale.ROOT), templateName,
+                        uv, divide)) {
+                    b.append(indent).append(substitute(line, s, uv, name)).append('\n');
                 }
                 continue;
             }
-            b.append(kept.replace("$NAME$", name).replace("$FIXED$", s.fixed).replace("$DOUBLE$", s.colourOfDoubles)
-                    .replace("$SOURCE_ID$", "ColourSources." + s.constant()).replace("$UV$", Boolean.toString(uv)))
-                    .append('\n');
+            for (String e : List.of("fixed", "double")) {
+                String placeholder = "$" + e.toUpperCase(Locale.ROOT) + "$";
+                if (kept.contains(placeholder)) {
+                    kept = kept.replace(placeholder, s.expression(e, templateName, uv, divide));
+                }
+            }
+            List<String> step = s.lines("step", templateName, uv, divide);
+            kept = kept.replace("$STEP$", step.isEmpty() ? "" : ", " + String.join(" ", step));
+            b.append(substitute(kept, s, uv, name)).append('\n');
         }
         return b.toString();
+    }
+
+    private static String substitute(String line, Source s, boolean uv, String name) {
+        return line.replace("$NAME$", name).replace("$SOURCE_ID$", "ColourSources." + s.constant())
+                .replace("$UV$", Boolean.toString(uv));
     }
 
     /** The line without its marker if it is kept for {@code value} of dimension {@code dim}; null if dropped. */
@@ -217,13 +254,37 @@ public final class LoopGenerator {
         return text.substring(a + prefix.length(), text.indexOf('\n', a)).trim();
     }
 
-    /** A colour source read from its file. */
-    private record Source(String name, String description, List<String> setup, String fixed, String colourOfDoubles) {
-        static Source read(String name, Path file) throws IOException {
+    /**
+     * A colour source read from its file: its sections by name ({@code "setup"}, or {@code "setup KnotNearest"}
+     * for one template only), each a list of lines.
+     */
+    private record Source(String name, String description, Map<String, List<String>> sections) {
+        /**
+         * Source {@code name} from {@code NAME.source} in {@code dir}, or, where there is none and the name
+         * ends in {@code Pot} or {@code Any}, from its family's file (the name without that ending) with
+         * the lines marked {@code //#pot} kept only for Pot and those marked {@code //#!pot} only for Any.
+         */
+        static Source read(String name, Path dir) throws IOException {
+            Path file = dir.resolve(name + ".source");
+            Boolean pot = null;
+            if (!Files.isRegularFile(file) && name.matches(".*(Pot|Any)")) {
+                pot = name.endsWith("Pot");
+                file = dir.resolve(name.substring(0, name.length() - 3) + ".source");
+            }
             StringBuilder description = new StringBuilder();
             Map<String, List<String>> sections = new LinkedHashMap<>();
             List<String> current = null;
+            Boolean block = null;
             for (String l : Files.readAllLines(file, StandardCharsets.UTF_8)) {
+                if (pot != null && l.matches("//#!?pot|//#end")) {
+                    // A block of lines for one variant: from //#pot or //#!pot to //#end.
+                    block = l.equals("//#end") ? null : l.equals("//#pot");
+                    continue;
+                }
+                l = pot == null ? l : block != null ? block == pot ? l : null : keep(l, "pot", pot);
+                if (l == null) {
+                    continue;
+                }
                 if (l.startsWith("//#")) {
                     current = new ArrayList<>();
                     sections.put(l.substring(3).trim(), current);
@@ -233,18 +294,69 @@ public final class LoopGenerator {
                     current.add(l);
                 }
             }
-            for (String s : List.of("setup", "fixed", "double")) {
+            sections.values().removeIf(List::isEmpty);
+            for (String s : List.of("fixed", "double")) {
                 if (!sections.containsKey(s)) {
                     throw new IllegalArgumentException(file + ": no //#" + s + " section");
                 }
             }
-            return new Source(name, description.toString(), sections.get("setup"),
-                    String.join(" ", sections.get("fixed")), String.join(" ", sections.get("double")));
+            return new Source(name, description.toString(), sections);
+        }
+
+        /**
+         * The lines of section {@code section} for template {@code template} (its own section if it has
+         * one, else the common one, else none), kept for the UV and divide settings as template lines are.
+         */
+        List<String> lines(String section, String template, boolean uv, boolean divide) {
+            List<String> lines = sections.getOrDefault(section + " " + template, sections.get(section));
+            List<String> kept = new ArrayList<>();
+            for (String l : lines == null ? List.<String>of() : lines) {
+                String k = keep(l, "uv", uv);
+                k = k == null ? null : keep(k, "divide", divide);
+                if (k != null && k.trim().matches("\\$[A-Z]+\\$")) {
+                    // Another section of the source, included here with this line's indentation.
+                    String indent = k.substring(0, k.indexOf('$'));
+                    for (String included : lines(k.trim().substring(1, k.trim().length() - 1).toLowerCase(Locale.ROOT),
+                            template, uv, divide)) {
+                        kept.add(indent + included);
+                    }
+                } else if (k != null) {
+                    kept.add(inline(k, template, uv, divide));
+                }
+            }
+            return kept;
+        }
+
+        /** The line with each {@code $NAME$} of a section of the source replaced by that section as one expression. */
+        private String inline(String line, String template, boolean uv, boolean divide) {
+            java.util.regex.Matcher m = java.util.regex.Pattern.compile("\\$([A-Z]+)\\$").matcher(line);
+            StringBuilder b = new StringBuilder();
+            while (m.find()) {
+                String section = m.group(1).toLowerCase(Locale.ROOT);
+                String text = sections.containsKey(section) ? expression(section, template, uv, divide) : m.group();
+                m.appendReplacement(b, java.util.regex.Matcher.quoteReplacement(text));
+            }
+            return m.appendTail(b).toString();
+        }
+
+        /** Section {@code section} as one expression: its lines joined. */
+        String expression(String section, String template, boolean uv, boolean divide) {
+            List<String> lines = lines(section, template, uv, divide);
+            StringBuilder b = new StringBuilder();
+            for (String l : lines) {
+                b.append(b.length() == 0 ? "" : " ").append(l.trim());
+            }
+            return b.toString();
+        }
+
+        /** The imports its sections need ({@code //#imports}). */
+        List<String> imports() {
+            return sections.getOrDefault("imports", List.of());
         }
 
         /** NearestPot gives NEAREST_POT. */
         String constant() {
-            return name.replaceAll("([a-z0-9])([A-Z])", "$1_$2").toUpperCase(java.util.Locale.ROOT);
+            return name.replaceAll("([a-z0-9])([A-Z])", "$1_$2").toUpperCase(Locale.ROOT);
         }
     }
 }

@@ -71,6 +71,20 @@ final class LodRuns {
     }
 
     /**
+     * OpenGL's lambda at a pixel of a perspective map, in 1/256 level ({@link Lod#fixedOfSquared} of
+     * each axis, the larger), or {@link Lod#NO_LAMBDA}: the span path's level of detail at a knot.
+     *
+     * @param s the pixel's exact texel coordinate s = S / Q, likewise t
+     * @param r 1 / Q there
+     */
+    static int lambdaAt(double s, double t, double r, double sDx, double sDy, double tDx, double tDy, double qDx,
+                        double qDy, int maxLevel) {
+        int lx = Lod.fixedOfSquared(Lod.rhoSquared(s, t, r, sDx, tDx, qDx), maxLevel);
+        int ly = Lod.fixedOfSquared(Lod.rhoSquared(s, t, r, sDy, tDy, qDy), maxLevel);
+        return lx == Lod.NO_LAMBDA || ly == Lod.NO_LAMBDA ? Lod.NO_LAMBDA : Math.max(lx, ly);
+    }
+
+    /**
      * Whether lambda along x and along y are close enough to linear over the run of columns
      * [x0, x0 + LOD_RUN] of a row (planes at qRow, sRow, tRow at column 0) to be interpolated within
      * 3/256 level: {@code E_q + E_n <= }{@link #MAX_CHORD_ERROR} and {@code E_n <= }

@@ -29,7 +29,6 @@ public final class Rasterizer {
     private final TriangleSetup setup = new TriangleSetup();
     private final SpanSolver solver = new SpanSolver();
     private final TreeFill trees = new TreeFill();
-    private final TreeFilteredFill filteredTrees = new TreeFilteredFill();
     /** How {@link #fill} samples textures. */
     private TextureFilter filter = TextureFilter.NEAREST;
     /** The span path's largest displacement between knots, pixels; 0: perspective fills divide per pixel. */
@@ -99,25 +98,29 @@ public final class Rasterizer {
         Texture texture = textures[triangles.materials()[tri]];
         int uvId = triangles.ids()[tri] + 1;
         boolean uv = frame.uv() != null;
+        int source = source(texture);
         if (knots) {
-            return filter == TextureFilter.NEAREST
-                    ? KnotNearest.fill(nearestSource(texture), uv, t, spans, frame, texture, uvId, spanError, x0, x1)
-                    : KnotFilteredSpans.fill(t, spans, frame, texture.mipChain(), uvId, spanError,
-                    filter == TextureFilter.TRILINEAR, x0, x1);
-        } else if (filter != TextureFilter.NEAREST) {
-            return FilteredSpans.fill(t, spans, frame, texture.mipChain(), uvId, divide, filter);
+            return KnotNearest.fill(source, uv, t, spans, frame, texture, uvId, spanError, x0, x1);
         } else if (!divide && t.fixedPointSafe) {
-            return FixedNearest.fill(nearestSource(texture), uv, t, spans, frame, texture, uvId);
+            return FixedNearest.fill(source, uv, t, spans, frame, texture, uvId);
         } else {
-            return PerPixelNearest.fill(nearestSource(texture), uv, divide, t, spans, frame, texture, uvId);
+            return PerPixelNearest.fill(source, uv, divide, t, spans, frame, texture, uvId);
         }
     }
 
-    /** The colour source of nearest sampling from {@code texture}: masks wrap a power-of-two side. */
-    private static int nearestSource(Texture texture) {
+    /** The colour source of the filter sampling {@code texture}: masks wrap a power-of-two side. */
+    private int source(Texture texture) {
         int tw = texture.width();
         int th = texture.height();
-        return (tw & (tw - 1)) == 0 && (th & (th - 1)) == 0 ? ColourSources.NEAREST_POT : ColourSources.NEAREST_ANY;
+        boolean pot = (tw & (tw - 1)) == 0 && (th & (th - 1)) == 0;
+        switch (filter) {
+            case BILINEAR:
+                return pot ? ColourSources.BILINEAR_POT : ColourSources.BILINEAR_ANY;
+            case TRILINEAR:
+                return pot ? ColourSources.TRILINEAR_POT : ColourSources.TRILINEAR_ANY;
+            default:
+                return pot ? ColourSources.NEAREST_POT : ColourSources.NEAREST_ANY;
+        }
     }
 
     /**
@@ -154,13 +157,8 @@ public final class Rasterizer {
             int[] spans = solver.spans();
             Texture texture = textures[materials[g]];
             int uvId = ids[g] + 1;
-            if (filter == TextureFilter.NEAREST) {
-                written += TreeNearest.fill(nearestSource(texture), frame.uv() != null, trees, t, spans, groups,
-                        roots[g], groups.nodeCount(g), frame, texture, uvId);
-            } else {
-                written += filteredTrees.fill(trees, t, spans, groups, roots[g], groups.nodeCount(g), frame,
-                        texture.mipChain(), uvId, filter == TextureFilter.TRILINEAR);
-            }
+            written += TreeNearest.fill(source(texture), frame.uv() != null, trees, t, spans, groups, roots[g],
+                    groups.nodeCount(g), frame, texture, uvId);
         }
         return written;
     }

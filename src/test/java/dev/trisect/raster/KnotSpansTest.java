@@ -222,7 +222,7 @@ class KnotSpansTest {
                 for (int n = 0; n < lambdas.length; n++) {
                     int x = knots.columns()[n];
                     double rq = 1 / (qRow + qDx * x);
-                    lambdas[n] = KnotFilteredSpans.lambdaAt((sRow + sDx * x) * rq, (tRow + tDx * x) * rq, rq, sDx, sDy,
+                    lambdas[n] = LodRuns.lambdaAt((sRow + sDx * x) * rq, (tRow + tDx * x) * rq, rq, sDx, sDy,
                             tDx, tDy, qDx, qDy, maxLevel);
                 }
                 for (int x = sp[j]; x < sp[j + 1]; x++) {

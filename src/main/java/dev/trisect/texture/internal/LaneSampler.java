@@ -131,6 +131,24 @@ public final class LaneSampler {
     }
 
     /**
+     * The bilinear sample of level d of any chain at level-0 texel coordinates (s, t): the position on
+     * the level is {@link Sampler#position} of the coordinate scaled to it, wrapped with
+     * {@code floorMod} ({@link #bilinear}).
+     *
+     * @param levels the chain's {@link TexelLanes#levels}
+     * @param d      level, 0..levelCount - 1
+     * @param s      s = u * width of level 0
+     * @param t      t = v * height of level 0, from the bottom
+     * @return the sample, in lanes
+     */
+    public static long level(long[] lanes, int[] levels, MipChain chain, int d, double s, double t) {
+        int o = d * TexelLanes.LEVEL_INTS;
+        return bilinear(lanes, levels[o + TexelLanes.OFFSET], levels[o + TexelLanes.STRIDE],
+                levels[o + TexelLanes.WIDTH], levels[o + TexelLanes.HEIGHT],
+                Sampler.position(s * chain.scaleS(d)), Sampler.position(t * chain.scaleT(d)));
+    }
+
+    /**
      * The trilinear (or, with weight 0, bilinear) pixel of a power-of-two chain for a level selection
      * ({@link Lod#select}: {@code level << 9 | weight}) at level-0 coordinates in 24.8 fixed point.
      *
