@@ -22,15 +22,25 @@ import java.util.TreeSet;
  * {@code //#method} (expanded once per combination) and {@code //#footer}, and the lines
  * {@code //#params} (the loop's parameters) and {@code //#dimensions} (of {@code source}, {@code uv},
  * {@code divide}). In the method, a line ending in {@code //#uv} is kept only with the UV output,
- * {@code //#!uv} only without it, likewise {@code //#divide} and {@code //#!divide}; {@code $SETUP$}
- * (a line of its own) becomes the source's per-triangle set-up, {@code $FIXED$} its colour from
- * 32.32 fixed-point texel coordinates {@code s}, {@code t}, {@code $DOUBLE$} from doubles,
- * {@code $SOURCE_ID$} and {@code $UV$} the combination's source and UV setting, {@code $NAME$} the
- * loop's name.
+ * {@code //#!uv} only without it, likewise {@code //#divide} and {@code //#!divide}; {@code $FIXED$}
+ * becomes the source's colour from 32.32 fixed-point texel coordinates {@code s}, {@code t},
+ * {@code $DOUBLE$} from doubles, {@code $STEP$} (in a for header) the source's further steps per
+ * column, {@code $SOURCE_ID$} and {@code $UV$} the combination's source and UV setting, {@code $NAME$}
+ * the loop's name. A line that is only {@code $WORD$} is a hook: it becomes the source's section of
+ * that name in lower case ({@code $SETUP$}: {@code //#setup}, per triangle; {@code $ROW$},
+ * {@code $PIXEL$}, {@code $KNOT$}, {@code $SEGMENT$}, {@code $PIECE$}), indented as the line, or
+ * nothing where the source has no such section.
  *
  * <p>Colour source ({@code dev/trisect/raster/sources/NAME.source}): comment lines (its description),
- * then the sections {@code //#setup}, {@code //#fixed} and {@code //#double}. Adding a source is its
- * file and its line in {@link #SOURCES}.
+ * then its sections, each from a line {@code //#name} to the next: {@code fixed} and {@code double}
+ * (expressions, required), the hooks' statements, {@code step} and {@code imports} (import lines the
+ * generated classes get). A section {@code //#name TEMPLATE} is that section for one template only,
+ * in place of the common one. Source lines take the //#uv and //#divide markers as template lines
+ * do, and a line or a part of a line {@code $WORD$} includes the source's own section of that name.
+ * A source named {@code FAMILYPot} or {@code FAMILYAny} without a file of its own is read from
+ * {@code FAMILY.source}, keeping lines ending in {@code //#pot} (blocks from a line {@code //#pot} to
+ * {@code //#end}) for Pot only, {@code //#!pot} for Any only: a chain whose sides are powers of two,
+ * or any. Adding a source is its file and its line in {@link #SOURCES}.
  */
 public final class LoopGenerator {
     /** The colour sources, in the order of their ids in {@code ColourSources}: one line registers one. */

@@ -11,11 +11,11 @@ package dev.trisect.raster;
  *   E = L (sqrt(q_hi) - sqrt(q_lo)) / (sqrt(q_hi) + sqrt(q_lo)),   L = b - a,
  * </pre>
  * q the {@code 1/w} of the two knots. Along a row {@code q = q_a + g (x - a)} is linear, and with
- * {@code rho = sqrt(q_b / q_a)} this is {@code E = q_a (rho - 1)^2 / |g|}, so {@code E <= maxError}
- * exactly when {@code |rho - 1| <= delta = sqrt(maxError |g| / q_a)}, that is when
+ * {@code rho = sqrt(q_b / q_a)} this is {@code E = q_a (rho - 1)^2 / |g|}, so {@code E <= knotError}
+ * exactly when {@code |rho - 1| <= delta = sqrt(knotError |g| / q_a)}, that is when
  * <pre>
- *   L &lt;= 2 sqrt(maxError q_a / |g|) + maxError   (g &gt; 0: the row comes nearer)
- *   L &lt;= 2 sqrt(maxError q_a / |g|) - maxError   (g &lt; 0: it recedes; any L when delta &gt;= 1)
+ *   L &lt;= 2 sqrt(knotError q_a / |g|) + knotError   (g &gt; 0: the row comes nearer)
+ *   L &lt;= 2 sqrt(knotError q_a / |g|) - knotError   (g &lt; 0: it recedes; any L when delta &gt;= 1)
  * </pre>
  * The next knot is the farthest column within that reach (at least the next column, at most
  * {@link #MAX_LENGTH} columns on), or the row's last covered column if that comes first: a shorter
@@ -35,27 +35,27 @@ final class KnotSpacing {
     }
 
     /**
-     * {@code 2 sqrt(maxError / |qDx|)}: the reach's factor of {@code sqrt(q)} (infinite when 1/w is
+     * {@code 2 sqrt(knotError / |qDx|)}: the reach's factor of {@code sqrt(q)} (infinite when 1/w is
      * constant along rows).
      *
      * @param qDx      the change of 1/w per pixel along a row (view-space units^-1 per pixel)
-     * @param maxError the largest displacement allowed, pixels, &gt; 0
+     * @param knotError the largest displacement allowed, pixels, &gt; 0
      */
-    static double scale(double qDx, double maxError) {
-        return 2 * Math.sqrt(maxError / Math.abs(qDx));
+    static double scale(double qDx, double knotError) {
+        return 2 * Math.sqrt(knotError / Math.abs(qDx));
     }
 
-    /** {@code +maxError} when the rows come nearer to the right ({@code qDx > 0}), else {@code -maxError}. */
-    static double offset(double qDx, double maxError) {
-        return qDx > 0 ? maxError : -maxError;
+    /** {@code +knotError} when the rows come nearer to the right ({@code qDx > 0}), else {@code -knotError}. */
+    static double offset(double qDx, double knotError) {
+        return qDx > 0 ? knotError : -knotError;
     }
 
     /**
      * The 1/w at or below which a receding row's reach has no limit ({@code delta >= 1}, that is
-     * {@code q <= maxError |qDx|}): minus infinity when the row does not recede.
+     * {@code q <= knotError |qDx|}): minus infinity when the row does not recede.
      */
-    static double unbounded(double qDx, double maxError) {
-        return qDx < 0 ? -qDx * maxError : Double.NEGATIVE_INFINITY;
+    static double unbounded(double qDx, double knotError) {
+        return qDx < 0 ? -qDx * knotError : Double.NEGATIVE_INFINITY;
     }
 
     /**

@@ -8,11 +8,10 @@ import dev.trisect.texture.TextureFilter;
  * Fills screen-space triangles into a {@link Framebuffer}, restricted to a rectangle of the frame:
  * for each triangle, {@link TriangleSetup} (bounds and attribute planes), {@link SpanSolver} (the
  * covered pixels of each row), then the pixel loop of the texture filter and path, chosen once per
- * triangle: the nearest loops generated from templates, one per colour source ({@link ColourSources})
- * and UV setting ({@link PerPixelNearest}, {@link FixedNearest}, in the span path {@link KnotNearest},
- * in the tessellated path {@link TreeNearest}), and the filtered loops ({@link FilteredSpans},
- * {@link KnotFilteredSpans}, {@link TreeFilteredFill}); the span path's knots are placed by
- * {@link KnotSpacing}.
+ * triangle: the loops generated from templates, one per colour source ({@link ColourSources}: the
+ * filter and the texture's kind) and UV setting ({@link PerPixelNearest}, {@link FixedNearest}, in the
+ * span path {@link KnotNearest}, in the tessellated path {@link TreeNearest}); the span path's knots
+ * are placed by {@link KnotSpacing}.
  *
  * <p>Coverage is exact integer arithmetic on snapped corners: a pixel belongs to a triangle when its
  * centre is inside, and a centre exactly on an edge goes to the triangle for which that edge is a top
@@ -32,7 +31,7 @@ public final class Rasterizer {
     /** How {@link #fill} samples textures. */
     private TextureFilter filter = TextureFilter.NEAREST;
     /** The span path's largest displacement between knots, pixels; 0: perspective fills divide per pixel. */
-    private double spanError;
+    private double knotError;
 
     /** Sets how the following {@link #fill} calls sample textures (nearest until set). */
     public void filter(TextureFilter f) {
@@ -43,17 +42,17 @@ public final class Rasterizer {
     }
 
     /**
-     * Sets the path of the following perspective {@link #fill} calls: with {@code maxError > 0} the
+     * Sets the path of the following perspective {@link #fill} calls: with {@code knotError > 0} the
      * span path, exact texel coordinates at knots along each row spaced so that no pixel between them
-     * is displaced by more than {@code maxError} pixels ({@link KnotSpacing}), affine between them; with
+     * is displaced by more than {@code knotError} pixels ({@link KnotSpacing}), affine between them; with
      * 0 (until set) every pixel divides.
      */
-    public void spans(double maxError) {
-        if (!(maxError >= 0) || Double.isInfinite(maxError)) {
-            throw new IllegalArgumentException("span error must be 0 (off) or a positive number of pixels, got "
-                    + maxError);
+    public void spans(double knotError) {
+        if (!(knotError >= 0) || Double.isInfinite(knotError)) {
+            throw new IllegalArgumentException("knot error must be 0 (off) or a positive number of pixels, got "
+                    + knotError);
         }
-        spanError = maxError;
+        this.knotError = knotError;
     }
 
     /**
@@ -82,7 +81,7 @@ public final class Rasterizer {
         boolean divide = perspective || triangles.perPixel()[tri];
         // The span path places its knots on each row's covered columns within the frame, whatever
         // the rectangle, so that a pixel never depends on the rectangle being filled.
-        boolean knots = perspective && spanError > 0;
+        boolean knots = perspective && knotError > 0;
         if (!t.prepare(triangles, tri, divide, knots ? 0 : x0, y0, knots ? frame.width() : x1, y1)) {
             return 0;
         }
@@ -100,7 +99,7 @@ public final class Rasterizer {
         boolean uv = frame.uv() != null;
         int source = source(texture);
         if (knots) {
-            return KnotNearest.fill(source, uv, t, spans, frame, texture, uvId, spanError, x0, x1);
+            return KnotNearest.fill(source, uv, t, spans, frame, texture, uvId, knotError, x0, x1);
         } else if (!divide && t.fixedPointSafe) {
             return FixedNearest.fill(source, uv, t, spans, frame, texture, uvId);
         } else {

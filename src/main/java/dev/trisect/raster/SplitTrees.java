@@ -162,7 +162,7 @@ public final class SplitTrees {
 
     /**
      * Per piece: its one level of detail for trilinear filtering ({@link Lod#select} form), from its
-     * planes' constant derivatives as {@link FilteredSpans} takes it, or 0 when the group was added
+     * planes' constant derivatives as {@link FixedNearest}'s trilinear loop takes it, or 0 when the group was added
      * without a mip chain's last level.
      */
     public int[] selections() {

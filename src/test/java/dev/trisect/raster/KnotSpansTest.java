@@ -54,12 +54,12 @@ class KnotSpansTest {
                 Math.pow(40, -rnd.nextDouble()), -90, 400 * rnd.nextDouble(), k, k % 2);
     }
 
-    private static Framebuffer fill(ScreenTriangles t, TextureFilter filter, double spanError, Rasterizer r) {
+    private static Framebuffer fill(ScreenTriangles t, TextureFilter filter, double knotError, Rasterizer r) {
         Framebuffer fb = new Framebuffer(W, H);
         fb.recordUv(true);
         fb.clearRows(0, H, 0);
         r.filter(filter);
-        r.spans(spanError);
+        r.spans(knotError);
         r.fill(fb, t, all(t), 0, t.count(), TEXTURES, true, 0, 0, W, H);
         return fb;
     }
