@@ -2,6 +2,8 @@ package dev.trisect.pipeline;
 
 import dev.trisect.light.FogPass;
 import dev.trisect.raster.BandBins;
+import dev.trisect.raster.BandFill;
+import dev.trisect.raster.Commands;
 import dev.trisect.raster.Rasterizer;
 import dev.trisect.render.Framebuffer;
 import dev.trisect.render.RenderSettings;
@@ -9,10 +11,11 @@ import dev.trisect.texture.Texture;
 
 /**
  * The fill half of a frame: one task per band of {@link FrameRenderer#BAND_ROWS} rows, which clears
- * its rows, then fills the screen triangles of every chunk that fall in the band, chunk by chunk, so
- * that every pixel sees its triangles in input order whatever the number of threads. With the borders
- * on, the tasks of an {@link Outlines} pass come first and each band is outlined right after it is
- * filled, while its rows are in cache. One {@link Rasterizer} per thread.
+ * its rows, then draws the band's commands of every chunk ({@link Chunk#commands}: triangles, split
+ * trees), chunk by chunk, so that every pixel sees its triangles in input order whatever the number of
+ * threads; then fogs the band, outlines it when the borders are on (the tasks of an {@link Outlines}
+ * pass come first), and draws the band's commands of the frame's lines ({@link LineGeometry}), all
+ * while its rows are in cache. One {@link BandFill} per thread dispatches each command by its kind.
  */
 final class BandPass {
     /**
@@ -22,16 +25,20 @@ final class BandPass {
      * @param fillNanos    processor time of all threads clearing and filling bands
      * @param overlayNanos processor time of all threads preparing outlines and outlining bands, not
      *                     waiting for the preparations
+     * @param linePixels   pixels written by the lines (depth test passed)
+     * @param lineNanos    processor time of all threads drawing lines
      */
-    record Result(long pixels, long fillNanos, long overlayNanos) {
+    record Result(long pixels, long fillNanos, long overlayNanos, long linePixels, long lineNanos) {
     }
 
     /** Per-thread scratch and counters. */
     private static final class Lane {
-        final Rasterizer rasterizer = new Rasterizer();
+        final BandFill fill = new BandFill();
         long pixels;
         long fillNanos;
         long overlayNanos;
+        long linePixels;
+        long lineNanos;
     }
 
     private final Lane[] lanes;
@@ -45,20 +52,24 @@ final class BandPass {
     }
 
     /**
-     * Clears {@code frame} and fills the screen triangles of chunks 0..chunkCount-1 into it, fogs each
-     * band when there is fog ({@link FogPass}, before the overlay: the borders are not part of the
-     * scene), and outlines it by {@code outlines} when the settings have borders on.
+     * Clears {@code frame} and fills the commands of chunks 0..chunkCount-1 into it, fogs each band
+     * when there is fog ({@link FogPass}, before the overlay: the borders are not part of the scene),
+     * outlines it by {@code outlines} when the settings have borders on, then draws its lines.
      *
      * @param fog      the frame's fog, or null for none
      * @param textures the texture of each material, by material index
+     * @param lines    the frame's {@link Commands#LINE} commands, binned into the same bands
      */
     Result draw(Framebuffer frame, Chunks chunks, int chunkCount, Texture[] textures, RenderSettings settings,
-                FogPass fog, Outlines outlines, WorkerPool pool) {
+                FogPass fog, Outlines outlines, Commands lines, WorkerPool pool) {
         for (Lane lane : lanes) {
             lane.pixels = 0;
             lane.fillNanos = 0;
             lane.overlayNanos = 0;
+            lane.linePixels = 0;
+            lane.lineNanos = 0;
         }
+        boolean hasLines = lines.count() > 0;
         boolean perspective = settings.mode().divides();
         double spanError = settings.mode().knots() ? settings.knotError() : 0;
         int width = frame.width();
@@ -83,16 +94,12 @@ final class BandPass {
             int y0 = b * FrameRenderer.BAND_ROWS;
             int y1 = Math.min(height, y0 + FrameRenderer.BAND_ROWS);
             frame.clearRows(y0, y1, background);
-            Rasterizer rasterizer = lane.rasterizer;
+            BandFill fill = lane.fill;
+            Rasterizer rasterizer = fill.rasterizer();
             rasterizer.filter(settings.filter());
             rasterizer.spans(spanError);
             for (int c = 0; c < chunkCount; c++) {
-                Chunk chunk = chunks.get(c);
-                lane.pixels += chunk.split
-                        ? rasterizer.fillTrees(frame, chunk.trees, chunk.out, chunk.bins.items(), chunk.bins.start(b),
-                        chunk.bins.start(b + 1), textures, 0, y0, width, y1)
-                        : rasterizer.fill(frame, chunk.out, chunk.bins.items(), chunk.bins.start(b),
-                        chunk.bins.start(b + 1), textures, perspective, 0, y0, width, y1);
+                lane.pixels += fill.fill(frame, chunks.get(c).commands, b, textures, perspective, 0, y0, width, y1);
             }
             if (fog != null) {
                 fog.apply(frame, y0, y1);
@@ -104,16 +111,27 @@ final class BandPass {
                 outlines.drawBand(thread, frame, b, y0, y1);
                 lane.overlayNanos += System.nanoTime() - t2;
             }
+            // The lines come after the band's triangles, its fog and its outlines, as they were submitted.
+            if (hasLines) {
+                long t3 = System.nanoTime();
+                lane.fill.fill(frame, lines, b, textures, perspective, 0, y0, width, y1);
+                lane.linePixels += lane.fill.linePixels();
+                lane.lineNanos += System.nanoTime() - t3;
+            }
         });
         long pixels = 0;
         long fill = 0;
         long overlay = 0;
+        long linePixels = 0;
+        long lineNanos = 0;
         for (Lane lane : lanes) {
             pixels += lane.pixels;
             fill += lane.fillNanos;
             overlay += lane.overlayNanos;
+            linePixels += lane.linePixels;
+            lineNanos += lane.lineNanos;
         }
-        return new Result(pixels, fill, overlay);
+        return new Result(pixels, fill, overlay, linePixels, lineNanos);
     }
 
     /**
@@ -126,16 +144,9 @@ final class BandPass {
         pool.run(bands, (thread, b) -> {
             int y0 = b * FrameRenderer.BAND_ROWS;
             int y1 = Math.min(height, y0 + FrameRenderer.BAND_ROWS);
-            Rasterizer rasterizer = lanes[thread].rasterizer;
+            BandFill fill = lanes[thread].fill;
             for (int c = 0; c < chunkCount; c++) {
-                Chunk chunk = chunks.get(c);
-                if (chunk.split) {
-                    rasterizer.countTreeCoverage(counts, width, chunk.trees, chunk.out, chunk.bins.items(),
-                            chunk.bins.start(b), chunk.bins.start(b + 1), 0, y0, width, y1);
-                } else {
-                    rasterizer.countCoverage(counts, width, chunk.out, chunk.bins.items(), chunk.bins.start(b),
-                            chunk.bins.start(b + 1), 0, y0, width, y1);
-                }
+                fill.count(counts, width, chunks.get(c).commands, b, 0, y0, width, y1);
             }
         });
         return counts;

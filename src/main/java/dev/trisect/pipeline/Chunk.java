@@ -1,6 +1,6 @@
 package dev.trisect.pipeline;
 
-import dev.trisect.raster.BandBins;
+import dev.trisect.raster.Commands;
 import dev.trisect.raster.ScreenTriangles;
 import dev.trisect.raster.SplitTrees;
 import dev.trisect.tessellate.VertexLayout;
@@ -17,16 +17,16 @@ final class Chunk {
     final ScreenTriangles out = new ScreenTriangles();
     /**
      * In the tessellated path, the input triangles that were split and their split trees, whose
-     * leaves are the pieces in {@link #out}: what the fill fills.
+     * leaves are the pieces in {@link #out}.
      */
     final SplitTrees trees = new SplitTrees();
-    /** Whether the last attempt split its triangles: then the fill takes {@link #trees}, else {@link #out}. */
-    boolean split;
     /**
-     * What the fill fills in each band of {@link FrameRenderer#BAND_ROWS} rows: the screen triangles
-     * of {@link #out}, or in the tessellated path the groups of {@link #trees}.
+     * What the fill draws, in input order, binned into bands of {@link FrameRenderer#BAND_ROWS} rows: a
+     * {@link Commands#TRIANGLE} per screen triangle of {@link #out}, or in the tessellated path a
+     * {@link Commands#TREE} per input triangle of {@link #trees} and a {@link Commands#TRIANGLE} per one
+     * that was not split (its one piece).
      */
-    final BandBins bins = new BandBins();
+    final Commands commands = new Commands(out, trees, null);
     // What the last geometry attempt counted (see FrameStats for their meaning).
     long culledBack;
     long culledFrustum;
@@ -56,32 +56,14 @@ final class Chunk {
     void clear(VertexLayout layout) {
         out.layout(layout);
         trees.layout(layout);
+        commands.clear();
         culledBack = culledFrustum = culledDegenerate = invalid = clipped = 0;
         clipNanos = tessellateNanos = 0;
     }
 
-    /**
-     * Sorts what the fill fills (the screen triangles, or in the tessellated path the split trees'
-     * input triangles) into bands of rows of a frame {@code height} rows high, in order.
-     */
-    void bin(int bands, int height) {
-        int n = split ? trees.count() : out.count();
-        int[] refs = trees.refs();
-        ScreenTriangles inputs = trees.inputs();
-        bins.prepare(n);
-        for (int i = 0; i < n; i++) {
-            // A group that was split is binned by its input triangle, one that was not by its one piece.
-            ScreenTriangles filled = !split ? out : refs[i] >= 0 ? inputs : out;
-            int t = !split ? i : refs[i] >= 0 ? refs[i] : -1 - refs[i];
-            int r0 = Math.max(0, filled.firstRow(t));
-            int r1 = Math.min(height, filled.endRow(t));
-            if (r0 >= r1) {
-                bins.none(i);
-            } else {
-                bins.rows(i, r0, r1 - 1, FrameRenderer.BAND_ROWS);
-            }
-        }
-        bins.build(n, bands);
+    /** Sorts the commands into bands of rows of a frame {@code height} rows high, in order. */
+    void bin(int height) {
+        commands.bin(height, FrameRenderer.BAND_ROWS);
     }
 
     /**
@@ -95,7 +77,7 @@ final class Chunk {
             int n = (int) keep;
             out.shrinkTo(n);
             trees.shrinkTo(n);
-            bins.shrink(n, Math.max(2 * bins.entries(), n));
+            commands.shrink(n, Math.max(2 * commands.bins().entries(), n));
         }
     }
 }

@@ -10,6 +10,7 @@ import static dev.trisect.tessellate.VertexLayout.Y;
 import static dev.trisect.tessellate.VertexLayout.Z;
 
 import dev.trisect.math.Viewport;
+import dev.trisect.raster.Commands;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.tessellate.PieceBudget;
 import dev.trisect.tessellate.Tessellator;
@@ -97,7 +98,6 @@ final class ChunkGeometry {
         Scratch w = scratch[thread];
         VertexLayout layout = in.layout();
         chunk.clear(layout);
-        chunk.split = in.split();
         Tessellator tess = w.tessellator;
         tess.layout(layout);
         w.clipper.layout(layout);
@@ -137,15 +137,20 @@ final class ChunkGeometry {
                 int o = i * stride;
                 int firstPiece = chunk.out.count();
                 tess.process(b, o, o + clipStride, o + 2 * clipStride, split, w.sink);
-                if (split && tess.splitTree().complete() && tess.splitTree().leaves() > 0) {
+                if (!split) {
+                    for (int p = firstPiece; p < chunk.out.count(); p++) {
+                        chunk.commands.add(Commands.TRIANGLE, p);
+                    }
+                } else if (tess.splitTree().complete() && tess.splitTree().leaves() > 0) {
                     if (tess.splitTree().nodes() == 0) {
-                        chunk.trees.addSingle(firstPiece);
+                        // Not split: its one piece is the input triangle, filled as the other paths fill one.
+                        chunk.commands.add(Commands.TRIANGLE, firstPiece);
                     } else {
                         int material = w.batchMaterials[i];
                         int maxLevel = trilinear ? draws.textures()[material].mipChain().maxLevel() : 0;
                         int ps = layout.projectedStride();
-                        chunk.trees.add(tess.vertices(), 0, ps, 2 * ps, w.batchIds[i], material, tess.splitTree(),
-                                chunk.out, firstPiece, maxLevel);
+                        chunk.commands.add(Commands.TREE, chunk.trees.add(tess.vertices(), 0, ps, 2 * ps,
+                                w.batchIds[i], material, tess.splitTree(), chunk.out, firstPiece, maxLevel));
                     }
                 }
             }

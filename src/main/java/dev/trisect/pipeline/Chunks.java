@@ -83,7 +83,7 @@ final class Chunks {
     long retainedTriangleCapacity() {
         long total = 0;
         for (Chunk c : chunks) {
-            total += c.out.capacity() + c.bins.entryCapacity() / 2;
+            total += c.out.capacity() + c.commands.bins().entryCapacity() / 2;
         }
         return total;
     }

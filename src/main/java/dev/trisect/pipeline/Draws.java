@@ -21,7 +21,7 @@ import java.util.Objects;
  * single-mesh frame: every base is 0.
  *
  * <p>Lines ({@link #addLines}) are a list of their own, drawn in their order after every mesh's
- * triangles (see {@link LinePass}).
+ * triangles (see {@link LineGeometry}).
  */
 public final class Draws {
     private Mesh[] meshes = new Mesh[4];

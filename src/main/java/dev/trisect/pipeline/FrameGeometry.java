@@ -1,7 +1,6 @@
 package dev.trisect.pipeline;
 
 import dev.trisect.math.Viewport;
-import dev.trisect.raster.BandBins;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.render.TessellationSettings;
 import dev.trisect.tessellate.PieceBudget;
@@ -11,7 +10,7 @@ import dev.trisect.tessellate.VertexLayout;
  * The geometry half of a frame, up to what the fill reads: transform the positions
  * ({@link ClipSpace}), cull, clip and tessellate or project every chunk of triangles on all threads
  * ({@link ChunkGeometry}) within the frame's piece budget ({@link DepthCapSearch}), and bin each
- * chunk's screen triangles into bands of {@link FrameRenderer#BAND_ROWS} rows. The chunks
+ * chunk's commands ({@link Chunk#commands}) into bands of {@link FrameRenderer#BAND_ROWS} rows. The chunks
  * ({@link #chunks()}) hold the result until the next frame. Not thread-safe: one frame at a time.
  */
 final class FrameGeometry {
@@ -63,7 +62,6 @@ final class FrameGeometry {
         Viewport viewport = new Viewport(width, height);
         clipSpace.transform(draws, pool);
         long transformNanos = System.nanoTime() - start;
-        int bands = BandBins.bandCount(height, FrameRenderer.BAND_ROWS);
         int triangles = draws.triangleCount();
         int chunkCount = Chunks.count(triangles);
         chunks.ensure(chunkCount);
@@ -90,7 +88,7 @@ final class FrameGeometry {
             Chunk chunk = chunks.get(c);
             // Trimmed before binning: giving back the bands' storage empties them.
             chunk.trimIfOversized();
-            chunk.bin(bands, height);
+            chunk.bin(height);
         });
         chunks.retain(chunkCount);
         return new Result(chunkCount, transformNanos, limit == Long.MAX_VALUE ? 0 : limit, budgetDepth);

@@ -26,12 +26,12 @@ final class FrameJob {
     FrameGeometry.Result geometry;
     /** {@link System#nanoTime()} when the geometry pass ended. */
     long geometryDone;
-    /** What the fill pass did: pixels written, fill and overlay times. */
+    /** What the fill pass did: pixels written by the triangles and the lines, fill, overlay and line times. */
     BandPass.Result bands;
     /** {@link System#nanoTime()} when the fill pass ended. */
     long bandsDone;
-    /** What the line pass did: segments, pixels, time. */
-    LinePass.Result lines = LinePass.Result.NONE;
+    /** What the lines' geometry did: segments set up, time. */
+    LineGeometry.Result lines = LineGeometry.Result.NONE;
 
     FrameJob(Draws draws, RenderSettings settings, Framebuffer frame, WorkerPool pool, Chunks chunks, long start) {
         this.draws = draws;

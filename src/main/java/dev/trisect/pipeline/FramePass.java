@@ -3,10 +3,10 @@ package dev.trisect.pipeline;
 /**
  * One pass of a frame. {@link FrameRenderer} runs its passes in order on every frame, each on the
  * renderer's threads through the frame's {@link FrameJob}: the {@link FrameGeometry geometry} (transform,
- * clip, tessellate or project, bin), then the {@link BandPass fill} (each band cleared and filled, and
- * with the borders on outlined right after, while its rows are in cache), then the {@link LinePass
- * lines}, which draw over the filled frame against its depth buffer; a later pass (screen text, say)
- * comes after them. A pass reads what the
+ * clip, tessellate or project, bin), the {@link LineGeometry lines' geometry} (their segments set up
+ * and binned), then the {@link BandPass fill} (each band cleared, filled, fogged, with the borders on
+ * outlined, and its lines drawn, while its rows are in cache); a later pass (screen text, say) comes
+ * after them. A pass reads what the
  * passes before it left in the job and leaves its own results there; it never keeps a frame's data
  * past the frame, except in the renderer's storage that the next frame reuses.
  *

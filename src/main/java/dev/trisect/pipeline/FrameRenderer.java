@@ -16,7 +16,7 @@ import java.util.List;
  * each is a class of its own (docs/architecture.md has the table): {@link FrameGeometry} (with
  * {@link ClipSpace}, {@link ChunkGeometry}, {@link DepthCapSearch}) makes the chunks' screen
  * triangles, {@link BandPass} fills them band by band, and with the borders on {@link Outlines} draws
- * the border overlay on each band as it is filled, {@link LinePass} draws the lines over the filled
+ * the border overlay on each band as it is filled, {@link LineGeometry} sets up the lines that each band draws over its filled
  * frame; {@link FrameStatsBuilder} makes the statistics, all
  * on the threads of one {@link WorkerPool}. What the frame drew is kept as a {@link FrameRecord}
  * ({@link #drawn()}), which answers the pixel inspector's questions until the next frame.
@@ -52,8 +52,8 @@ public final class FrameRenderer implements AutoCloseable {
     private final FrameGeometry geometry;
     private final BandPass bands;
     private final Outlines outlines;
-    private final LinePass lines;
-    /** The frame's passes, in the order they run: the geometry, the fill, the lines (see {@link FramePass}). */
+    private final LineGeometry lines;
+    /** The frame's passes, in the order they run: the geometry, the lines' geometry, the fill (see {@link FramePass}). */
     private final List<FramePass> passes;
     /**
      * What the frame last drawn by {@link #render} (or laid out by {@link #coverage}) drew, which
@@ -95,8 +95,8 @@ public final class FrameRenderer implements AutoCloseable {
         this.geometry = new FrameGeometry(threads);
         this.bands = new BandPass(threads);
         this.outlines = new Outlines(threads);
-        this.lines = new LinePass(threads);
-        List<FramePass> all = new java.util.ArrayList<>(List.of(this::geometryPass, this::fillPass, this::linePass));
+        this.lines = new LineGeometry();
+        List<FramePass> all = new java.util.ArrayList<>(List.of(this::geometryPass, this::linePass, this::fillPass));
         all.addAll(later);
         this.passes = List.copyOf(all);
     }
@@ -137,7 +137,7 @@ public final class FrameRenderer implements AutoCloseable {
      * Draws every draw into {@code frame}, one depth buffer for all, after clearing it: each mesh's
      * positions go through that draw's own model-view-projection, so moving one object never touches
      * another's data. The draws' lines come after every triangle (and, with the borders on, after the
-     * overlay), depth-tested against them ({@link LinePass}); they leave the UV output as it is.
+     * overlay), depth-tested against them ({@link LineGeometry}); they leave the UV output as it is.
      * Triangles are numbered across the draws (see {@link Draws}) in the UV output and in
      * {@link FrameRecord#pieceAt}.
      *
@@ -164,16 +164,19 @@ public final class FrameRenderer implements AutoCloseable {
         job.geometryDone = System.nanoTime();
     }
 
-    /** The fill pass: every band cleared and filled, and outlined right after when the borders are on. */
+    /**
+     * The fill pass: every band cleared and filled, fogged, outlined right after when the borders are
+     * on, and its lines drawn.
+     */
     private void fillPass(FrameJob job) {
         job.bands = bands.draw(job.frame, job.chunks, job.chunkCount(), job.draws.textures(), job.settings,
-                job.draws.fogPass(), outlines, job.pool);
+                job.draws.fogPass(), outlines, lines.commands(), job.pool);
         job.bandsDone = System.nanoTime();
     }
 
-    /** The line pass: the draws' lines over the filled frame, depth-tested against it. */
+    /** The lines' geometry: the draws' segments clipped, set up and binned for the fill. */
     private void linePass(FrameJob job) {
-        job.lines = lines.draw(job.draws, job.frame, job.pool);
+        job.lines = lines.setUp(job.draws, job.frame.width(), job.frame.height());
     }
 
     private FrameRecord record(int chunkCount, int width, int height, RenderSettings settings) {

@@ -74,28 +74,30 @@ final class FrameStatsBuilder {
      * overlay drawn in it or not.
      */
     FrameStats bands(BandPass.Result result, long end, boolean borders) {
-        return bands(result, end, borders, LinePass.Result.NONE, 0);
+        return bands(result, end, borders, LineGeometry.Result.NONE, 0);
     }
 
     /**
-     * The band pass, done at {@code end}, then the line pass ({@code lines}, with {@code segmentsIn}
-     * segments given), which ends the frame.
+     * The lines' geometry ({@code lines}, with {@code segmentsIn} segments given), then the band pass,
+     * done at {@code end}, which ends the frame.
      */
-    FrameStats bands(BandPass.Result result, long end, boolean borders, LinePass.Result lines, long segmentsIn) {
-        // Filling and outlining run interleaved on all threads, so neither has a wall time of its
-        // own: the band pass's wall time is shared out in proportion to the time the threads spent
-        // on each, an estimate that FrameStats names as such.
-        long work = result.fillNanos() + result.overlayNanos();
+    FrameStats bands(BandPass.Result result, long end, boolean borders, LineGeometry.Result lines, long segmentsIn) {
+        // Filling, outlining and drawing lines run interleaved on all threads, so none has a wall time
+        // of its own: the band pass's wall time is shared out in proportion to the time the threads
+        // spent on each, an estimate that FrameStats names as such.
+        long bandsWall = end - geometryDone - lines.nanos();
+        long work = result.fillNanos() + result.overlayNanos() + result.lineNanos();
         long overlay = !borders || work == 0 ? 0
-                : Math.round((end - geometryDone) * (double) result.overlayNanos() / work);
-        long rasterDone = end - overlay;
+                : Math.round(bandsWall * (double) result.overlayNanos() / work);
+        long lineShare = work == 0 ? 0 : Math.round(bandsWall * (double) result.lineNanos() / work);
         long transformed = start + transformNanos;
         long geometryWall = geometryDone - transformed;
         long cpu = clipCpu + tessellateCpu;
         long clipWall = cpu == 0 ? 0 : Math.round(geometryWall * (double) clipCpu / cpu);
         return new FrameStats(triangles, back, frustum, degenerate, invalid, clipped, pieces, offScreen, splits,
                 deepest, caps, fallback, pieceBudget, budgetDepth, result.pixels(), threads, transformed - start,
-                clipWall, geometryWall - clipWall, rasterDone - geometryDone, end - rasterDone, borders,
-                end + lines.nanos() - start, segmentsIn, lines.segments(), lines.pixels(), lines.nanos());
+                clipWall, geometryWall - clipWall, bandsWall - overlay - lineShare, overlay,
+                borders || lines.segments() > 0, end - start, segmentsIn, lines.segments(), result.linePixels(),
+                lines.nanos() + lineShare);
     }
 }

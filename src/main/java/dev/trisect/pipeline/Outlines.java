@@ -150,8 +150,7 @@ final class Outlines {
             KnotTicks ticks = lanes[thread].ticks;
             for (int c = 0; c < count; c++) {
                 Chunk chunk = tickChunks.get(c);
-                ticks.draw(frame, chunk.out, chunk.bins.items(), chunk.bins.start(band), chunk.bins.start(band + 1),
-                        plans[c], tickByBound, tickError, y0, y1);
+                ticks.draw(frame, chunk.commands, band, plans[c], tickByBound, tickError, y0, y1);
             }
         }
     }

@@ -37,22 +37,28 @@ public final class KnotTicks {
     }
 
     /**
-     * Draws the knot ticks of triangles {@code order[from..to)} of {@code triangles} (in that order)
-     * on the ticked rows of rows [y0, y1), within those rows.
+     * Draws the knot ticks of the {@link Commands#TRIANGLE} commands of band {@code band} of
+     * {@code list} (in order) on the ticked rows of rows [y0, y1), within those rows.
      *
-     * @param plan     the outline plan of {@code triangles}: which are outlined, in which colour and opacity
+     * @param plan     the outline plan of the list's triangles: which are outlined, in which colour and opacity
      * @param byBound  colour each tick by its segments' bound over {@code knotError}
      * @param knotError the span path's knot error, pixels
      * @return tick pixels drawn
      */
-    public long draw(Framebuffer frame, ScreenTriangles triangles, int[] order, int from, int to, OutlinePlan plan,
-                     boolean byBound, double knotError, int y0, int y1) {
+    public long draw(Framebuffer frame, Commands list, int band, OutlinePlan plan, boolean byBound, double knotError,
+                     int y0, int y1) {
         long painted = 0;
+        ScreenTriangles triangles = list.triangles();
+        int[] items = list.bins().items();
+        int from = list.bins().start(band);
+        int to = list.bins().start(band + 1);
         int first = y0 + Math.floorMod(ROW_SPACING / 2 - y0, ROW_SPACING);
         for (int row = first; row < y1; row += ROW_SPACING) {
             for (int n = from; n < to; n++) {
-                int tri = order[n];
-                if (plan.colours[tri] != 0 && setup.prepare(triangles, tri, true, 0, row, frame.width(), row + 1)) {
+                int command = list.command(items[n]);
+                int tri = Commands.ref(command);
+                if (Commands.kind(command) == Commands.TRIANGLE && plan.colours[tri] != 0
+                        && setup.prepare(triangles, tri, true, 0, row, frame.width(), row + 1)) {
                     solver.walk(setup);
                     painted += row(frame, row, plan.colours[tri], plan.alpha(tri), byBound, knotError, y0, y1);
                 }

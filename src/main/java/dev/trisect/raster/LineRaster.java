@@ -1,57 +1,29 @@
 package dev.trisect.raster;
 
-import java.util.Arrays;
-
 /**
- * Line segments rasterized as OpenGL rasterizes aliased lines, and as Mesa's llvmpipe draws them
- * (its {@code lp_setup_line.c}): a frame's segments are set up once ({@link #add}), then drawn band by
- * band ({@link #draw}), depth-tested against what the band holds.
+ * The loop of {@link Commands#LINE LINE} commands: segments set up by {@link LineSetup} drawn into
+ * rows of a frame, depth-tested against what the rows hold; and, for one frame's lines on their own,
+ * a store with its setup ({@link #begin}, {@link #add}, {@link #draw}).
  *
- * <p>Which pixels (OpenGL 1.x specification, section 3.4.1, "Basic Line Segment Rasterization"): a
- * segment is x-major when it spans at least as many columns as rows, else y-major. It lights the
- * pixels whose diamond ({@code |x - xc| + |y - yc| < 1/2} around the pixel centre) it leaves — the
- * diamond-exit rule — so that segments joined end to end light their shared point once and a
- * segment's last pixel is left to the next. Here, as in llvmpipe, the segment becomes a
- * parallelogram: its ends are moved along the segment to the nearest position that lights exactly
- * the pixels the diamond rule gives at each end, and it is widened by {@code width / 2} on both sides
- * along the minor axis (the specification's section 3.4.2 for wide aliased lines: a column of
- * {@code width} pixels per column of an x-major line). The parallelogram is then covered by the
- * triangles' rule on its four edges, in 1/256-pixel fixed point, evaluated exactly per row.
- * Coordinates are taken in OpenGL's window space (y up, {@code yGl = height - y}) so that every
- * decision at a tie is llvmpipe's; rows are then the frame's (row 0 at the top).
+ * <p>Which pixels: per row, the columns inside the segment's parallelogram, solved exactly from its
+ * (at most two) slanted edge functions; see {@link LineSetup} for the rule (OpenGL 1.x, section 3.4).
  *
  * <p>Depth (OpenGL 1.x, section 3.4.1: attributes of a line fragment are interpolated along the
  * segment): a fragment's 1/w is the segment's at the pixel centre's column (x-major) or row (y-major),
  * the same across the line's width, as llvmpipe interpolates. It is kept where it is not behind the
  * frame's ({@code GL_LEQUAL}: 1/w at least the stored one), and written with the colour.
  *
- * <p>Not thread-safe to set up; {@link #draw} and {@link #drawBand} may run on many threads at once over
+ * <p>Not thread-safe to set up; {@link #draw} and {@link #rows} may run on many threads at once over
  * distinct rows.
  */
 public final class LineRaster {
-    /** Sub-pixel steps per pixel (llvmpipe's FIXED_ONE): positions snap to 1/256 pixel. */
-    private static final int FIXED_ONE = 256;
-    /** Longs per segment: c, dcdx, dcdy of each slanted edge (up to four). */
-    private static final int LSTRIDE = 12;
-    /**
-     * Ints per segment: first and last column, first and last frame row, colour, and the x-major flag
-     * with the number of slanted edges (the rest are folded into the columns and rows) above it.
-     */
-    private static final int ISTRIDE = 6;
-    /** Doubles per segment: the major-axis coordinate of the depth origin, its 1/w, 1/w per pixel. */
-    private static final int DSTRIDE = 3;
+    private static final int FIXED_ONE = LineSetup.FIXED_ONE;
+    private static final int LSTRIDE = Segments.LSTRIDE;
+    private static final int ISTRIDE = Segments.ISTRIDE;
+    private static final int DSTRIDE = Segments.DSTRIDE;
 
-    private long[] planes = new long[LSTRIDE * 64];
-    private int[] ints = new int[ISTRIDE * 64];
-    private double[] depth = new double[DSTRIDE * 64];
-    private int count;
-    private final BandBins bins = new BandBins();
-    private int binRows = 1;
-    /** The parallelogram's corners being set up, 1/256 pixel, window space. */
-    private final long[] cx = new long[4];
-    private final long[] cy = new long[4];
-    private int width;
-    private int height;
+    private final Segments segments = new Segments();
+    private final LineSetup setup = new LineSetup();
 
     /**
      * Forgets every segment, for a frame of {@code width x height} pixels.
@@ -60,323 +32,21 @@ public final class LineRaster {
      * @param height pixels
      */
     public void begin(int width, int height) {
-        this.width = width;
-        this.height = height;
-        count = 0;
+        segments.begin(width, height);
     }
 
     /** Segments set up since {@link #begin} that may light a pixel. */
     public int count() {
-        return count;
+        return segments.count();
     }
 
     /**
-     * Sets up a segment between two points in screen space (pixels, y down, pixel centres at .5),
-     * each with its 1/w.
+     * Sets up a segment, as {@link LineSetup#add} does into this raster's store.
      *
-     * @param x1        one end, pixels from the left
-     * @param y1        one end, pixels from the top
-     * @param q1        1/w at that end
-     * @param x2        the other end
-     * @param y2        the other end
-     * @param q2        1/w there
-     * @param lineWidth width in whole pixels, at least 1
-     * @param rgb       colour, 0xRRGGBB
-     * @return whether the segment may light a pixel of the frame (false for a zero-length segment, as
-     *         OpenGL draws none)
+     * @return whether the segment may light a pixel of the frame
      */
     public boolean add(double x1, double y1, double q1, double x2, double y2, double q2, int lineWidth, int rgb) {
-        // OpenGL's window space, in floats as the rasterizer receives it.
-        float ax = (float) x1;
-        float ay = (float) (height - y1);
-        float bx = (float) x2;
-        float by = (float) (height - y2);
-        float dx = ax - bx;
-        float dy = ay - by;
-        if (dx == 0 && dy == 0) {
-            return false;
-        }
-        float adx = ax - (float) Math.floor(ax) - 0.5f;
-        float ady = ay - (float) Math.floor(ay) - 0.5f;
-        float bdx = bx - (float) Math.floor(bx) - 0.5f;
-        float bdy = by - (float) Math.floor(by) - 0.5f;
-        int half = Math.max(1, lineWidth) * FIXED_ONE / 2;
-        boolean xMajor = Math.abs(dx) >= Math.abs(dy);
-        // Offsets moving each end along the segment so the parallelogram's end edge lights the pixels
-        // the diamond-exit rule gives at that end.
-        float aox = 0;
-        float aoy = 0;
-        float box = 0;
-        float boy = 0;
-        if (xMajor) {
-            float slope = dy / dx;
-            if (bdy == -0.5f && dy < 0) {
-                bdy = 0.5f;
-            }
-            boolean drawStart = startExits(adx, ady, dx, dy, frac(ay) + adx * slope);
-            boolean drawEnd = endExits(bdx, bdy, dx, dy, frac(by) + bdx * slope, false);
-            // The end edge at a vertex lights that vertex's column when its centre lies on the edge's
-            // inner side; move the edge half a pixel past the centre where the rule says otherwise.
-            if (dx < 0) {
-                if ((adx <= 0) != drawStart) {
-                    aox = -adx - 0.5f;
-                    aoy = aox * slope;
-                }
-                if ((bdx > 0) != drawEnd) {
-                    box = -bdx - 0.5f;
-                    boy = box * slope;
-                }
-            } else {
-                if ((adx > 0) != drawStart) {
-                    aox = -adx + 0.5f;
-                    aoy = aox * slope;
-                }
-                if ((bdx <= 0) != drawEnd) {
-                    box = -bdx + 0.5f;
-                    boy = box * slope;
-                }
-            }
-        } else {
-            float slope = dx / dy;
-            if (bdx == -0.5f && dx < 0) {
-                bdx = 0.5f;
-            }
-            // The same tests with the axes' roles exchanged.
-            boolean drawStart = startExits(-ady, -adx, -dy, -dx, frac(ax) + ady * slope);
-            boolean drawEnd = endExits(-bdy, -bdx, -dy, -dx, frac(bx) + bdy * slope, true);
-            if (dy > 0) {
-                if ((ady > 0) != drawStart) {
-                    aoy = -ady + 0.5f;
-                    aox = aoy * slope;
-                }
-                if ((bdy <= 0) != drawEnd) {
-                    boy = -bdy + 0.5f;
-                    box = boy * slope;
-                }
-            } else {
-                if ((ady <= 0) != drawStart) {
-                    aoy = -ady - 0.5f;
-                    aox = aoy * slope;
-                }
-                if ((bdy > 0) != drawEnd) {
-                    boy = -bdy - 0.5f;
-                    box = boy * slope;
-                }
-            }
-        }
-        // Ends snapped to 1/256 pixel, with the sample points at whole coordinates (centres - 1/2).
-        long sax = snap(ax + aox - 0.5f);
-        long say = snap(ay + aoy - 0.5f);
-        long sbx = snap(bx + box - 0.5f);
-        long sby = snap(by + boy - 0.5f);
-        // Corners in an order that makes the inside positive (see plane()): the rightmost end first
-        // for an x-major segment, the lowest (in window y) first for a y-major one.
-        boolean aFirst = xMajor ? dx >= 0 : dy <= 0;
-        long px = aFirst ? sax : sbx;
-        long py = aFirst ? say : sby;
-        long qx = aFirst ? sbx : sax;
-        long qy = aFirst ? sby : say;
-        if (xMajor) {
-            cx[0] = px; cy[0] = py - half;
-            cx[1] = qx; cy[1] = qy - half;
-            cx[2] = qx; cy[2] = qy + half;
-            cx[3] = px; cy[3] = py + half;
-        } else {
-            cx[0] = px - half; cy[0] = py;
-            cx[1] = qx - half; cy[1] = qy;
-            cx[2] = qx + half; cy[2] = qy;
-            cx[3] = px + half; cy[3] = py;
-        }
-        long minX = Math.min(Math.min(cx[0], cx[1]), Math.min(cx[2], cx[3]));
-        long maxX = Math.max(Math.max(cx[0], cx[1]), Math.max(cx[2], cx[3]));
-        long minY = Math.min(Math.min(cy[0], cy[1]), Math.min(cy[2], cy[3]));
-        long maxY = Math.max(Math.max(cy[0], cy[1]), Math.max(cy[2], cy[3]));
-        int col0 = (int) Math.max(0, Math.floorDiv(minX, FIXED_ONE));
-        int col1 = (int) Math.min(width - 1L, Math.floorDiv(maxX, FIXED_ONE) + 1);
-        // Window rows glY in [minY, maxY] / 256 are frame rows height - 1 - glY.
-        int row0 = (int) Math.max(0, height - 1 - (Math.floorDiv(maxY, FIXED_ONE) + 1));
-        int row1 = (int) Math.min(height - 1L, height - 1 - Math.floorDiv(minY, FIXED_ONE));
-        if (col0 > col1 || row0 > row1) {
-            return false;
-        }
-        grow();
-        int l = LSTRIDE * count;
-        // Window rows py hold the sample gy = 256 py; frame row = height - 1 - py.
-        long pyLo = height - 1 - row1;
-        long pyHi = height - 1 - row0;
-        long colLo = col0;
-        long colHi = col1;
-        int varying = 0;
-        for (int e = 0; e < 4; e++) {
-            plane(cx[e], cy[e], cx[(e + 1) & 3], cy[(e + 1) & 3], l + 3 * varying);
-            long c = planes[l + 3 * varying];
-            long a = planes[l + 3 * varying + 1] * FIXED_ONE;
-            long b = planes[l + 3 * varying + 2] * FIXED_ONE;
-            // Inside: c - a * col + b * py >= 1. An edge along a column or a row bounds the columns or
-            // the rows of every pixel alike: folded in here, leaving the (at most two) slanted edges.
-            if (b == 0) {
-                if (a > 0) {
-                    colHi = Math.min(colHi, Math.floorDiv(c - 1, a));
-                } else if (a < 0) {
-                    colLo = Math.max(colLo, -Math.floorDiv(1 - c, a));
-                } else if (c < 1) {
-                    return false;
-                }
-            } else if (a == 0) {
-                if (b > 0) {
-                    pyLo = Math.max(pyLo, -Math.floorDiv(c - 1, b));
-                } else {
-                    pyHi = Math.min(pyHi, Math.floorDiv(c - 1, -b));
-                }
-            } else {
-                varying++;
-            }
-        }
-        if (colLo > colHi || pyLo > pyHi) {
-            return false;
-        }
-        int i = ISTRIDE * count;
-        row0 = (int) (height - 1 - pyHi);
-        row1 = (int) (height - 1 - pyLo);
-        col0 = (int) colLo;
-        col1 = (int) colHi;
-        ints[i] = col0;
-        ints[i + 1] = col1;
-        ints[i + 2] = row0;
-        ints[i + 3] = row1;
-        ints[i + 4] = rgb | 0xFF000000;
-        ints[i + 5] = (xMajor ? 1 : 0) | varying << 1;
-        // 1/w along the major axis, from the segment's own ends (not the moved ones), in window space.
-        // In doubles: the frame's triangles' 1/w planes are, and a line on a face must meet the face's
-        // depth there to the last bits (its 1/w is the face's at every point of it).
-        int d = DSTRIDE * count;
-        if (xMajor) {
-            depth[d] = x1;
-            depth[d + 2] = (q1 - q2) / (x1 - x2);
-        } else {
-            depth[d] = height - y1;
-            depth[d + 2] = (q1 - q2) / (y2 - y1);
-        }
-        depth[d + 1] = q1;
-        count++;
-        return true;
-    }
-
-    /**
-     * Whether the segment leaves the diamond of the pixel holding its start, for an x-major segment
-     * (a y-major one passes its coordinates with the axes exchanged and negated). {@code fx}, {@code fy}
-     * are the start's offsets from that pixel's centre, {@code dx}, {@code dy} start minus end, and
-     * {@code cross} where the segment crosses the pixel's side (in the pixel, 0 to 1) when the other
-     * tests leave it open.
-     */
-    private static boolean startExits(float fx, float fy, float dx, float dy, float cross) {
-        if (Math.abs(fx) + Math.abs(fy) < 0.5f) {
-            return true;
-        }
-        if ((fx >= 0) == (-dx >= 0)) {
-            return false;
-        }
-        if ((-fy >= 0) != (dy >= 0)) {
-            return true;
-        }
-        return cross < 1 && cross > 0;
-    }
-
-    /** As {@link #startExits}, for the end: whether the segment leaves the diamond of its last pixel. */
-    private static boolean endExits(float fx, float fy, float dx, float dy, float cross, boolean closedAtZero) {
-        if (Math.abs(fx) + Math.abs(fy) < 0.5f) {
-            return false;
-        }
-        if ((fx >= 0) != (-dx >= 0)) {
-            return false;
-        }
-        if ((-fy >= 0) == (dy >= 0)) {
-            return true;
-        }
-        return cross < 1 && (closedAtZero ? cross >= 0 : cross > 0);
-    }
-
-    private static float frac(float f) {
-        return f - (float) Math.floor(f);
-    }
-
-    /** llvmpipe's {@code subpixel_snap}: round half away from zero to 1/256 pixel. */
-    private static long snap(float v) {
-        float s = v * FIXED_ONE;
-        return (long) (s >= 0 ? s + 0.5f : s - 0.5f);
-    }
-
-    /**
-     * The edge from (x0, y0) to (x1, y1) as an edge function {@code c + dcdy * Y - dcdx * X}, positive
-     * inside, with the fill rule's ties folded into c: a centre exactly on a left edge, or on a
-     * horizontal edge the shape lies above (in window space), is inside.
-     */
-    private void plane(long x0, long y0, long x1, long y1, int at) {
-        long dcdx = y0 - y1;
-        long dcdy = x0 - x1;
-        long c = dcdx * x0 - dcdy * y0;
-        if (dcdx < 0 || (dcdx == 0 && dcdy > 0)) {
-            c++;
-        }
-        planes[at] = c;
-        planes[at + 1] = dcdx;
-        planes[at + 2] = dcdy;
-    }
-
-    /**
-     * {@code floor(n / d)} for {@code d != 0} and {@code |n| < 2^53}: by a double division, off by at
-     * most one, then corrected exactly (a long division costs several times more).
-     */
-    private static long floorDiv(long n, long d) {
-        long q = (long) Math.floor((double) n / d);
-        long r = n - q * d;
-        if (d > 0) {
-            q += r < 0 ? -1 : r >= d ? 1 : 0;
-        } else {
-            q += r > 0 ? -1 : r <= d ? 1 : 0;
-        }
-        return q;
-    }
-
-    private void grow() {
-        if (count * ISTRIDE == ints.length) {
-            planes = Arrays.copyOf(planes, 2 * planes.length);
-            ints = Arrays.copyOf(ints, 2 * ints.length);
-            depth = Arrays.copyOf(depth, 2 * depth.length);
-        }
-    }
-
-    /**
-     * Sorts the segments set up into bands of {@code bandRows} rows (keeping their order), for
-     * {@link #drawBand}.
-     *
-     * @param bandRows rows per band
-     */
-    public void bin(int bandRows) {
-        bins.prepare(count);
-        for (int s = 0; s < count; s++) {
-            bins.rows(s, ints[ISTRIDE * s + 2], ints[ISTRIDE * s + 3], bandRows);
-        }
-        binRows = bandRows;
-        bins.build(count, BandBins.bandCount(height, bandRows));
-    }
-
-    /**
-     * Draws the segments of band {@code b} (as {@link #bin} sorted them), in order, into its rows.
-     *
-     * @param color  the frame's colours, ARGB, row 0 at the top
-     * @param depths the frame's 1/w
-     * @return pixels written
-     */
-    public long drawBand(int[] color, float[] depths, int b) {
-        int y0 = b * binRows;
-        int y1 = Math.min(height, y0 + binRows);
-        int[] items = bins.items();
-        long written = 0;
-        for (int k = bins.start(b), end = bins.start(b + 1); k < end; k++) {
-            written += rows(items[k], color, depths, y0, y1);
-        }
-        return written;
+        return setup.add(segments, x1, y1, q1, x2, y2, q2, lineWidth, rgb);
     }
 
     /**
@@ -388,26 +58,38 @@ public final class LineRaster {
      */
     public long draw(int[] color, float[] depths, int y0, int y1) {
         long written = 0;
-        for (int s = 0; s < count; s++) {
-            written += rows(s, color, depths, y0, y1);
+        for (int s = 0; s < segments.count(); s++) {
+            written += rows(segments, s, color, depths, y0, y1);
         }
         return written;
     }
 
-    /** Segment s's rows within {@code [y0, y1)}. */
-    private long rows(int s, int[] color, float[] depths, int y0, int y1) {
+    /**
+     * Draws segment {@code s} of {@code segments} into its rows within {@code [y0, y1)}.
+     *
+     * @param color  the frame's colours, ARGB, row 0 at the top
+     * @param depths the frame's 1/w
+     * @return pixels written
+     */
+    public static long rows(Segments segments, int s, int[] color, float[] depths, int y0, int y1) {
         long written = 0;
         int i = ISTRIDE * s;
-        int from = Math.max(y0, ints[i + 2]);
-        int to = Math.min(y1 - 1, ints[i + 3]);
+        int from = Math.max(y0, segments.ints[i + 2]);
+        int to = Math.min(y1 - 1, segments.ints[i + 3]);
         for (int y = from; y <= to; y++) {
-            written += row(s, y, color, depths);
+            written += row(segments, s, y, color, depths);
         }
         return written;
     }
 
+
     /** One row of segment s: its columns solved exactly from its slanted edges, then the depth test. */
-    private int row(int s, int y, int[] color, float[] depths) {
+    private static int row(Segments segments, int s, int y, int[] color, float[] depths) {
+        int[] ints = segments.ints;
+        long[] planes = segments.planes;
+        double[] depth = segments.depth;
+        int width = segments.width();
+        int height = segments.height();
         int i = ISTRIDE * s;
         long lo = ints[i];
         long hi = ints[i + 1];
@@ -456,5 +138,20 @@ public final class LineRaster {
             }
         }
         return written;
+    }
+
+    /**
+     * {@code floor(n / d)} for {@code d != 0} and {@code |n| < 2^53}: by a double division, off by at
+     * most one, then corrected exactly (a long division costs several times more).
+     */
+    private static long floorDiv(long n, long d) {
+        long q = (long) Math.floor((double) n / d);
+        long r = n - q * d;
+        if (d > 0) {
+            q += r < 0 ? -1 : r >= d ? 1 : 0;
+        } else {
+            q += r > 0 ? -1 : r <= d ? 1 : 0;
+        }
+        return q;
     }
 }

@@ -74,8 +74,8 @@ public final class Rasterizer {
         return written;
     }
 
-    /** {@link #fill} of one triangle, {@code tri} of {@code triangles}. */
-    private long fillOne(Framebuffer frame, ScreenTriangles triangles, int tri, Texture[] textures,
+    /** {@link #fill} of one triangle, {@code tri} of {@code triangles}: a {@link Commands#TRIANGLE} command. */
+    long fillOne(Framebuffer frame, ScreenTriangles triangles, int tri, Texture[] textures,
                          boolean perspective, int x0, int y0, int x1, int y1) {
         TriangleSetup t = setup;
         boolean divide = perspective || triangles.perPixel()[tri];
@@ -123,71 +123,44 @@ public final class Rasterizer {
     }
 
     /**
-     * The tessellated path: fills groups {@code order[from..to)} of {@code groups}, in that order, into
-     * the pixels {@code [x0, x1) x [y0, y1)} of the frame, one pass per input triangle: its coverage
-     * and depth from the input triangle, each pixel's texel coordinates from the piece of the split
-     * tree it lies in ({@link TreeFill}).
+     * The tessellated path's one-pass fill of input triangle {@code g} of {@code trees} (a
+     * {@link Commands#TREE} command) into the pixels {@code [x0, x1) x [y0, y1)} of the frame: its
+     * coverage and depth from the input triangle, each pixel's texel coordinates from the piece of the
+     * split tree it lies in ({@link TreeFill}).
      *
-     * @param pieces   the pieces the groups' trees refer to (a group that was not split is filled as
-     *                 its one piece)
      * @param textures texture of each material index
      * @return the number of pixels written (depth test passed)
      */
-    public long fillTrees(Framebuffer frame, SplitTrees groups, ScreenTriangles pieces, int[] order, int from, int to,
-                          Texture[] textures, int x0, int y0, int x1, int y1) {
-        long written = 0;
-        ScreenTriangles inputs = groups.inputs();
-        int[] materials = inputs.materials();
-        int[] ids = inputs.ids();
-        int[] roots = groups.roots();
+    public long fillTree(Framebuffer frame, SplitTrees trees, int g, Texture[] textures, int x0, int y0, int x1,
+                         int y1) {
+        ScreenTriangles inputs = trees.inputs();
         TriangleSetup t = setup;
-        int[] refs = groups.refs();
-        for (int n = from; n < to; n++) {
-            int g = refs[order[n]];
-            if (g < 0) {
-                // Not split: its one piece is the input triangle, filled as the other paths fill one.
-                written += fillOne(frame, pieces, -1 - g, textures, false, x0, y0, x1, y1);
-                continue;
-            }
-            if (!t.prepare(inputs, g, true, x0, y0, x1, y1)) {
-                continue;
-            }
-            solver.walk(t);
-            int[] spans = solver.spans();
-            Texture texture = textures[materials[g]];
-            int uvId = ids[g] + 1;
-            written += TreeNearest.fill(source(texture), frame.uv() != null, trees, t, spans, groups, roots[g],
-                    groups.nodeCount(g), frame, texture, uvId);
+        if (!t.prepare(inputs, g, true, x0, y0, x1, y1)) {
+            return 0;
         }
-        return written;
+        solver.walk(t);
+        int[] spans = solver.spans();
+        Texture texture = textures[inputs.materials()[g]];
+        int uvId = inputs.ids()[g] + 1;
+        return TreeNearest.fill(source(texture), frame.uv() != null, this.trees, t, spans, trees, trees.roots()[g],
+                trees.nodeCount(g), frame, texture, uvId);
     }
 
     /**
      * Adds 1 to {@code counts[y * width + x]} for every pixel of {@code [x0, x1) x [y0, y1)} that the
-     * tessellated path's one-pass fill gives a piece, for each of groups {@code order[from..to)}, ignoring
-     * depth: the input triangle's coverage, less any pixel the split tree leaves without a piece (which
-     * would be a crack).
+     * one-pass fill of input triangle {@code g} of {@code trees} gives a piece, ignoring depth: the
+     * input triangle's coverage, less any pixel the split tree leaves without a piece (which would be
+     * a crack).
      *
      * @return the number of coverings counted
      */
-    public long countTreeCoverage(int[] counts, int width, SplitTrees groups, ScreenTriangles pieces, int[] order,
-                                  int from, int to, int x0, int y0, int x1, int y1) {
-        long covered = 0;
+    public long countTree(int[] counts, int width, SplitTrees trees, int g, int x0, int y0, int x1, int y1) {
         TriangleSetup t = setup;
-        int[] refs = groups.refs();
-        for (int n = from; n < to; n++) {
-            int g = refs[order[n]];
-            if (g < 0) {
-                covered += countOne(counts, width, pieces, -1 - g, x0, y0, x1, y1);
-                continue;
-            }
-            if (!t.prepare(groups.inputs(), g, false, x0, y0, x1, y1)) {
-                continue;
-            }
-            solver.walk(t);
-            covered += trees.count(t, solver.spans(), groups, groups.roots()[g], groups.nodeCount(g), counts, width);
+        if (!t.prepare(trees.inputs(), g, false, x0, y0, x1, y1)) {
+            return 0;
         }
-        return covered;
+        solver.walk(t);
+        return this.trees.count(t, solver.spans(), trees, trees.roots()[g], trees.nodeCount(g), counts, width);
     }
 
     /**
@@ -208,7 +181,7 @@ public final class Rasterizer {
     }
 
     /** {@link #countCoverage} of one triangle, {@code tri} of {@code triangles}. */
-    private long countOne(int[] counts, int width, ScreenTriangles triangles, int tri, int x0, int y0, int x1,
+    long countOne(int[] counts, int width, ScreenTriangles triangles, int tri, int x0, int y0, int x1,
                           int y1) {
         TriangleSetup t = setup;
         if (!t.prepare(triangles, tri, false, x0, y0, x1, y1)) {

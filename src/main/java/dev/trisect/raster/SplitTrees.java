@@ -10,16 +10,17 @@ import java.util.Arrays;
  * pixel lies in, for {@link TreeFill}: one pass per input triangle, coverage from the input triangle
  * itself, each row cut into its pieces' segments by descending the tree.
  *
- * <p>Per input triangle (a group, in the order added; {@link #refs()}): one that was not split is
- * its one piece, filled as a triangle; one that was split is the triangle as the tessellator received
- * it, in {@link #inputs()} (snapped corners for coverage, {@code 1/w} for depth, texel coordinates for
- * the per-pixel fallback), and the root of its tree. A node is one split: a line in screen pixels ({@link #lines()}: along the
+ * <p>Per input triangle that was split (in the order added; a {@link Commands#TREE} command refers to
+ * it by that index): the triangle as the tessellator received it, in {@link #inputs()} (snapped
+ * corners for coverage, {@code 1/w} for depth, texel coordinates for the per-pixel fallback), and the
+ * root of its tree. An input triangle that was not split is its one piece, a {@link Commands#TRIANGLE}
+ * command, and has nothing here. A node is one split: a line in screen pixels ({@link #lines()}: along the
  * row of pixel centres of pixel row y it lies at x = {@code k y + m + 0.5}, so that its first column
  * at or right of the line is {@code ceil(k y + m)}) and its two children ({@link #kids()}: left,
  * the side of smaller x, then right), each a node ({@code >= 0}), a piece ({@code -1 - p}, p the
  * piece's index in the chunk's pieces) or {@link #NO_PIECE} (dropped off screen).
  *
- * <p>Per piece, set up in bulk when its group is added (the geometry pass, not the fill): the affine
+ * <p>Per piece, set up in bulk when its input triangle is added (the geometry pass, not the fill): the affine
  * planes of its varyings over pixel centres ({@link #planes()}: s base, dx, dy, then t, then any
  * further varying of the {@link VertexLayout}: each is affine per piece), fitted exactly as
  * {@link TriangleSetup} fits a piece's, their steps per column in 32.32 fixed point and the piece's
@@ -50,9 +51,6 @@ public final class SplitTrees {
     private final ScreenTriangles inputs = new ScreenTriangles();
     private int[] roots = new int[1024];
     private int[] nodeCounts = new int[1024];
-    /** Per group: the index of its split tree's input triangle in {@link #inputs}, or -1 - its one piece. */
-    private int[] refs = new int[1024];
-    private int groups;
     private int nodes;
     private int[] kids = new int[2 * 4096];
     private double[] lines = new double[LINE * 4096];
@@ -69,16 +67,15 @@ public final class SplitTrees {
     /** Scratch for fitting a piece's planes exactly as the piece-by-piece fill fits them. */
     private final TriangleSetup scratch = new TriangleSetup();
 
-    /** Removes every group, keeping the storage. */
+    /** Removes every input triangle, keeping the storage. */
     public void clear() {
         inputs.clear();
-        groups = 0;
         nodes = 0;
         pieces = 0;
     }
 
     /**
-     * Removes every group and sets the vertex layout of the input triangles and pieces that follow
+     * Removes every input triangle and sets the vertex layout of the input triangles and pieces that follow
      * ({@link VertexLayout#TEXTURED} until set).
      */
     public void layout(VertexLayout layout) {
@@ -96,17 +93,17 @@ public final class SplitTrees {
         return planeStride;
     }
 
-    /** Number of groups (input triangles, split or not), in the order they were added. */
+    /** Number of input triangles added (each split), in the order they were added. */
     public int count() {
-        return groups;
+        return inputs.count();
     }
 
-    /** The input triangles of the groups that were split ({@link #refs()}), with their ids and materials. */
+    /** The input triangles that were split, with their ids and materials. */
     public ScreenTriangles inputs() {
         return inputs;
     }
 
-    /** The root of each split input triangle's tree (a reference, see the class comment), by {@link #refs()}. */
+    /** The root of each input triangle's tree (a reference, see the class comment). */
     public int[] roots() {
         return roots;
     }
@@ -162,7 +159,7 @@ public final class SplitTrees {
 
     /**
      * Per piece: its one level of detail for trilinear filtering ({@link Lod#select} form), from its
-     * planes' constant derivatives as {@link FixedNearest}'s trilinear loop takes it, or 0 when the group was added
+     * planes' constant derivatives as the trilinear loops take it, or 0 when its input triangle was added
      * without a mip chain's last level.
      */
     public int[] selections() {
@@ -174,50 +171,27 @@ public final class SplitTrees {
         return kinds;
     }
 
-    /**
-     * Per group g: what it fills. A group that was split refers to its input triangle, index
-     * {@code refs()[g] >= 0} into {@link #inputs()} and into the per-tree arrays ({@link #roots()},
-     * {@link #nodeCount}); a group that was not split (its tree a single leaf, the input
-     * triangle itself) refers to its one piece in the chunk's pieces as {@code -1 - piece}, and has no
-     * input triangle, tree or planes here: the fill takes the piece as a triangle.
-     */
-    public int[] refs() {
-        return refs;
-    }
-
-    /** Adds a group that was not split: piece {@code piece} of the chunk's pieces is the whole input triangle. */
-    public void addSingle(int piece) {
-        int g = group();
-        refs[g] = -1 - piece;
-    }
-
-    /** A new group's number, with room for it. */
-    private int group() {
-        if (groups == refs.length) {
-            refs = Arrays.copyOf(refs, 2 * groups);
-        }
-        return groups++;
-    }
-
-    /** The number of nodes of the tree of split input triangle {@code i}, an index into {@link #inputs()} ({@link #refs()}). */
+    /** The number of nodes of the tree of input triangle {@code i}, an index into {@link #inputs()}. */
     public int nodeCount(int i) {
         return nodeCounts[i];
     }
 
     /**
-     * Adds a group that was split, of the {@link VertexLayout#TEXTURED} layout: the input triangle
+     * Adds an input triangle that was split, of the {@link VertexLayout#TEXTURED} layout: the input triangle
      * (screen pixels, {@code 1/w}, texel coordinates per corner); otherwise as the other form.
+     *
+     * @return the input triangle's index, the reference of its {@link Commands#TREE} command
      */
-    public void add(double x0, double y0, double q0, double s0, double t0,
+    public int add(double x0, double y0, double q0, double s0, double t0,
                     double x1, double y1, double q1, double s1, double t1,
                     double x2, double y2, double q2, double s2, double t2, int id, int material,
                     SplitTree tree, ScreenTriangles pieceTriangles, int firstPiece, int maxLevel) {
         inputs.add(x0, y0, q0, s0, t0, x1, y1, q1, s1, t1, x2, y2, q2, s2, t2, id, material);
-        addTree(tree, pieceTriangles, firstPiece, maxLevel);
+        return addTree(tree, pieceTriangles, firstPiece, maxLevel);
     }
 
     /**
-     * Adds a group that was split: the input triangle, from its three projected vertices in the
+     * Adds an input triangle that was split, from its three projected vertices in the
      * layout set ({@link #layout}; at offsets {@code a}, {@code b}, {@code c} of {@code v}, as a
      * {@link dev.trisect.tessellate.Tessellator} holds them), and its split tree as the tessellator
      * recorded it, whose leaf k is piece {@code firstPiece + k} of {@code pieceTriangles} (already
@@ -225,16 +199,17 @@ public final class SplitTrees {
      *
      * @param maxLevel the last level of the material's mip chain when the frame filters trilinearly
      *                 (each piece's level of detail is set up with it), else 0
+     * @return the input triangle's index, the reference of its {@link Commands#TREE} command
      */
-    public void add(double[] v, int a, int b, int c, int id, int material, SplitTree tree,
+    public int add(double[] v, int a, int b, int c, int id, int material, SplitTree tree,
                     ScreenTriangles pieceTriangles, int firstPiece, int maxLevel) {
         inputs.add(v, a, b, c, id, material, false, 0, ScreenTriangles.OUTER, ScreenTriangles.OUTER,
                 ScreenTriangles.OUTER);
-        addTree(tree, pieceTriangles, firstPiece, maxLevel);
+        return addTree(tree, pieceTriangles, firstPiece, maxLevel);
     }
 
-    /** The group of the input triangle just appended to {@link #inputs}: its tree and pieces. */
-    private void addTree(SplitTree tree, ScreenTriangles pieceTriangles, int firstPiece, int maxLevel) {
+    /** The tree and pieces of the input triangle just appended to {@link #inputs}; returns its index. */
+    private int addTree(SplitTree tree, ScreenTriangles pieceTriangles, int firstPiece, int maxLevel) {
         int root = tree.root();
         int[] treeKids = tree.kids();
         double[] treeLines = tree.lines();
@@ -242,7 +217,6 @@ public final class SplitTrees {
         int treeNodes = tree.nodes();
         int leaves = tree.leaves();
         int g = inputs.count() - 1;
-        refs[group()] = g;
         if (g == roots.length) {
             roots = Arrays.copyOf(roots, 2 * g);
             nodeCounts = Arrays.copyOf(nodeCounts, 2 * g);
@@ -271,6 +245,7 @@ public final class SplitTrees {
         }
         nodes = base + treeNodes;
         fitPieces(pieceTriangles, firstPiece, firstPiece + leaves, maxLevel);
+        return g;
     }
 
     private static int translate(int ref, int nodeBase, int firstPiece) {
@@ -323,8 +298,8 @@ public final class SplitTrees {
 
     /**
      * Gives storage back after a spike, keeping room for {@code n} pieces (and as many nodes and
-     * groups). Each kind of storage is trimmed on its own: a spike may grow one alone (a frame of
-     * unsplit triangles grows only the groups' references, a frame of off-screen pieces the nodes).
+     * input triangles). Each kind of storage is trimmed on its own: a spike may grow one alone (a frame
+     * of off-screen pieces grows only the nodes).
      */
     public void shrinkTo(int n) {
         int keep = Math.max(n, 1);
@@ -348,10 +323,6 @@ public final class SplitTrees {
         if (roots.length > i) {
             roots = Arrays.copyOf(roots, i);
             nodeCounts = Arrays.copyOf(nodeCounts, i);
-        }
-        int g = Math.max(keep, groups);
-        if (refs.length > g) {
-            refs = Arrays.copyOf(refs, g);
         }
     }
 }

@@ -7,10 +7,11 @@ import dev.trisect.base.internal.JsonObject;
  * What one frame did. Times are wall-clock nanoseconds. The transform and the whole frame are
  * measured; clipping and tessellation run interleaved on all threads, so the geometry stage's wall
  * time is shared between them in proportion to the time the threads spent on each. With the borders
- * on, filling and outlining also run interleaved (each band is outlined right after it is filled),
- * so {@code rasterNanos} and {@code overlayNanos} are then an estimate of the same kind, flagged by
- * {@code bandTimesEstimated} and named {@code ..._estimate} in {@link #toJson()}; with the borders off
- * the raster time is the measured wall time of the fill and the overlay's is 0. (The developer tools
+ * on or lines drawn, filling, outlining and drawing lines also run interleaved (each band is outlined
+ * and its lines drawn right after it is filled), so {@code rasterNanos} and {@code overlayNanos} are
+ * then an estimate of the same kind, flagged by {@code bandTimesEstimated} and named
+ * {@code ..._estimate} in {@link #toJson()}; without borders and lines the raster time is the measured
+ * wall time of the fill and the overlay's is 0. (The developer tools
  * time the overlay exactly by drawing it as a pass of its own after a frame drawn without borders; the
  * API offers no such pass.)
  *
@@ -37,19 +38,20 @@ import dev.trisect.base.internal.JsonObject;
  * @param transformNanos   vertex transform
  * @param clipNanos        culling and clipping
  * @param tessellateNanos  splitting and projection to screen triangles
- * @param rasterNanos      clearing and filling: measured with the borders off, else an estimate (its
- *                         share of the band pass's wall time)
+ * @param rasterNanos      clearing and filling: measured without borders and lines, else an estimate
+ *                         (its share of the band pass's wall time)
  * @param overlayNanos     border overlay, 0 when off; when on, an estimate: the band pass's wall time
  *                         shared out in proportion to the threads' time preparing the chunks' outlines
  *                         and outlining bands, over that and their time clearing and filling (the time
  *                         a band waits for the preparations is in neither)
  * @param bandTimesEstimated whether {@code rasterNanos} and {@code overlayNanos} are that estimate
- *                         (borders on) rather than measured
+ *                         (borders on or lines drawn) rather than measured
  * @param totalNanos       the whole frame
  * @param segmentsIn       line segments of the frame's line draws
  * @param segmentsDrawn    of those, the ones set up to draw: what clipping left, with length on screen
  * @param linePixels       pixels the lines wrote (depth test passed); not in {@code pixelsWritten}
- * @param lineNanos        the line pass (after the fill), measured; 0 without lines
+ * @param lineNanos        the lines: their set-up before the fill, measured, and their share of the
+ *                         band pass's wall time (an estimate, as the overlay's); 0 without lines
  */
 public record FrameStats(long trianglesIn, long culledBackFace, long culledFrustum, long culledDegenerate,
                          long skippedInvalid, long clipped, long pieces, long piecesOffScreen, long splits,

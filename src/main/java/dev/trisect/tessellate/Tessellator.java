@@ -1,12 +1,8 @@
 package dev.trisect.tessellate;
 
+import dev.trisect.math.Viewport;
 import dev.trisect.render.SplitPoint;
 import dev.trisect.render.TessellationSettings;
-import static dev.trisect.tessellate.VertexLayout.W;
-import static dev.trisect.tessellate.VertexLayout.X;
-import static dev.trisect.tessellate.VertexLayout.Y;
-
-import dev.trisect.math.Viewport;
 import java.util.Arrays;
 
 /**
@@ -32,7 +28,8 @@ import java.util.Arrays;
  * with a piece handed on before it, from the splits that made them ({@link PieceEdges}), so that no
  * later stage has to find shared edges by their positions.
  *
- * <p>The recursion runs on an explicit stack in primitive arrays, so no input can overflow the Java
+ * <p>The corners and cut points live in a {@link SplitVertices} pool, which also measures edges and
+ * pieces for the policy. The recursion runs on an explicit stack in primitive arrays, so no input can overflow the Java
  * stack, and nothing is allocated per triangle once the scratch arrays have grown to their working
  * size. One instance per thread.
  */
@@ -44,14 +41,8 @@ public final class Tessellator {
      */
     private static final int PIECE = 10;
 
-    /** Vertices in the layout last set ({@link #layout}), its {@link VertexLayout#projectedStride()} doubles each. */
-    private double[] vertices = new double[VertexLayout.PROJECTED_STRIDE * 256];
-    /** The layout's clip stride, projected stride and screen offsets. */
-    private int clipStride = VertexLayout.CLIP_STRIDE;
-    private int stride = VertexLayout.PROJECTED_STRIDE;
-    private int screenX = VertexLayout.SCREEN_X;
-    private int screenY = VertexLayout.SCREEN_Y;
-    private int vertexCount;
+    /** The current input triangle's corners and cut points. */
+    private final SplitVertices vertices = new SplitVertices();
     private int[] stack = new int[PIECE * 64];
     /** The split tree of the last triangle split. */
     private final SplitTree tree = new SplitTree();
@@ -62,16 +53,12 @@ public final class Tessellator {
     /** Whether pieces are handed on with their links (else every link is {@link PieceSink#OUTER}). */
     private boolean linking = true;
 
-    private Viewport viewport = new Viewport(1, 1);
     private TessellationSettings settings = TessellationSettings.defaults();
     /** The frame's shared piece budget, or null for none. */
     private PieceBudget budget;
     private boolean errorPolicy;
-    private SplitPoint splitPoint = SplitPoint.SCREEN;
     private double threshold;
 
-    private double width = 1;
-    private double height = 1;
     private long splits;
     private long pieces;
     private long culledOffScreen;
@@ -81,12 +68,9 @@ public final class Tessellator {
 
     /** Sets the frame's viewport and split settings for the triangles that follow. */
     public void configure(Viewport viewport, TessellationSettings settings) {
-        this.viewport = viewport;
-        this.width = viewport.width();
-        this.height = viewport.height();
+        vertices.configure(viewport, settings.splitPoint());
         this.settings = settings;
         this.errorPolicy = settings.policy().measuresError();
-        this.splitPoint = settings.splitPoint();
         double px = settings.policy().threshold(settings);
         // The edge policy compares squared lengths, sparing a square root per edge.
         this.threshold = errorPolicy ? px : px * px;
@@ -94,10 +78,7 @@ public final class Tessellator {
 
     /** Sets the layout of the vertices that follow ({@link VertexLayout#TEXTURED} until set). */
     public void layout(VertexLayout vertexLayout) {
-        clipStride = vertexLayout.clipStride();
-        stride = vertexLayout.projectedStride();
-        screenX = vertexLayout.screenX();
-        screenY = vertexLayout.screenY();
+        vertices.layout(vertexLayout);
     }
 
     /**
@@ -168,7 +149,7 @@ public final class Tessellator {
      * next {@link #process}.
      */
     public double[] vertices() {
-        return vertices;
+        return vertices.array();
     }
 
     /** The split tree of the last triangle processed (see {@link SplitTree}); scratch, like {@link #vertices()}. */
@@ -188,11 +169,12 @@ public final class Tessellator {
      * @param sink   receives the pieces
      */
     public void process(double[] input, int i0, int i1, int i2, boolean split, PieceSink sink) {
-        vertexCount = 0;
+        SplitVertices pool = vertices;
+        pool.clear();
         tree.clear();
-        int a = load(input, i0);
-        int b = load(input, i1);
-        int c = load(input, i2);
+        int a = pool.load(input, i0);
+        int b = pool.load(input, i1);
+        int c = pool.load(input, i2);
         int[] link = links;
         link[0] = PieceSink.OUTER;
         link[1] = PieceSink.OUTER;
@@ -200,7 +182,7 @@ public final class Tessellator {
         if (!split) {
             pieces++;
             tree.leaf(-1);
-            sink.piece(vertices, a, b, c, 0, false, link);
+            sink.piece(pool.array(), a, b, c, 0, false, link);
             return;
         }
         long allowance = Long.MAX_VALUE;
@@ -233,16 +215,17 @@ public final class Tessellator {
             int e1 = st[p + 7];
             int e2 = st[p + 8];
             int slot = st[p + 9];
-            if (offScreen(v0, v1, v2)) {
+            if (pool.offScreen(v0, v1, v2)) {
                 // Nothing of it can be seen, so it is neither split nor filled. Its edges lie off
                 // screen too, so a neighbour that does split a shared edge cannot open a visible crack.
                 culledOffScreen++;
                 tree.refer(slot, SplitTree.NO_PIECE);
                 continue;
             }
-            double m0 = measure(v0, v1);
-            double m1 = measure(v1, v2);
-            double m2 = measure(v2, v0);
+            boolean error = errorPolicy;
+            double m0 = pool.measure(v0, v1, error);
+            double m1 = pool.measure(v1, v2, error);
+            double m2 = pool.measure(v2, v0, error);
             // Pick the failing edge with the largest measure among those still allowed to split.
             int edge = -1;
             double worst = threshold;
@@ -289,7 +272,7 @@ public final class Tessellator {
                 if (atCap) {
                     capped = true;
                 }
-                boolean perPixel = atCap || thin(v0, v1, v2);
+                boolean perPixel = atCap || pool.thin(v0, v1, v2);
                 if (perPixel) {
                     fallbackPieces++;
                 }
@@ -300,7 +283,7 @@ public final class Tessellator {
                     handedOn++;
                 }
                 tree.leaf(slot);
-                sink.piece(vertices, v0, v1, v2, level, perPixel, link);
+                sink.piece(pool.array(), v0, v1, v2, level, perPixel, link);
                 continue;
             }
             if (splitsHere + 2L > allowance) {
@@ -324,11 +307,11 @@ public final class Tessellator {
             int halfQ = PieceEdges.OUTER;
             if (epq == PieceEdges.OUTER) {
                 // On the input triangle's boundary, or links are off: nothing to take or record.
-                m = cut(vp, vq);
+                m = pool.cut(vp, vq);
             } else {
                 m = pe.cut(epq);
                 if (m < 0) {
-                    m = cut(vp, vq);
+                    m = pool.cut(vp, vq);
                     pe.split(epq, m);
                 }
                 halfP = pe.halfAt(epq, vp);
@@ -336,7 +319,8 @@ public final class Tessellator {
             }
             int inner = tracking ? pe.add(m) : PieceEdges.OUTER;
             int half = lpq + 1;
-            int pSlot = tree.split(vertices, slot, m + screenX, vr + screenX, vp + screenX);
+            int screenX = pool.screenX();
+            int pSlot = tree.split(pool.array(), slot, m + screenX, vr + screenX, vp + screenX);
             // The new inner edge m-r also gets level lpq + 1: every split then lowers the sum of
             // 2^(maxLevel - level) over a piece's edges, so splitting ends even without the piece cap.
             top = push(top, m, vq, vr, half, lqr, half, halfQ, eqr, inner, pSlot ^ 1);
@@ -349,93 +333,6 @@ public final class Tessellator {
         if (budget != null) {
             budget.charge(splitsHere + 1L);
         }
-    }
-
-    /** Whether the piece is a sliver ({@link Slivers#sliver}), by its corners' screen positions. */
-    private boolean thin(int a, int b, int c) {
-        double[] v = vertices;
-        return Slivers.sliver(v[a + screenX], v[a + screenY], v[b + screenX], v[b + screenY], v[c + screenX],
-                v[c + screenY]);
-    }
-
-    /** Whether the piece's screen bounding box misses the viewport entirely. */
-    private boolean offScreen(int a, int b, int c) {
-        double[] v = vertices;
-        double xa = v[a + screenX];
-        double xb = v[b + screenX];
-        double xc = v[c + screenX];
-        double ya = v[a + screenY];
-        double yb = v[b + screenY];
-        double yc = v[c + screenY];
-        return (xa < 0 && xb < 0 && xc < 0) || (ya < 0 && yb < 0 && yc < 0)
-                || (xa > width && xb > width && xc > width) || (ya > height && yb > height && yc > height);
-    }
-
-    /** Edge measure: squared screen length (edge policy) or the affine error bound in pixels. */
-    private double measure(int a, int b) {
-        double[] v = vertices;
-        double dx = v[a + screenX] - v[b + screenX];
-        double dy = v[a + screenY] - v[b + screenY];
-        double lengthSquared = dx * dx + dy * dy;
-        if (!errorPolicy) {
-            return lengthSquared;
-        }
-        return EdgeBound.affineError(Math.sqrt(lengthSquared), v[a + W], v[b + W]);
-    }
-
-    private int load(double[] input, int offset) {
-        int o = reserveVertex();
-        double[] v = vertices;
-        VertexLayout.copy(input, offset, v, o, clipStride);
-        project(o);
-        return o;
-    }
-
-    /**
-     * The cut point of edge a-b as a new vertex: {@code (a * ka + b * kb) / (ka + kb)} in clip space
-     * and texel coordinates, a point of the 3D edge, with weights from the view depths (see
-     * {@link SplitPoint}). Symmetric in a and b bit for bit.
-     */
-    private int cut(int a, int b) {
-        int o = reserveVertex();
-        double[] v = vertices;
-        double ka;
-        double kb;
-        switch (splitPoint) {
-            case SCREEN -> {
-                ka = v[b + W];
-                kb = v[a + W];
-            }
-            case GEOMETRIC -> {
-                ka = Math.sqrt(v[b + W]);
-                kb = Math.sqrt(v[a + W]);
-            }
-            default -> {
-                ka = 1;
-                kb = 1;
-            }
-        }
-        double sum = ka + kb;
-        for (int k = 0; k < clipStride; k++) {
-            v[o + k] = (v[a + k] * ka + v[b + k] * kb) / sum;
-        }
-        project(o);
-        return o;
-    }
-
-    private void project(int o) {
-        double[] v = vertices;
-        v[o + screenX] = viewport.screenX(v[o + X], v[o + W]);
-        v[o + screenY] = viewport.screenY(v[o + Y], v[o + W]);
-    }
-
-    private int reserveVertex() {
-        int o = vertexCount * stride;
-        if (o + stride > vertices.length) {
-            vertices = Arrays.copyOf(vertices, vertices.length * 2);
-        }
-        vertexCount++;
-        return o;
     }
 
     private int push(int top, int v0, int v1, int v2, int l0, int l1, int l2, int e0, int e1, int e2, int slot) {

@@ -10,7 +10,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import dev.trisect.content.DemoScenes;
 import dev.trisect.content.SceneAsset;
 import dev.trisect.math.Viewport;
-import dev.trisect.raster.BandBins;
+import dev.trisect.raster.Commands;
 import dev.trisect.render.Framebuffer;
 import dev.trisect.texture.Texture;
 import java.util.ArrayList;
@@ -29,6 +29,8 @@ import org.junit.jupiter.api.Timeout;
  */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
 class WorkerPoolTest {
+    /** A frame without lines. */
+    private static final Commands NO_LINES = new Commands(null, null, null);
     /** The pool's helper threads, found by name. */
     private static List<Thread> helpers(String name) {
         List<Thread> found = new ArrayList<>();
@@ -259,15 +261,16 @@ class WorkerPoolTest {
                     double x = 4 + 20 * c;
                     chunk.out.add(x, 2, 1, 0, 0, x + 16, 40, 1, 2, 0, x, 44, 1, 0, 2, c,
                             broken && c == 1 ? 5 : 0);
-                    chunk.bin(BandBins.bandCount(h, FrameRenderer.BAND_ROWS), h);
+                    chunk.commands.add(Commands.TRIANGLE, 0);
+                    chunk.bin(h);
                 }
                 Framebuffer fb = new Framebuffer(w, h);
                 if (broken) {
                     assertThrows(ArrayIndexOutOfBoundsException.class,
-                            () -> bands.draw(fb, chunks, 3, textures, s, null, outlines, pool));
+                            () -> bands.draw(fb, chunks, 3, textures, s, null, outlines, NO_LINES, pool));
                     assertHelpersParked(name, 2);
                 } else {
-                    BandPass.Result result = bands.draw(fb, chunks, 3, textures, s, null, outlines, pool);
+                    BandPass.Result result = bands.draw(fb, chunks, 3, textures, s, null, outlines, NO_LINES, pool);
                     assertTrue(result.pixels() > 0);
                     if (expected == null) {
                         expected = fb;

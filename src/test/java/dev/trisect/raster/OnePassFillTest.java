@@ -24,7 +24,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
 /**
- * The tessellated path's one-pass fill ({@link Rasterizer#fillTrees}) against the per-pixel path and
+ * The tessellated path's one-pass fill ({@link Rasterizer#fillTree}) against the per-pixel path and
  * the piece-by-piece fill, on random triangles split by the tessellator into random trees (both
  * policies, every split point, caps that stop the splitting now and then, fallback pieces, texel
  * coordinates now and then too large for fixed point), filled in bands of random height:
@@ -79,9 +79,7 @@ class OnePassFillTest {
             splitTrees += tess.splitTree().nodes() > 0 ? 1 : 0;
             SplitTrees trees = new SplitTrees();
             boolean single = tess.splitTree().nodes() == 0;
-            if (single) {
-                trees.addSingle(0);
-            } else {
+            if (!single) {
                 int maxLevel = filter == TextureFilter.TRILINEAR ? textures[material].mipChain().maxLevel() : 0;
                 double[] v = tess.vertices();
                 int a = 0;
@@ -98,7 +96,12 @@ class OnePassFillTest {
             r.filter(filter);
             int band = 1 + random.nextInt(HEIGHT);
             for (int y0 = 0; y0 < HEIGHT; y0 += band) {
-                r.fillTrees(onePass, trees, pieces, new int[] {0}, 0, 1, textures, 0, y0, WIDTH, Math.min(HEIGHT, y0 + band));
+                if (single) {
+                    // Not split: its one piece is the input triangle, a TRIANGLE command.
+                    r.fill(onePass, pieces, new int[] {0}, 0, 1, textures, false, 0, y0, WIDTH, Math.min(HEIGHT, y0 + band));
+                } else {
+                    r.fillTree(onePass, trees, 0, textures, 0, y0, WIDTH, Math.min(HEIGHT, y0 + band));
+                }
             }
             Framebuffer perPixel = frame();
             r.fill(perPixel, single ? pieces : trees.inputs(), new int[] {0}, 0, 1, textures, true, 0, 0, WIDTH, HEIGHT);

@@ -3,47 +3,51 @@ package dev.trisect.pipeline;
 import dev.trisect.math.Mat4;
 import dev.trisect.math.Viewport;
 import dev.trisect.mesh.Lines;
-import dev.trisect.raster.LineRaster;
-import dev.trisect.render.Framebuffer;
+import dev.trisect.raster.Commands;
+import dev.trisect.raster.LineSetup;
+import dev.trisect.raster.Segments;
 
 /**
- * The line pass, after the fill: every segment of the frame's line draws to clip space by its draw's
- * model-view-projection, clipped there against the near and far planes (a segment crossing the near
- * plane is cut, never dropped) and a guard band {@link ChunkGeometry#GUARD_PIXELS} beyond the screen's
- * sides, projected and set up once ({@link LineRaster}), then drawn band by band in parallel, every band
- * taking the segments in order, so the image does not depend on the thread count.
+ * The lines' geometry, before the fill: every segment of the frame's line draws to clip space by its
+ * draw's model-view-projection, clipped there against the near and far planes (a segment crossing the
+ * near plane is cut, never dropped) and a guard band {@link ChunkGeometry#GUARD_PIXELS} beyond the
+ * screen's sides, projected, set up once ({@link LineSetup}) and listed as a {@link Commands#LINE}
+ * command, in draw and segment order; the list is binned into the fill's bands, where each band draws
+ * its lines after its triangles ({@link BandPass}), so the image does not depend on the thread count.
  */
-final class LinePass {
+final class LineGeometry {
     /**
-     * What a line pass did.
+     * What the lines' geometry did.
      *
      * @param segments segments set up (after clipping; those that may light a pixel)
-     * @param pixels   pixels written (depth test passed)
-     * @param nanos    wall time of the pass
+     * @param nanos    wall time of it
      */
-    record Result(long segments, long pixels, long nanos) {
-        static final Result NONE = new Result(0, 0, 0);
+    record Result(long segments, long nanos) {
+        static final Result NONE = new Result(0, 0);
     }
 
-    private final LineRaster raster = new LineRaster();
-    private final long[] pixels;
+    private final Segments segments = new Segments();
+    private final LineSetup setup = new LineSetup();
+    /** The frame's lines as commands: what the fill draws after each band's triangles. */
+    private final Commands commands = new Commands(null, null, segments);
     private double[] clip = new double[0];
     /** The segment being clipped: x, y, z, w of each end. */
     private final double[] ends = new double[8];
 
-    /** @param threads the threads of the pool that will run it */
-    LinePass(int threads) {
-        pixels = new long[threads];
+    /** The lines of the frame last set up, binned into the fill's bands. */
+    Commands commands() {
+        return commands;
     }
 
-    Result draw(Draws draws, Framebuffer frame, WorkerPool pool) {
+    /** Sets up and bins the lines of {@code draws} for a frame of {@code width x height} pixels. */
+    Result setUp(Draws draws, int width, int height) {
+        commands.clear();
+        segments.begin(width, height);
         if (draws.lineDrawCount() == 0) {
+            commands.bin(height, FrameRenderer.BAND_ROWS);
             return Result.NONE;
         }
         long start = System.nanoTime();
-        int width = frame.width();
-        int height = frame.height();
-        raster.begin(width, height);
         Viewport viewport = new Viewport(width, height);
         double gx = 1 + 2.0 * ChunkGeometry.GUARD_PIXELS / width;
         double gy = 1 + 2.0 * ChunkGeometry.GUARD_PIXELS / height;
@@ -57,24 +61,17 @@ final class LinePass {
             for (int s = 0; s < colours.length; s++) {
                 if (clip(ends[2 * s], ends[2 * s + 1], gx, gy)) {
                     double[] e = this.ends;
-                    raster.add(viewport.screenX(e[0], e[3]), viewport.screenY(e[1], e[3]), nearer / e[3],
-                            viewport.screenX(e[4], e[7]), viewport.screenY(e[5], e[7]), nearer / e[7], lineWidth,
-                            colours[s]);
+                    int ref = segments.count();
+                    if (setup.add(segments, viewport.screenX(e[0], e[3]), viewport.screenY(e[1], e[3]),
+                            nearer / e[3], viewport.screenX(e[4], e[7]), viewport.screenY(e[5], e[7]),
+                            nearer / e[7], lineWidth, colours[s])) {
+                        commands.add(Commands.LINE, ref);
+                    }
                 }
             }
         }
-        java.util.Arrays.fill(pixels, 0);
-        int[] color = frame.colour();
-        float[] depth = frame.depth();
-        int rows = FrameRenderer.BAND_ROWS;
-        int bands = (height + rows - 1) / rows;
-        raster.bin(rows);
-        pool.run(bands, (thread, b) -> pixels[thread] += raster.drawBand(color, depth, b));
-        long written = 0;
-        for (long p : pixels) {
-            written += p;
-        }
-        return new Result(raster.count(), written, System.nanoTime() - start);
+        commands.bin(height, FrameRenderer.BAND_ROWS);
+        return new Result(segments.count(), System.nanoTime() - start);
     }
 
     private void transform(Lines lines, Mat4 mvp) {
