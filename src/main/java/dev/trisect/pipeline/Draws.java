@@ -4,6 +4,7 @@ import dev.trisect.light.FogPass;
 import dev.trisect.math.Mat4;
 import dev.trisect.mesh.Lines;
 import dev.trisect.mesh.Mesh;
+import dev.trisect.raster.QuadRaster;
 import dev.trisect.render.Fog;
 import dev.trisect.texture.Texture;
 import java.util.Arrays;
@@ -21,7 +22,8 @@ import java.util.Objects;
  * single-mesh frame: every base is 0.
  *
  * <p>Lines ({@link #addLines}) are a list of their own, drawn in their order after every mesh's
- * triangles (see {@link LineGeometry}).
+ * triangles (see {@link LineGeometry}); the screen-aligned quads ({@link #quads()}) after the fill (see
+ * {@link QuadPass}).
  */
 public final class Draws {
     private Mesh[] meshes = new Mesh[4];
@@ -40,11 +42,14 @@ public final class Draws {
     private int lineCount;
     private long segmentCount;
     private Fog fog;
+    /** The frame's screen-aligned quads: billboards, glyphs, text backdrops, in drawing order. */
+    private final QuadRaster quads = new QuadRaster();
     /** The pass of the last fog set, kept across {@link #clear} for the next frame's same fog. */
     private FogPass fogPass;
 
-    /** Removes every draw and the fog, keeping the storage. */
+    /** Removes every draw, every quad and the fog, keeping the storage. */
     public void clear() {
+        quads.clear();
         Arrays.fill(lines, 0, lineCount, null);
         Arrays.fill(lineTransforms, 0, lineCount, null);
         lineCount = 0;
@@ -202,6 +207,17 @@ public final class Draws {
     /** Segments of all line draws. */
     public long segmentCount() {
         return segmentCount;
+    }
+
+    /**
+     * The frame's screen-aligned quads — billboards, the glyphs of labels and screen text — laid out
+     * in screen pixels for this frame's size by whoever fills the draws, and drawn in the order added
+     * after the lines; emptied by {@link #clear}.
+     *
+     * @return the quads, to add to
+     */
+    public QuadRaster quads() {
+        return quads;
     }
 
     /** Number of draws. */

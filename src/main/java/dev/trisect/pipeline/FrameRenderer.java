@@ -17,7 +17,7 @@ import java.util.List;
  * {@link ClipSpace}, {@link ChunkGeometry}, {@link DepthCapSearch}) makes the chunks' screen
  * triangles, {@link BandPass} fills them band by band, and with the borders on {@link Outlines} draws
  * the border overlay on each band as it is filled, {@link LineGeometry} sets up the lines that each band draws over its filled
- * frame; {@link FrameStatsBuilder} makes the statistics, all
+ * frame, {@link QuadPass} draws the billboards, labels and screen text after the fill; {@link FrameStatsBuilder} makes the statistics, all
  * on the threads of one {@link WorkerPool}. What the frame drew is kept as a {@link FrameRecord}
  * ({@link #drawn()}), which answers the pixel inspector's questions until the next frame.
  *
@@ -53,7 +53,11 @@ public final class FrameRenderer implements AutoCloseable {
     private final BandPass bands;
     private final Outlines outlines;
     private final LineGeometry lines;
-    /** The frame's passes, in the order they run: the geometry, the lines' geometry, the fill (see {@link FramePass}). */
+    private final QuadPass quads;
+    /**
+     * The frame's passes, in the order they run: the geometry, the lines' geometry, the fill, the quads
+     * (see {@link FramePass}).
+     */
     private final List<FramePass> passes;
     /**
      * What the frame last drawn by {@link #render} (or laid out by {@link #coverage}) drew, which
@@ -96,7 +100,9 @@ public final class FrameRenderer implements AutoCloseable {
         this.bands = new BandPass(threads);
         this.outlines = new Outlines(threads);
         this.lines = new LineGeometry();
-        List<FramePass> all = new java.util.ArrayList<>(List.of(this::geometryPass, this::linePass, this::fillPass));
+        this.quads = new QuadPass(threads);
+        List<FramePass> all = new java.util.ArrayList<>(List.of(this::geometryPass, this::linePass, this::fillPass,
+                this::quadPass));
         all.addAll(later);
         this.passes = List.copyOf(all);
     }
@@ -137,7 +143,8 @@ public final class FrameRenderer implements AutoCloseable {
      * Draws every draw into {@code frame}, one depth buffer for all, after clearing it: each mesh's
      * positions go through that draw's own model-view-projection, so moving one object never touches
      * another's data. The draws' lines come after every triangle (and, with the borders on, after the
-     * overlay), depth-tested against them ({@link LineGeometry}); they leave the UV output as it is.
+     * overlay), depth-tested against them ({@link LineGeometry}), and the quads after the fill
+     * ({@link QuadPass}); neither touches the UV output.
      * Triangles are numbered across the draws (see {@link Draws}) in the UV output and in
      * {@link FrameRecord#pieceAt}.
      *
@@ -155,7 +162,7 @@ public final class FrameRenderer implements AutoCloseable {
         drawn = record(job.chunkCount(), frame.width(), frame.height(), settings);
         return new FrameStatsBuilder(pool.threads(), job.start)
                 .geometry(draws.triangleCount(), job.chunks, job.geometry, job.geometryDone)
-                .bands(job.bands, job.bandsDone, settings.borders(), job.lines, draws.segmentCount());
+                .bands(job.bands, job.bandsDone, settings.borders(), job.lines, draws.segmentCount(), job.quads);
     }
 
     /** The geometry pass: the chunks' screen triangles. */
@@ -177,6 +184,11 @@ public final class FrameRenderer implements AutoCloseable {
     /** The lines' geometry: the draws' segments clipped, set up and binned for the fill. */
     private void linePass(FrameJob job) {
         job.lines = lines.setUp(job.draws, job.frame.width(), job.frame.height());
+    }
+
+    /** The quad pass: billboards, labels and screen text over everything else (see {@link QuadPass}). */
+    private void quadPass(FrameJob job) {
+        job.quads = quads.draw(job.draws, job.frame, job.pool);
     }
 
     private FrameRecord record(int chunkCount, int width, int height, RenderSettings settings) {

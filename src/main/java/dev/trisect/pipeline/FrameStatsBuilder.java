@@ -74,14 +74,15 @@ final class FrameStatsBuilder {
      * overlay drawn in it or not.
      */
     FrameStats bands(BandPass.Result result, long end, boolean borders) {
-        return bands(result, end, borders, LineGeometry.Result.NONE, 0);
+        return bands(result, end, borders, LineGeometry.Result.NONE, 0, QuadPass.Result.NONE);
     }
 
     /**
      * The lines' geometry ({@code lines}, with {@code segmentsIn} segments given), then the band pass,
-     * done at {@code end}, which ends the frame.
+     * done at {@code end}, then the quad pass ({@code quads}), which ends the frame.
      */
-    FrameStats bands(BandPass.Result result, long end, boolean borders, LineGeometry.Result lines, long segmentsIn) {
+    FrameStats bands(BandPass.Result result, long end, boolean borders, LineGeometry.Result lines, long segmentsIn,
+                     QuadPass.Result quads) {
         // Filling, outlining and drawing lines run interleaved on all threads, so none has a wall time
         // of its own: the band pass's wall time is shared out in proportion to the time the threads
         // spent on each, an estimate that FrameStats names as such.
@@ -97,7 +98,8 @@ final class FrameStatsBuilder {
         return new FrameStats(triangles, back, frustum, degenerate, invalid, clipped, pieces, offScreen, splits,
                 deepest, caps, fallback, pieceBudget, budgetDepth, result.pixels(), threads, transformed - start,
                 clipWall, geometryWall - clipWall, bandsWall - overlay - lineShare, overlay,
-                borders || lines.segments() > 0, end - start, segmentsIn, lines.segments(), result.linePixels(),
-                lines.nanos() + lineShare);
+                borders || lines.segments() > 0, end + quads.nanos() - start, segmentsIn, lines.segments(),
+                result.linePixels(), lines.nanos() + lineShare, quads.billboards(), quads.glyphs(), quads.pixels(),
+                quads.nanos());
     }
 }

@@ -52,6 +52,11 @@ import dev.trisect.base.internal.JsonObject;
  * @param linePixels       pixels the lines wrote (depth test passed); not in {@code pixelsWritten}
  * @param lineNanos        the lines: their set-up before the fill, measured, and their share of the
  *                         band pass's wall time (an estimate, as the overlay's); 0 without lines
+ * @param billboards       billboards in the frame (each a screen-aligned quad), before clipping to the screen
+ * @param glyphs           glyphs of labels and screen text in the frame, likewise
+ * @param quadPixels       pixels the billboards, glyphs and text backdrops wrote (or blended); not in
+ *                         {@code pixelsWritten}
+ * @param quadNanos        the quad pass (after the fill), measured; 0 without quads
  */
 public record FrameStats(long trianglesIn, long culledBackFace, long culledFrustum, long culledDegenerate,
                          long skippedInvalid, long clipped, long pieces, long piecesOffScreen, long splits,
@@ -59,7 +64,52 @@ public record FrameStats(long trianglesIn, long culledBackFace, long culledFrust
                          int budgetDepth, long pixelsWritten, int threads,
                          long transformNanos, long clipNanos, long tessellateNanos, long rasterNanos,
                          long overlayNanos, boolean bandTimesEstimated, long totalNanos, long segmentsIn,
-                         long segmentsDrawn, long linePixels, long lineNanos) {
+                         long segmentsDrawn, long linePixels, long lineNanos, long billboards, long glyphs,
+                         long quadPixels, long quadNanos) {
+
+    /**
+     * The statistics of a frame without billboards or text.
+     *
+     * @param trianglesIn        input triangles
+     * @param culledBackFace     dropped as seen from behind
+     * @param culledFrustum      dropped as outside the view volume
+     * @param culledDegenerate   dropped for having no area
+     * @param skippedInvalid     skipped for invalid coordinates
+     * @param clipped            cut by a plane
+     * @param pieces             triangles filled
+     * @param piecesOffScreen    pieces dropped off screen
+     * @param splits             edge cuts made
+     * @param deepestSplit       highest edge level reached
+     * @param capsReached        input triangles a cap stopped short
+     * @param piecesFallback     pieces filled per pixel
+     * @param pieceBudget        the frame's piece budget
+     * @param budgetDepth        the depth cap the budget forced, or -1
+     * @param pixelsWritten      pixels that passed the depth test
+     * @param threads            threads that filled the frame
+     * @param transformNanos     vertex transform
+     * @param clipNanos          culling and clipping
+     * @param tessellateNanos    splitting and projection
+     * @param rasterNanos        clearing and filling
+     * @param overlayNanos       border overlay
+     * @param bandTimesEstimated whether the band times are estimates
+     * @param totalNanos         the whole frame
+     * @param segmentsIn         line segments given
+     * @param segmentsDrawn      line segments set up to draw
+     * @param linePixels         pixels the lines wrote
+     * @param lineNanos          the line pass
+     */
+    public FrameStats(long trianglesIn, long culledBackFace, long culledFrustum, long culledDegenerate,
+                      long skippedInvalid, long clipped, long pieces, long piecesOffScreen, long splits,
+                      int deepestSplit, long capsReached, long piecesFallback, long pieceBudget,
+                      int budgetDepth, long pixelsWritten, int threads,
+                      long transformNanos, long clipNanos, long tessellateNanos, long rasterNanos,
+                      long overlayNanos, boolean bandTimesEstimated, long totalNanos, long segmentsIn,
+                      long segmentsDrawn, long linePixels, long lineNanos) {
+        this(trianglesIn, culledBackFace, culledFrustum, culledDegenerate, skippedInvalid, clipped, pieces,
+                piecesOffScreen, splits, deepestSplit, capsReached, piecesFallback, pieceBudget, budgetDepth,
+                pixelsWritten, threads, transformNanos, clipNanos, tessellateNanos, rasterNanos, overlayNanos,
+                bandTimesEstimated, totalNanos, segmentsIn, segmentsDrawn, linePixels, lineNanos, 0, 0, 0, 0);
+    }
 
     /**
      * The statistics of a frame without lines.
@@ -97,7 +147,7 @@ public record FrameStats(long trianglesIn, long culledBackFace, long culledFrust
         this(trianglesIn, culledBackFace, culledFrustum, culledDegenerate, skippedInvalid, clipped, pieces,
                 piecesOffScreen, splits, deepestSplit, capsReached, piecesFallback, pieceBudget, budgetDepth,
                 pixelsWritten, threads, transformNanos, clipNanos, tessellateNanos, rasterNanos, overlayNanos,
-                bandTimesEstimated, totalNanos, 0, 0, 0, 0);
+                bandTimesEstimated, totalNanos, 0, 0, 0, 0, 0, 0, 0, 0);
     }
 
     /**
@@ -163,6 +213,9 @@ public record FrameStats(long trianglesIn, long culledBackFace, long culledFrust
                 .put("segments_in", segmentsIn)
                 .put("segments_drawn", segmentsDrawn)
                 .put("line_pixels", linePixels)
+                .put("billboards", billboards)
+                .put("glyphs", glyphs)
+                .put("quad_pixels", quadPixels)
                 .put("ms", new JsonObject()
                         .put("transform", transformNanos / 1e6, 3)
                         .put("clip", clipNanos / 1e6, 3)
@@ -170,6 +223,7 @@ public record FrameStats(long trianglesIn, long culledBackFace, long culledFrust
                         .put(bandTimesEstimated ? "raster_estimate" : "raster", rasterNanos / 1e6, 3)
                         .put(bandTimesEstimated ? "overlay_estimate" : "overlay", overlayNanos / 1e6, 3)
                         .put("lines", lineNanos / 1e6, 3)
+                        .put("quads", quadNanos / 1e6, 3)
                         .put("total", totalNanos / 1e6, 3));
     }
 

@@ -44,14 +44,17 @@ public final class Scene extends Group {
      * @param lines     its own lines, object space
      * @param wire      its mesh's edges when its style draws them, else {@link Lines#EMPTY}
      * @param lineWidth the width of its lines and wire, pixels
+     * @param billboards its billboards, points in object space
+     * @param labels    its labels, points in object space
      */
     public record Placed(SceneObject object, Mesh mesh, List<Material> materials, Mat4 world, boolean filled,
-                         Lines lines, Lines wire, int lineWidth) {
+                         Lines lines, Lines wire, int lineWidth, List<Billboard> billboards, List<Label> labels) {
     }
 
     /** Changes counted by {@link #version()}; written under {@link Node#LOCK}. */
     private volatile long version;
     private volatile Fog fog;
+    private volatile List<ScreenText> screenText = List.of();
 
     /** An empty scene. */
     public Scene() {
@@ -150,6 +153,33 @@ public final class Scene extends Group {
      */
     public Optional<Fog> fog() {
         return Optional.ofNullable(fog);
+    }
+
+    /**
+     * Shows {@code texts} over every frame of the scene from the next frame on, anchored to the corners
+     * of the screen, in order (a later one over an earlier one where they meet); replaces those shown
+     * before.
+     *
+     * @param texts the screen texts; an empty list for none
+     */
+    public void setScreenText(List<ScreenText> texts) {
+        List<ScreenText> copy = List.copyOf(Objects.requireNonNull(texts, "texts is null: use List.of()"));
+        LOCK.lock();
+        try {
+            this.screenText = copy;
+            changed();
+        } finally {
+            LOCK.unlock();
+        }
+    }
+
+    /**
+     * The text shown over the scene's frames.
+     *
+     * @return the screen texts, in order: an unmodifiable list
+     */
+    public List<ScreenText> screenText() {
+        return screenText;
     }
 
     /**

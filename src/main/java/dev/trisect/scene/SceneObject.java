@@ -52,6 +52,9 @@ public final class SceneObject extends Node {
     private static final Mesh NO_TRIANGLES = new MeshBuilder().build();
 
     private volatile Look look;
+    /** The object's billboards and labels, replaced whole under {@link Node#LOCK}. */
+    private volatile List<Billboard> billboards = List.of();
+    private volatile List<Label> labels = List.of();
 
     private static final String NOTES_NULL = "notes is null: pass note -> { } to ignore them";
 
@@ -94,6 +97,80 @@ public final class SceneObject extends Node {
         o.setLines(lines);
         o.setLineWidth(width);
         return o;
+    }
+
+    /**
+     * An object of billboards alone: no triangles.
+     *
+     * @param billboards the billboards, their points in object space
+     * @return the object
+     */
+    public static SceneObject billboards(List<Billboard> billboards) {
+        SceneObject o = new SceneObject(NO_TRIANGLES, Material.colour(0xFFFFFF));
+        o.setBillboards(billboards);
+        return o;
+    }
+
+    /**
+     * An object of labels alone: no triangles.
+     *
+     * @param labels the labels, their points in object space
+     * @return the object
+     */
+    public static SceneObject labels(List<Label> labels) {
+        SceneObject o = new SceneObject(NO_TRIANGLES, Material.colour(0xFFFFFF));
+        o.setLabels(labels);
+        return o;
+    }
+
+    /**
+     * The object's billboards, moved with it (none unless set).
+     *
+     * @return the billboards: an unmodifiable list
+     */
+    public List<Billboard> billboards() {
+        return billboards;
+    }
+
+    /**
+     * Draws {@code billboards} with the object from the next frame on, their points moved as its mesh is.
+     *
+     * @param billboards the billboards, in object space; an empty list for none
+     */
+    public void setBillboards(List<Billboard> billboards) {
+        List<Billboard> copy = List.copyOf(Objects.requireNonNull(billboards, "billboards is null: use List.of()"));
+        LOCK.lock();
+        try {
+            this.billboards = copy;
+            changed();
+        } finally {
+            LOCK.unlock();
+        }
+    }
+
+    /**
+     * The object's labels, moved with it (none unless set).
+     *
+     * @return the labels: an unmodifiable list
+     */
+    public List<Label> labels() {
+        return labels;
+    }
+
+    /**
+     * Draws {@code labels} with the object from the next frame on, their points moved as its mesh is.
+     *
+     * @param labels the labels, in object space; an empty list for none
+     */
+    public void setLabels(List<Label> labels) {
+        List<Label> copy = List.copyOf(Objects.requireNonNull(labels, "labels is null: use List.of()"));
+        LOCK.lock();
+        try {
+            this.labels = copy;
+            changed();
+        } finally {
+            LOCK.unlock();
+        }
     }
 
     /**
@@ -241,7 +318,7 @@ public final class SceneObject extends Node {
     Scene.Placed placed(Mat4 world) {
         Look l = look;
         return new Scene.Placed(this, l.mesh(), l.materials(), world, l.style().fills(), l.lines(), l.wire(),
-                l.lineWidth());
+                l.lineWidth(), billboards, labels);
     }
 
     private static List<Material> checked(Mesh mesh, List<Material> materials) {

@@ -82,6 +82,7 @@ public final class SceneRenderer implements AutoCloseable {
         Objects.requireNonNull(frame, "framebuffer is null");
         Drawn d = new Drawn(scene.snapshot(), scene.fog().orElse(null), camera, settings, frame.width(),
                 frame.height(), draws);
+        d.frame.withScreenText(scene.screenText());
         FrameStats stats = renderer.render(draws, settings, frame);
         d.uvFrame = frame.uv() != null ? frame : null;
         d.uvArray = frame.uv();

@@ -11,6 +11,7 @@ import dev.trisect.scene.Camera;
 import dev.trisect.scene.Material;
 import dev.trisect.scene.Pick;
 import dev.trisect.scene.Scene;
+import dev.trisect.scene.ScreenText;
 import dev.trisect.texture.Texture;
 import java.util.List;
 
@@ -33,6 +34,7 @@ public final class DrawnFrame {
     private final int width;
     private final int height;
     private final Draws draws;
+    private final Sprites sprites;
 
     /**
      * Fills {@code draws} (cleared first) with a draw per object of {@code placed}, each with its own
@@ -70,6 +72,36 @@ public final class DrawnFrame {
             }
         }
         draws.setFog(fog);
+        sprites = new Sprites(placed, viewProjection, camera, width, height, draws.quads());
+    }
+
+    /**
+     * Adds {@code screen} over the frame: its glyphs after the objects' billboards and labels in the
+     * frame's quads ({@link Draws#quads()}).
+     *
+     * @param screen the screen text to show over the frame, in order
+     * @return this
+     */
+    public DrawnFrame withScreenText(List<ScreenText> screen) {
+        for (ScreenText t : screen) {
+            Sprites.screenText(t, width, height, draws.quads());
+        }
+        return this;
+    }
+
+    /**
+     * The label whose text box holds pixel (x, y), the one drawn last where several do.
+     *
+     * @return the label as placed, or null
+     */
+    public Sprites.Placed labelAt(int x, int y) {
+        List<Sprites.Placed> labels = sprites.labels();
+        for (int k = labels.size() - 1; k >= 0; k--) {
+            if (labels.get(k).contains(x, y)) {
+                return labels.get(k);
+            }
+        }
+        return null;
     }
 
     /** The draws, as filled. */

@@ -276,7 +276,8 @@ public final class RenderLoop implements Runnable {
             settleFrames = drawnScene == null ? 0 : 2;
             drawnScene = scene;
         }
-        DrawnFrame drawn = new DrawnFrame(scene.snapshot(), scene.fog().orElse(null), camera, fw, fh, back.draws);
+        DrawnFrame drawn = new DrawnFrame(scene.snapshot(), scene.fog().orElse(null), camera, fw, fh, back.draws)
+                .withScreenText(scene.screenText());
         Draws draws = back.draws;
         if (!state.toolsOpen() && settings.view() != ViewKind.IMAGE) {
             // The comparison views belong to the developer tools: never shown (nor paid for) without them.

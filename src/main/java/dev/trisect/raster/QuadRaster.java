@@ -1,0 +1,258 @@
+package dev.trisect.raster;
+
+import java.util.Arrays;
+
+/**
+ * Screen-aligned textured rectangles — billboards, the glyphs of labels and of screen text, the
+ * backdrops behind them — set up once per frame ({@link #add}) and drawn band by band
+ * ({@link #drawBand}) over what the frame holds, in the order added.
+ *
+ * <p>A quad is a rectangle of screen space (pixels, y down) at one depth: a surface parallel to the
+ * image plane has the same 1/w at every point, so its texture maps affinely onto the rectangle and
+ * that is exact. It covers the pixels whose centre lies in {@code [left, right) x [top, bottom)} (the
+ * triangles' top-left rule for a rectangle). The texel of a pixel is the nearest one to its centre's
+ * place on the texture, {@code floor(s)}, {@code floor(t)} in texels with s and t running from the
+ * rectangle's left and top edges (0) to its right and bottom ones (the texture's width and height),
+ * clamped to the texture.
+ *
+ * <p>What a covered pixel gets, by the quad's mode ({@link #TEST}, {@link #BLEND}, and
+ * {@link #ON_TOP} with either):
+ * <ul>
+ *   <li>{@link #TEST}: drawn where the texel's alpha is at least 128 (as {@code GL_ALPHA_TEST} with
+ *       {@code GL_GEQUAL 0.5}, OpenGL 1.x section 4.1.4) and the quad's 1/w is not behind the frame's
+ *       ({@code GL_LEQUAL}); then colour and depth are written;</li>
+ *   <li>{@link #BLEND}: where the depth test passes, colour = src·a + dst·(1 − a) per channel, a the
+ *       texel's alpha times the tint's ({@code GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA}, section 4.1.7),
+ *       rounded to nearest; depth is not written;</li>
+ *   <li>{@link #ON_TOP}: no depth test and no depth write (text over the frame).</li>
+ * </ul>
+ * With {@link #TINT} the texel gives only alpha and the quad's tint the colour (glyphs: one atlas, any
+ * colour). The frame's alpha stays 255.
+ *
+ * <p>Not thread-safe to set up; {@link #drawBand} may run on many threads at once over distinct bands.
+ */
+public final class QuadRaster {
+    /** Mode: alpha-tested, depth-tested and depth-writing. */
+    public static final int TEST = 0;
+    /** Mode: blended over the frame, depth-tested, no depth write. */
+    public static final int BLEND = 1;
+    /** Flag: neither depth test nor depth write. */
+    public static final int ON_TOP = 2;
+    /** Flag: colour from the tint, alpha from the texel (times the tint's). */
+    public static final int TINT = 4;
+    /** Kind of quad, for the statistics: a billboard. */
+    public static final int BILLBOARD = 0;
+    /** Kind: a glyph. */
+    public static final int GLYPH = 1;
+    /** Kind: anything else (a backdrop). */
+    public static final int OTHER = 2;
+
+    /** Ints per quad: flags, tint, texture width, texture height, texture row stride, first texel, kind. */
+    private static final int ISTRIDE = 7;
+    /** Doubles per quad: left, top, right, bottom, 1/w. */
+    private static final int DSTRIDE = 5;
+
+    private int[] ints = new int[ISTRIDE * 64];
+    private double[] doubles = new double[DSTRIDE * 64];
+    private int[][] textures = new int[64][];
+    private int count;
+    private final int[] kinds = new int[3];
+    /** Per quad, the frame columns and rows it covers, set by {@link #bin}. */
+    private int[] bounds = new int[4 * 64];
+    private final BandBins bins = new BandBins();
+    private int binRows = 1;
+    private int width;
+    private int height;
+
+    /** Forgets every quad. */
+    public void clear() {
+        Arrays.fill(textures, 0, count, null);
+        count = 0;
+        Arrays.fill(kinds, 0);
+    }
+
+    /** Quads added since {@link #clear}. */
+    public int count() {
+        return count;
+    }
+
+    /**
+     * Quads of one kind added since {@link #clear}.
+     *
+     * @param kind {@link #BILLBOARD}, {@link #GLYPH} or {@link #OTHER}
+     * @return how many
+     */
+    public int count(int kind) {
+        return kinds[kind];
+    }
+
+    /**
+     * Adds a quad showing a region of a texture.
+     *
+     * @param left    screen x of the left edge, pixels
+     * @param top     screen y of the top edge (y down)
+     * @param right   screen x of the right edge, above {@code left}
+     * @param bottom  screen y of the bottom edge, below {@code top}
+     * @param q       1/w of the quad (its eye depth's inverse), for the depth test and write
+     * @param texels  ARGB texels, {@code stride} a row; kept, not copied
+     * @param stride  texels per row of {@code texels}
+     * @param first   index of the region's top-left texel
+     * @param texW    texels across the region
+     * @param texH    texels down the region
+     * @param mode    {@link #TEST} or {@link #BLEND}, with {@link #ON_TOP} and {@link #TINT} as wanted
+     * @param tint    ARGB: the colour under {@link #TINT}; its alpha multiplies the texels' under {@link #BLEND}
+     * @param kind    {@link #BILLBOARD}, {@link #GLYPH} or {@link #OTHER}
+     */
+    public void add(double left, double top, double right, double bottom, double q, int[] texels, int stride,
+                    int first, int texW, int texH, int mode, int tint, int kind) {
+        if (!(right > left && bottom > top) || texW <= 0 || texH <= 0) {
+            return;
+        }
+        if (count == textures.length) {
+            textures = Arrays.copyOf(textures, 2 * count);
+            ints = Arrays.copyOf(ints, ISTRIDE * 2 * count);
+            doubles = Arrays.copyOf(doubles, DSTRIDE * 2 * count);
+        }
+        int i = ISTRIDE * count;
+        ints[i] = mode;
+        ints[i + 1] = tint;
+        ints[i + 2] = texW;
+        ints[i + 3] = texH;
+        ints[i + 4] = stride;
+        ints[i + 5] = first;
+        ints[i + 6] = kind;
+        int d = DSTRIDE * count;
+        doubles[d] = left;
+        doubles[d + 1] = top;
+        doubles[d + 2] = right;
+        doubles[d + 3] = bottom;
+        doubles[d + 4] = q;
+        textures[count++] = texels;
+        kinds[kind]++;
+    }
+
+    /**
+     * Sorts the quads into bands of {@code bandRows} rows of a {@code width x height} frame (keeping
+     * their order), for {@link #drawBand}.
+     *
+     * @return quads that cover a pixel of the frame
+     */
+    public int bin(int width, int height, int bandRows) {
+        this.width = width;
+        this.height = height;
+        this.binRows = bandRows;
+        if (bounds.length < 4 * count) {
+            bounds = new int[4 * Math.max(count, bounds.length)];
+        }
+        bins.prepare(count);
+        int shown = 0;
+        for (int s = 0; s < count; s++) {
+            int d = DSTRIDE * s;
+            // Centres x + 0.5 in [left, right): columns ceil(left - 0.5) .. ceil(right - 0.5) - 1.
+            double x0 = Math.max(0, Math.ceil(doubles[d] - 0.5));
+            double x1 = Math.min(width - 1, Math.ceil(doubles[d + 2] - 0.5) - 1);
+            double y0 = Math.max(0, Math.ceil(doubles[d + 1] - 0.5));
+            double y1 = Math.min(height - 1, Math.ceil(doubles[d + 3] - 0.5) - 1);
+            if (x0 > x1 || y0 > y1) {
+                bins.none(s);
+                continue;
+            }
+            bounds[4 * s] = (int) x0;
+            bounds[4 * s + 1] = (int) x1;
+            bounds[4 * s + 2] = (int) y0;
+            bounds[4 * s + 3] = (int) y1;
+            bins.rows(s, (int) y0, (int) y1, bandRows);
+            shown++;
+        }
+        bins.build(count, BandBins.bandCount(height, bandRows));
+        return shown;
+    }
+
+    /**
+     * Draws the quads of band {@code b} (as {@link #bin} sorted them), in order, into its rows.
+     *
+     * @param colour the frame's colours, ARGB, row 0 at the top
+     * @param depths the frame's 1/w
+     * @return pixels written
+     */
+    public long drawBand(int[] colour, float[] depths, int b) {
+        int y0 = b * binRows;
+        int y1 = Math.min(height, y0 + binRows) - 1;
+        int[] items = bins.items();
+        long written = 0;
+        for (int k = bins.start(b), end = bins.start(b + 1); k < end; k++) {
+            int s = items[k];
+            int from = Math.max(y0, bounds[4 * s + 2]);
+            int to = Math.min(y1, bounds[4 * s + 3]);
+            for (int y = from; y <= to; y++) {
+                written += row(s, y, colour, depths);
+            }
+        }
+        return written;
+    }
+
+    /** One row of quad s. */
+    private int row(int s, int y, int[] colour, float[] depths) {
+        int i = ISTRIDE * s;
+        int d = DSTRIDE * s;
+        int mode = ints[i];
+        int tint = ints[i + 1];
+        int texW = ints[i + 2];
+        int texH = ints[i + 3];
+        int[] tex = textures[s];
+        double left = doubles[d];
+        double sPerPixel = texW / (doubles[d + 2] - left);
+        double tPerPixel = texH / (doubles[d + 3] - doubles[d + 1]);
+        int t = Math.min(texH - 1, (int) ((y + 0.5 - doubles[d + 1]) * tPerPixel));
+        int rowStart = ints[i + 5] + t * ints[i + 4];
+        float q = (float) doubles[d + 4];
+        boolean depthTest = (mode & ON_TOP) == 0;
+        boolean tinted = (mode & TINT) != 0;
+        int x0 = bounds[4 * s];
+        int x1 = bounds[4 * s + 1];
+        int base = y * width;
+        int written = 0;
+        if ((mode & BLEND) == 0) {
+            int rgb = tint | 0xFF000000;
+            for (int x = x0; x <= x1; x++) {
+                int texel = tex[rowStart + Math.min(texW - 1, (int) ((x + 0.5 - left) * sPerPixel))];
+                int at = base + x;
+                if (texel >>> 24 >= 128 && (!depthTest || q >= depths[at])) {
+                    colour[at] = tinted ? rgb : texel | 0xFF000000;
+                    if (depthTest) {
+                        depths[at] = q;
+                    }
+                    written++;
+                }
+            }
+        } else {
+            int tintAlpha = tint >>> 24;
+            for (int x = x0; x <= x1; x++) {
+                int texel = tex[rowStart + Math.min(texW - 1, (int) ((x + 0.5 - left) * sPerPixel))];
+                int at = base + x;
+                int a = ((texel >>> 24) * tintAlpha + 127) / 255;
+                if (a > 0 && (!depthTest || q >= depths[at])) {
+                    colour[at] = blend(tinted ? tint : texel, colour[at], a);
+                    written++;
+                }
+            }
+        }
+        return written;
+    }
+
+    /**
+     * src·a + dst·(1 − a) per channel, a in 0..255, rounded to nearest; alpha 255.
+     *
+     * @param src ARGB (its alpha ignored)
+     * @param dst ARGB (its alpha ignored)
+     * @param a   src's weight, 0..255
+     * @return the blend, ARGB
+     */
+    public static int blend(int src, int dst, int a) {
+        int b = 255 - a;
+        int r = (((src >> 16) & 0xFF) * a + ((dst >> 16) & 0xFF) * b + 127) / 255;
+        int g = (((src >> 8) & 0xFF) * a + ((dst >> 8) & 0xFF) * b + 127) / 255;
+        int bl = ((src & 0xFF) * a + (dst & 0xFF) * b + 127) / 255;
+        return 0xFF000000 | r << 16 | g << 8 | bl;
+    }
+}

@@ -1,0 +1,203 @@
+package dev.trisect.scene.internal;
+
+import dev.trisect.math.Mat4;
+import dev.trisect.math.Vec3;
+import dev.trisect.math.Viewport;
+import dev.trisect.raster.QuadRaster;
+import dev.trisect.scene.Billboard;
+import dev.trisect.scene.Camera;
+import dev.trisect.scene.Label;
+import dev.trisect.scene.Scene;
+import dev.trisect.scene.ScreenText;
+import dev.trisect.texture.internal.GlyphAtlas;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+
+/**
+ * A frame's billboards, labels and screen text laid out as screen-aligned quads ({@link QuadRaster}) for
+ * one camera and frame size: each point to clip space by its object's model-view-projection, dropped
+ * unless it lies between the near and far planes, then its rectangle in pixels at the point's 1/w.
+ *
+ * <p>Order (the quads draw in it): the depth-tested billboards and labels farthest first (their
+ * points' eye depth, so that blended ones compose over those behind them), then the ones drawn on top,
+ * farthest first; then the screen text in its order ({@link #screenText}). Within a label, its backdrop
+ * and then its glyphs.
+ */
+public final class Sprites {
+    /** Pixels a backdrop reaches beyond its text on each side. */
+    static final int PAD = 2;
+    /** The texture of a backdrop: one opaque white texel, its colour and alpha from the tint. */
+    private static final int[] WHITE = {0xFFFFFFFF};
+
+    /**
+     * A label where it was drawn, for the pixel inspector.
+     *
+     * @param label  the label
+     * @param object the name of its object, or null
+     * @param left   the first column of its text's box
+     * @param top    the first row
+     * @param right  one past the last column
+     * @param bottom one past the last row
+     */
+    public record Placed(Label label, String object, int left, int top, int right, int bottom) {
+        /** Whether pixel (x, y) is in the box. */
+        public boolean contains(int x, int y) {
+            return x >= left && x < right && y >= top && y < bottom;
+        }
+    }
+
+    /** A billboard or label with its point on screen, before sorting. */
+    private record Item(Object what, String object, double x, double y, double w, double pixelsPerUnit) {
+    }
+
+    private final List<Placed> labels = new ArrayList<>();
+
+    /**
+     * Lays out every billboard and label of {@code placed} into {@code quads}.
+     *
+     * @param placed         the frame's objects
+     * @param viewProjection world space to clip space
+     * @param camera         the camera, for world sizes
+     * @param width          frame width, pixels
+     * @param height         frame height, pixels
+     */
+    Sprites(List<Scene.Placed> placed, Mat4 viewProjection, Camera camera, int width, int height,
+            QuadRaster quads) {
+        Viewport viewport = new Viewport(width, height);
+        // Pixels per world unit at w = 1 (gluPerspective: f = cot(fovY / 2) maps to half the height).
+        double focal = height / 2.0 / Math.tan(Math.toRadians(camera.fovY()) / 2);
+        List<Item> depthTested = new ArrayList<>();
+        List<Item> onTop = new ArrayList<>();
+        double[] clip = new double[4];
+        for (Scene.Placed o : placed) {
+            if (o.billboards().isEmpty() && o.labels().isEmpty()) {
+                continue;
+            }
+            Mat4 mvp = viewProjection.mul(o.world());
+            String name = o.object().name();
+            for (Billboard b : o.billboards()) {
+                Item item = item(b, b.at(), name, mvp, viewport, clip, focal);
+                if (item != null) {
+                    (b.isOnTop() ? onTop : depthTested).add(item);
+                }
+            }
+            for (Label l : o.labels()) {
+                Item item = item(l, l.at(), name, mvp, viewport, clip, focal);
+                if (item != null) {
+                    (l.isOnTop() ? onTop : depthTested).add(item);
+                }
+            }
+        }
+        Comparator<Item> farthestFirst = Comparator.comparingDouble(i -> -i.w());
+        depthTested.sort(farthestFirst);
+        onTop.sort(farthestFirst);
+        for (Item i : depthTested) {
+            draw(i, quads, 0);
+        }
+        for (Item i : onTop) {
+            draw(i, quads, QuadRaster.ON_TOP);
+        }
+    }
+
+    /** The labels drawn, in drawing order, with their boxes. */
+    public List<Placed> labels() {
+        return labels;
+    }
+
+    private static Item item(Object what, Vec3 at, String name, Mat4 mvp, Viewport viewport, double[] clip,
+                             double focal) {
+        mvp.transformPoint(at.x(), at.y(), at.z(), clip, 0);
+        double w = clip[3];
+        // Between the near and far planes (-w <= z <= w), in front of the eye; finite.
+        if (!(w > 0 && clip[2] >= -w && clip[2] <= w) || !Double.isFinite(clip[0] + clip[1])) {
+            return null;
+        }
+        return new Item(what, name, viewport.screenX(clip[0], w), viewport.screenY(clip[1], w), w, focal / w);
+    }
+
+    private void draw(Item i, QuadRaster quads, int onTop) {
+        double q = 1 / i.w();
+        if (i.what() instanceof Billboard b) {
+            double w = b.sizedInPixels() ? b.width() : b.width() * i.pixelsPerUnit();
+            double h = b.sizedInPixels() ? b.height() : b.height() * i.pixelsPerUnit();
+            int mode = (b.isBlended() ? QuadRaster.BLEND : QuadRaster.TEST) | onTop;
+            var t = b.texture();
+            quads.add(i.x() - w / 2, i.y() - h / 2, i.x() + w / 2, i.y() + h / 2, q, t.argb(), t.width(), 0,
+                    t.width(), t.height(), mode, 0xFFFFFFFF, QuadRaster.BILLBOARD);
+        } else {
+            Label l = (Label) i.what();
+            GlyphAtlas atlas = GlyphAtlas.of(l.font());
+            String[] lines = l.text().split("\n", -1);
+            int boxHeight = lines.length * atlas.lineHeight();
+            // The box's bottom on the point, centred across it; whole pixels, so texels meet pixels.
+            int top = (int) Math.round(i.y()) - boxHeight;
+            int boxWidth = widest(atlas, lines);
+            int left = (int) Math.round(i.x() - boxWidth / 2.0);
+            text(atlas, lines, left, top, boxWidth, 0.5, q, l.colour(), l.background(), onTop, quads);
+            labels.add(new Placed(l, i.object(), left, top, left + boxWidth, top + boxHeight));
+        }
+    }
+
+    /** Lays out {@code t} over a {@code width x height} frame into {@code quads}, on top. */
+    static void screenText(ScreenText t, int width, int height, QuadRaster quads) {
+        GlyphAtlas atlas = GlyphAtlas.of(t.font());
+        String[] lines = t.text().split("\n", -1);
+        int boxWidth = widest(atlas, lines);
+        int boxHeight = lines.length * atlas.lineHeight();
+        boolean right = t.corner() == ScreenText.Corner.TOP_RIGHT || t.corner() == ScreenText.Corner.BOTTOM_RIGHT;
+        boolean bottom = t.corner() == ScreenText.Corner.BOTTOM_LEFT
+                || t.corner() == ScreenText.Corner.BOTTOM_RIGHT;
+        int left = right ? width - t.margin() - boxWidth : t.margin();
+        int top = bottom ? height - t.margin() - boxHeight : t.margin();
+        text(atlas, lines, left, top, boxWidth, right ? 1 : 0, 0, t.colour(), t.background(), QuadRaster.ON_TOP,
+                quads);
+    }
+
+    /** The width of the widest line, pixels. */
+    private static int widest(GlyphAtlas atlas, String[] lines) {
+        int widest = 0;
+        for (String line : lines) {
+            widest = Math.max(widest, advance(atlas, line));
+        }
+        return widest;
+    }
+
+    /** The pen's travel over {@code line}, pixels. */
+    static int advance(GlyphAtlas atlas, String line) {
+        int pen = 0;
+        for (int k = 0; k < line.length(); k = line.offsetByCodePoints(k, 1)) {
+            pen += atlas.glyph(line.codePointAt(k)).advance();
+        }
+        return pen;
+    }
+
+    /**
+     * The glyphs of {@code lines} in a box whose top-left pixel is (left, top), each line placed at
+     * {@code align} of the room the widest leaves it (0 left, 0.5 centred, 1 right), after the backdrop.
+     */
+    private static void text(GlyphAtlas atlas, String[] lines, int left, int top, int boxWidth, double align,
+                             double q, int rgb, int background, int onTop, QuadRaster quads) {
+        int lineHeight = atlas.lineHeight();
+        if (background >>> 24 != 0) {
+            quads.add(left - PAD, top - PAD, left + boxWidth + PAD, top + lines.length * lineHeight + PAD, q, WHITE,
+                    1, 0, 1, 1, QuadRaster.BLEND | QuadRaster.TINT | onTop, background, QuadRaster.OTHER);
+        }
+        int mode = QuadRaster.TEST | QuadRaster.TINT | onTop;
+        for (int n = 0; n < lines.length; n++) {
+            String line = lines[n];
+            int pen = left + (int) Math.round(align * (boxWidth - advance(atlas, line)));
+            int baseline = top + n * lineHeight + atlas.ascent();
+            for (int k = 0; k < line.length(); k = line.offsetByCodePoints(k, 1)) {
+                GlyphAtlas.Glyph g = atlas.glyph(line.codePointAt(k));
+                if (g.width() > 0) {
+                    int x = pen + g.left();
+                    int y = baseline + g.top();
+                    quads.add(x, y, x + g.width(), y + g.height(), q, g.texels(), GlyphAtlas.WIDTH,
+                            g.y() * GlyphAtlas.WIDTH + g.x(), g.width(), g.height(), mode, rgb, QuadRaster.GLYPH);
+                }
+                pen += g.advance();
+            }
+        }
+    }
+}
