@@ -12,6 +12,7 @@ import dev.trisect.perf.BudgetChart;
 import dev.trisect.perf.BudgetRun;
 import dev.trisect.perf.FrameBench;
 import dev.trisect.perf.FrameTimes;
+import dev.trisect.mesh.Lines;
 import dev.trisect.perf.ScatteredLines;
 import dev.trisect.perf.Sweep;
 import dev.trisect.perf.SweepChart;
@@ -66,7 +67,9 @@ final class BenchCommand extends SceneCommand {
 
     @Option(names = "--lines", paramLabel = "N", defaultValue = "0",
             description = "Add N line segments scattered through the view (deterministic), drawn after the triangles "
-                    + "--line-width pixels wide, in Trisect and in glref alike (default: none).")
+                    + "--line-width pixels wide, in Trisect and in glref alike (default: none); each path is then "
+                    + "also timed without them, frame by frame in turn, and glref run with and without them, and "
+                    + "each row ends with what the lines cost (the difference of the two).")
     int scatteredLines;
 
     @Option(names = "--json", description = "One JSON line per path instead of a table.")
@@ -225,25 +228,40 @@ final class BenchCommand extends SceneCommand {
                     draws.addLines(scene.lines(), vp, lineWidth);
                 }
                 FrameBench bench = new FrameBench(renderer, draws, Frames.allocate(frame.size));
+                // With lines, every path is also timed without them, frame by frame in turn: the
+                // difference of the medians is what the lines cost, measured alike for glref below.
+                Draws bare = scene.lines().isEmpty() ? null : light.draws(scene.mesh(), textures, vp);
                 for (RenderMode mode : modes) {
                     RenderSettings settings = path.settings(frame).withMode(mode);
-                    FrameBench.Result r = bench.time(settings, warmup, frames, progress.task(mode.id()));
+                    FrameBench.Result r;
+                    double linesMs = Double.NaN;
+                    if (bare == null) {
+                        r = bench.time(settings, warmup, frames, progress.task(mode.id()));
+                    } else {
+                        FrameBench.Result[] pair = bench.timeAlternately(bare, settings, warmup, frames,
+                                progress.task(mode.id()));
+                        r = pair[0];
+                        linesMs = pair[0].times().medianMs() - pair[1].times().medianMs();
+                    }
                     progress.close(); // erased before the row, which goes to the same terminal
-                    Results.print(common.out(), List.of(row(mode.id(), r, threads)));
+                    Results.print(common.out(), List.of(row(mode.id(), r, threads, linesMs)));
                     notice.measured();
                 }
                 if (glref != null) {
-                    Results.print(common.out(), List.of(glrefRow(scene, textures[0], camera, threads, lineWidth)));
+                    double with = glrefMs(scene, textures[0], camera, threads, lineWidth);
+                    double without = scene.lines().isEmpty() ? Double.NaN
+                            : glrefMs(scene.withLines(Lines.EMPTY), textures[0], camera, threads, lineWidth);
+                    Results.print(common.out(), List.of(glrefRow(with, with - without, threads)));
                 }
             }
         }
         return 0;
     }
 
-    private String row(String name, FrameBench.Result r, int threads) {
+    private String row(String name, FrameBench.Result r, int threads, double linesMs) {
         FrameTimes t = r.times();
         if (json) {
-            return new JsonObject()
+            JsonObject o = new JsonObject()
                     .put("path", name)
                     .put("size", frame.size.toString())
                     .put("frames", t.frames())
@@ -256,17 +274,47 @@ final class BenchCommand extends SceneCommand {
                     .put("filter", path.filter.id())
                     .put("min_ms", t.minMs(), 3)
                     .put("pixels", (long) frame.size.width() * frame.size.height())
-                    .put("pixels_written", r.last().pixelsWritten())
-                    .toString();
+                    .put("pixels_written", r.last().pixelsWritten());
+            if (!Double.isNaN(linesMs)) {
+                o.put("lines_ms", linesMs, 3);
+            }
+            return o.toString();
         }
         return String.format(Locale.ROOT, "%-12s %10.3f %10.3f %10.3f %10.3f %8.1f %10d", name, t.medianMs(),
-                t.minMs(), t.meanMs(), t.p95Ms(), 1000 / t.medianMs(), r.last().pieces());
+                t.minMs(), t.meanMs(), t.p95Ms(), 1000 / t.medianMs(), r.last().pieces()) + linesColumn(linesMs);
+    }
+
+    /** The lines' cost after a row, when measured. */
+    private static String linesColumn(double linesMs) {
+        return Double.isNaN(linesMs) ? "" : String.format(Locale.ROOT, "  lines %.3f ms", linesMs);
     }
 
     private static final Pattern GLREF_OUT = Pattern.compile("ms_per_frame\\s+([0-9.]+)");
 
-    /** Exports the scene, runs glref with LP_NUM_THREADS set, and reports its mean frame time. */
-    private String glrefRow(SceneAsset scene, Texture texture, Camera camera, int threads, int lineWidth)
+    /** glref's row: its mean frame time and, when it drew lines, what they cost (NaN otherwise). */
+    private String glrefRow(double ms, double linesMs, int threads) {
+        if (json) {
+            JsonObject o = new JsonObject()
+                    .put("path", "glref-llvmpipe")
+                    .put("size", frame.size.toString())
+                    .put("frames", frames + warmup)
+                    .put("mean_ms", ms, 3)
+                    .put("fps", 1000 / ms, 1)
+                    .put("threads", threads)
+                    .put("filter", path.filter.id());
+            if (!Double.isNaN(linesMs)) {
+                o.put("lines_ms", linesMs, 3);
+            }
+            return o.toString();
+        }
+        // glref reports a mean alone: it goes under "mean ms", the other times are dashes (as in row()'s columns).
+        return String.format(Locale.ROOT, "%-12s %10s %10s %10.3f %10s %8.1f %10s  (Mesa llvmpipe, LP_NUM_THREADS=%d, "
+                + "GLREF_FILTER=%s, mean of %s incl. glFinish)", "glref", "-", "-", ms, "-", 1000 / ms, "-",
+                threads, path.filter.id(), Counts.of(frames + warmup, "frame")) + linesColumn(linesMs);
+    }
+
+    /** Exports the scene, runs glref with LP_NUM_THREADS set, and gives its mean frame time, ms. */
+    private double glrefMs(SceneAsset scene, Texture texture, Camera camera, int threads, int lineWidth)
             throws IOException, InterruptedException {
         if (!camera.up().normalize().equals(Vec3.UP)) {
             common.note("glref always uses up = 0,1,0; its frame differs from ours for --up " + camera.up());
@@ -304,22 +352,7 @@ final class BenchCommand extends SceneCommand {
             if (!m.find()) {
                 throw new InputException(glref + ": printed no ms_per_frame: " + output.strip().replace('\n', ' '));
             }
-            double ms = Double.parseDouble(m.group(1));
-            if (json) {
-                return new JsonObject()
-                        .put("path", "glref-llvmpipe")
-                        .put("size", frame.size.toString())
-                        .put("frames", frames + warmup)
-                        .put("mean_ms", ms, 3)
-                        .put("fps", 1000 / ms, 1)
-                        .put("threads", threads)
-                        .put("filter", path.filter.id())
-                        .toString();
-            }
-            // glref reports a mean alone: it goes under "mean ms", the other times are dashes (as in row()'s columns).
-            return String.format(Locale.ROOT, "%-12s %10s %10s %10.3f %10s %8.1f %10s  (Mesa llvmpipe, LP_NUM_THREADS=%d, "
-                    + "GLREF_FILTER=%s, mean of %s incl. glFinish)", "glref", "-", "-", ms, "-", 1000 / ms, "-",
-                    threads, path.filter.id(), Counts.of(frames + warmup, "frame"));
+            return Double.parseDouble(m.group(1));
         } finally {
             try (var files = Files.list(dir)) {
                 for (Path f : files.toList()) {

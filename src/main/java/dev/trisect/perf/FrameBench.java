@@ -70,6 +70,34 @@ public final class FrameBench {
         return renderer.render(draws, settings, frame);
     }
 
+    /**
+     * Times this bench's draws and {@code without} (the same draws less what is measured, such as their
+     * lines) frame by frame in turn, into the same frame, so that the machine's drift and load fall on
+     * both alike: their difference is what the extra costs.
+     *
+     * @return the times of this bench's draws, then those of {@code without}
+     */
+    public Result[] timeAlternately(Draws without, RenderSettings settings, int warmup, int frames,
+                                    Progress progress) {
+        if (frames < 1 || warmup < 0) {
+            throw new IllegalArgumentException("frames must be at least 1 and warmup at least 0");
+        }
+        int total = 2 * (warmup + frames);
+        double[][] ms = new double[2][frames];
+        FrameStats[] last = new FrameStats[2];
+        for (int i = 0; i < warmup + frames; i++) {
+            for (int k = 0; k < 2; k++) {
+                long t0 = System.nanoTime();
+                last[k] = renderer.render(k == 0 ? draws : without, settings, frame);
+                if (i >= warmup) {
+                    ms[k][i - warmup] = (System.nanoTime() - t0) / 1e6;
+                }
+                progress.frameDone(2 * i + k + 1, total);
+            }
+        }
+        return new Result[] {new Result(FrameTimes.of(ms[0]), last[0]), new Result(FrameTimes.of(ms[1]), last[1])};
+    }
+
     /** Renders {@code warmup} frames, then times {@code frames} frames (at least 1). */
     public Result time(RenderSettings settings, int warmup, int frames, Progress progress) {
         if (frames < 1 || warmup < 0) {

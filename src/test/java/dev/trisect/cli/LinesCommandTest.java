@@ -81,9 +81,25 @@ class LinesCommandTest {
                 "--warmup", "0", "--lines", "200");
         assertEquals(0, r.status(), r.err());
         assertTrue(r.out().contains("200 line segments 1 px wide"), r.out());
+        assertTrue(r.out().lines().anyMatch(l -> l.startsWith("perspective") && l.matches(".* lines -?[0-9.]+ ms")),
+                r.out());
         CliRun bad = CliRun.of("bench", "--scene", "floor", "--lines", "-1");
         assertEquals(2, bad.status(), bad.err());
         assertTrue(bad.err().contains("--lines must be 0 or more, got -1"), bad.err());
+    }
+
+    @Test
+    void benchGivesGlrefsLineCostAsItsTimeWithThemLessItsTimeWithout() throws IOException {
+        // A stand-in for glref: 9 ms a frame when the OBJ it is given has l elements, 4 ms otherwise.
+        Path glref = dir.resolve("fake-glref.sh");
+        Files.writeString(glref, "#!/bin/sh\nif grep -q '^l ' \"$1\"; then echo 'ms_per_frame 9.000'; "
+                + "else echo 'ms_per_frame 4.000'; fi\n");
+        glref.toFile().setExecutable(true);
+        CliRun r = CliRun.of("bench", "--scene", "floor", "--size", "64x48", "--modes", "affine", "--frames", "1",
+                "--warmup", "0", "--lines", "50", "--glref", glref.toString());
+        assertEquals(0, r.status(), r.err());
+        String row = r.out().lines().filter(l -> l.startsWith("glref")).findFirst().orElseThrow();
+        assertTrue(row.contains(" 9.000 ") && row.endsWith("lines 5.000 ms"), row);
     }
 
     @ParameterizedTest
