@@ -58,10 +58,11 @@ final class BandPass {
      *
      * @param fog      the frame's fog, or null for none
      * @param textures the texture of each material, by material index
+     * @param states   the pixel state of each material, by material index (see {@link Rasterizer#states})
      * @param lines    the frame's {@link Commands#LINE} commands, binned into the same bands
      */
-    Result draw(Framebuffer frame, Chunks chunks, int chunkCount, Texture[] textures, RenderSettings settings,
-                FogPass fog, Outlines outlines, Commands lines, WorkerPool pool) {
+    Result draw(Framebuffer frame, Chunks chunks, int chunkCount, Texture[] textures, int[] states,
+                RenderSettings settings, FogPass fog, Outlines outlines, Commands lines, WorkerPool pool) {
         for (Lane lane : lanes) {
             lane.pixels = 0;
             lane.fillNanos = 0;
@@ -98,6 +99,7 @@ final class BandPass {
             Rasterizer rasterizer = fill.rasterizer();
             rasterizer.filter(settings.filter());
             rasterizer.spans(spanError);
+            rasterizer.states(states);
             for (int c = 0; c < chunkCount; c++) {
                 lane.pixels += fill.fill(frame, chunks.get(c).commands, b, textures, perspective, 0, y0, width, y1);
             }

@@ -4,6 +4,7 @@ import dev.trisect.light.FogPass;
 import dev.trisect.math.Mat4;
 import dev.trisect.mesh.Lines;
 import dev.trisect.mesh.Mesh;
+import dev.trisect.raster.PixelState;
 import dev.trisect.raster.QuadRaster;
 import dev.trisect.render.Fog;
 import dev.trisect.texture.Texture;
@@ -34,6 +35,8 @@ public final class Draws {
     private int[] firstMaterial = new int[5];
     /** The textures of every draw's materials, concatenated: indexed by frame material. */
     private Texture[] textures = new Texture[4];
+    /** The {@link PixelState} of every draw's materials, beside {@link #textures}. */
+    private int[] states = new int[4];
     private int count;
     private Lines[] lines = new Lines[2];
     private Mat4[] lineTransforms = new Mat4[2];
@@ -93,6 +96,23 @@ public final class Draws {
      *                                   {@link Integer#MAX_VALUE} triangles or positions
      */
     public void add(Mesh mesh, Texture[] textures, Mat4 modelViewProjection) {
+        add(mesh, textures, null, modelViewProjection);
+    }
+
+    /**
+     * Adds a mesh to draw after those added before, each material with its pixel state.
+     *
+     * @param textures            the texture of each material of the mesh, by material index (entries
+     *                            past the mesh's material count are ignored)
+     * @param states              the {@link PixelState} of each material, by material index (entries
+     *                            past the mesh's material count are ignored), or null for state 0
+     *                            ({@code TEXEL | OPAQUE}) everywhere; a {@code MODULATE} state needs a
+     *                            frame whose layout carries the colour varyings
+     * @param modelViewProjection object space to clip space (projection * view * model), as OpenGL
+     * @throws IllegalArgumentException when a texture is missing, a state is not a pixel state, or the
+     *                                  frame would exceed {@link Integer#MAX_VALUE} triangles or positions
+     */
+    public void add(Mesh mesh, Texture[] textures, int[] states, Mat4 modelViewProjection) {
         Objects.requireNonNull(mesh, "mesh is null");
         Objects.requireNonNull(textures, "textures array is null");
         Objects.requireNonNull(modelViewProjection, "model-view-projection matrix is null");
@@ -105,6 +125,15 @@ public final class Draws {
             if (textures[i] == null) {
                 throw new IllegalArgumentException("the texture of material " + i + " (" + mesh.materialNames().get(i)
                         + ") is null");
+            }
+        }
+        if (states != null) {
+            if (states.length < materials) {
+                throw new IllegalArgumentException("mesh has " + materials + " materials but " + states.length
+                        + " pixel states were given");
+            }
+            for (int i = 0; i < materials; i++) {
+                PixelState.check(states[i]);
             }
         }
         long triangles = (long) firstTriangle[count] + mesh.triangleCount();
@@ -123,8 +152,14 @@ public final class Draws {
         int m0 = firstMaterial[count];
         if (m0 + materials > this.textures.length) {
             this.textures = Arrays.copyOf(this.textures, Math.max(2 * this.textures.length, m0 + materials));
+            this.states = Arrays.copyOf(this.states, this.textures.length);
         }
         System.arraycopy(textures, 0, this.textures, m0, materials);
+        if (states == null) {
+            Arrays.fill(this.states, m0, m0 + materials, 0);
+        } else {
+            System.arraycopy(states, 0, this.states, m0, materials);
+        }
         meshes[count] = mesh;
         transforms[count] = modelViewProjection;
         firstTriangle[count + 1] = (int) triangles;
@@ -263,6 +298,14 @@ public final class Draws {
     /** Every draw's textures, indexed by frame material; read-only, may be longer than needed. */
     public Texture[] textures() {
         return textures;
+    }
+
+    /**
+     * Every draw's {@link PixelState}s, indexed by frame material as {@link #textures()}; read-only, may
+     * be longer than needed.
+     */
+    public int[] states() {
+        return states;
     }
 
     /**

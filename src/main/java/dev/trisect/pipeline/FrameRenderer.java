@@ -176,8 +176,8 @@ public final class FrameRenderer implements AutoCloseable {
      * on, and its lines drawn.
      */
     private void fillPass(FrameJob job) {
-        job.bands = bands.draw(job.frame, job.chunks, job.chunkCount(), job.draws.textures(), job.settings,
-                job.draws.fogPass(), outlines, lines.commands(), job.pool);
+        job.bands = bands.draw(job.frame, job.chunks, job.chunkCount(), job.draws.textures(), job.draws.states(),
+                job.settings, job.draws.fogPass(), outlines, lines.commands(), job.pool);
         job.bandsDone = System.nanoTime();
     }
 

@@ -32,6 +32,8 @@ public final class Rasterizer {
     private TextureFilter filter = TextureFilter.NEAREST;
     /** The span path's largest displacement between knots, pixels; 0: perspective fills divide per pixel. */
     private double knotError;
+    /** The {@link PixelState} of each material index, or null: state 0 for every material. */
+    private int[] states;
 
     /** Sets how the following {@link #fill} calls sample textures (nearest until set). */
     public void filter(TextureFilter f) {
@@ -39,6 +41,32 @@ public final class Rasterizer {
             throw new IllegalArgumentException("texture filter must not be null");
         }
         filter = f;
+    }
+
+    /**
+     * Sets the pixel state of each material for the following fills: {@code states[m]} is material
+     * m's {@link PixelState}, indexed as the textures are.
+     *
+     * @param states read, never copied or changed; null (until set) for state 0 everywhere
+     */
+    public void states(int[] states) {
+        this.states = states;
+    }
+
+    /**
+     * The pixel state of {@code material} for a triangle of {@code triangles}, checked against their
+     * layout once per triangle.
+     *
+     * @throws IllegalStateException when the state modulates and the layout has no colour varyings
+     */
+    private int state(ScreenTriangles triangles, int material) {
+        int state = states == null ? 0 : states[material];
+        if (PixelState.varyingsNeeded(state) > triangles.layout().varyings()) {
+            throw new IllegalStateException("material " + material + " modulates by a colour (pixel state "
+                    + state + ") but its triangles carry " + triangles.layout().varyings()
+                    + " varyings: the frame needs VertexLayout.of(5)");
+        }
+        return state;
     }
 
     /**
@@ -94,16 +122,18 @@ public final class Rasterizer {
         }
         solver.walk(t);
         int[] spans = solver.spans();
-        Texture texture = textures[triangles.materials()[tri]];
+        int material = triangles.materials()[tri];
+        Texture texture = textures[material];
         int uvId = triangles.ids()[tri] + 1;
         boolean uv = frame.uv() != null;
         int source = source(texture);
+        int state = state(triangles, material);
         if (knots) {
-            return KnotNearest.fill(source, uv, t, spans, frame, texture, uvId, knotError, x0, x1);
+            return KnotNearest.fill(source, state, uv, t, spans, frame, texture, uvId, knotError, x0, x1);
         } else if (!divide && t.fixedPointSafe) {
-            return FixedNearest.fill(source, uv, t, spans, frame, texture, uvId);
+            return FixedNearest.fill(source, state, uv, t, spans, frame, texture, uvId);
         } else {
-            return PerPixelNearest.fill(source, uv, divide, t, spans, frame, texture, uvId);
+            return PerPixelNearest.fill(source, state, uv, divide, t, spans, frame, texture, uvId);
         }
     }
 
@@ -142,8 +172,8 @@ public final class Rasterizer {
         int[] spans = solver.spans();
         Texture texture = textures[inputs.materials()[g]];
         int uvId = inputs.ids()[g] + 1;
-        return TreeNearest.fill(source(texture), frame.uv() != null, this.trees, t, spans, trees, trees.roots()[g],
-                trees.nodeCount(g), frame, texture, uvId);
+        return TreeNearest.fill(source(texture), state(inputs, inputs.materials()[g]), frame.uv() != null, this.trees,
+                t, spans, trees, trees.roots()[g], trees.nodeCount(g), frame, texture, uvId);
     }
 
     /**

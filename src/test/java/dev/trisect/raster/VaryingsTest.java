@@ -51,7 +51,8 @@ class VaryingsTest {
             TessellationSettings settings = TessellationSettings.defaults().withPolicy(SplitPolicy.ERROR)
                     .withMaxError(0.05 + random.nextDouble());
             tess.configure(new Viewport(WIDTH, HEIGHT), settings);
-            double[] input = triangle(random);
+            // s, t, then copies of s and t, then 7.25.
+            double[] input = PixelScenes.triangle(random, 400, (s, t) -> new double[] {s, t, 7.25});
             ScreenTriangles pieces = new ScreenTriangles();
             pieces.layout(LAYOUT);
             tess.process(input, 0, cs, 2 * cs, true,
@@ -112,25 +113,5 @@ class VaryingsTest {
         assertEquals(expected.base, actual.base);
         assertEquals(expected.dx, actual.dx);
         assertEquals(expected.dy, actual.dy);
-    }
-
-    /** A random clip-space triangle in {@link #LAYOUT}: s, t, then copies of s and t, then 7.25. */
-    private static double[] triangle(Random random) {
-        int cs = LAYOUT.clipStride();
-        double[] v = new double[3 * cs];
-        for (int k = 0; k < 3; k++) {
-            int o = k * cs;
-            double w = 0.2 + 4.8 * random.nextDouble();
-            v[o + VertexLayout.X] = (2.4 * random.nextDouble() - 1.2) * w;
-            v[o + VertexLayout.Y] = (2.4 * random.nextDouble() - 1.2) * w;
-            v[o + VertexLayout.Z] = (0.1 + 0.8 * random.nextDouble()) * w;
-            v[o + VertexLayout.W] = w;
-            v[o + VertexLayout.S] = (random.nextDouble() - 0.5) * 400;
-            v[o + VertexLayout.T] = (random.nextDouble() - 0.5) * 400;
-            v[o + VertexLayout.varying(2)] = v[o + VertexLayout.S];
-            v[o + VertexLayout.varying(3)] = v[o + VertexLayout.T];
-            v[o + VertexLayout.varying(4)] = 7.25;
-        }
-        return v;
     }
 }

@@ -1,0 +1,71 @@
+package dev.trisect.raster;
+
+/**
+ * What the pixel loops do with a material's fragments: a small int per frame material, kept beside
+ * its texture ({@link Rasterizer#states}), made of two fields, each one of the constants below:
+ * <ul>
+ * <li>colour: {@link #TEXEL} (the texel) or {@link #MODULATE} (the texel times the interpolated
+ * colour of varyings 2..4, OpenGL 1.x section 3.8.13, table 3.22, GL_MODULATE);</li>
+ * <li>write: {@link #OPAQUE} (depth test, then depth, colour and UV output written),
+ * {@link #ALPHA_TEST} (as opaque where the texel's alpha is at least 128, nothing written elsewhere:
+ * GL_ALPHA_TEST with GL_GEQUAL 0.5, section 4.1.4) or {@link #BLEND} (depth tested, depth not written,
+ * colour {@code src * a + dst * (1 - a)} per channel ({@link Blend}), GL_SRC_ALPHA,
+ * GL_ONE_MINUS_SRC_ALPHA, section 4.1.7; the UV output not written, so it keeps the surface behind).</li>
+ * </ul>
+ * A state is one of each, joined by {@code |}: {@code MODULATE | BLEND}. State 0 is
+ * {@code TEXEL | OPAQUE}, every frame's state until a material asks for another. The loop is chosen
+ * once per triangle from it (the generated loops' dispatchers, {@link PerPixelNearest#fill}), never per pixel.
+ */
+public final class PixelState {
+    /** Colour: the texel, alpha kept. */
+    public static final int TEXEL = 0;
+    /** Colour: the texel times the interpolated colour r, g, b (varyings 2..4, 0..1); needs a layout of 5 varyings or more. */
+    public static final int MODULATE = 1;
+    /** Write: depth test, then depth, colour (alpha 255) and UV output. */
+    public static final int OPAQUE = 0;
+    /** Write: as {@link #OPAQUE} where the fragment's alpha is at least 128, else nothing. */
+    public static final int ALPHA_TEST = 1 << 2;
+    /** Write: depth test, then colour blended over the frame's; neither depth nor UV output written. */
+    public static final int BLEND = 2 << 2;
+    /** The first varying slot a {@link #MODULATE} colour reads (r; g and b follow). */
+    public static final int COLOUR_SLOT = 2;
+
+    private static final int COLOUR_MASK = 3;
+    private static final int WRITE_MASK = 3 << 2;
+
+    private PixelState() {
+    }
+
+    /** The colour field of {@code state}: {@link #TEXEL} or {@link #MODULATE}. */
+    public static int colour(int state) {
+        return state & COLOUR_MASK;
+    }
+
+    /** The write field of {@code state}: {@link #OPAQUE}, {@link #ALPHA_TEST} or {@link #BLEND}. */
+    public static int write(int state) {
+        return state & WRITE_MASK;
+    }
+
+    /** Whether {@code state} is one colour and one write of the constants above. */
+    public static boolean valid(int state) {
+        return (state & ~(COLOUR_MASK | WRITE_MASK)) == 0 && colour(state) <= MODULATE && write(state) <= BLEND;
+    }
+
+    /**
+     * {@code state}, checked.
+     *
+     * @throws IllegalArgumentException when it is not {@link #valid}
+     */
+    public static int check(int state) {
+        if (!valid(state)) {
+            throw new IllegalArgumentException("pixel state " + state + " is not a colour (TEXEL, MODULATE) "
+                    + "joined with a write (OPAQUE, ALPHA_TEST, BLEND)");
+        }
+        return state;
+    }
+
+    /** The varyings a triangle's layout needs for {@code state}: s, t, and r, g, b when it modulates. */
+    public static int varyingsNeeded(int state) {
+        return colour(state) == MODULATE ? COLOUR_SLOT + 3 : COLOUR_SLOT;
+    }
+}
