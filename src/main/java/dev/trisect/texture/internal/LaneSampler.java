@@ -29,12 +29,13 @@ import dev.trisect.texture.MipChain;
  * <p>Trilinear blends the two levels' results with weight {@code weight / 256} on the second,
  * {@code (a (256 - weight) + b weight + 128) >> 8} per channel, as {@link Sampler#lerp}.
  *
- * <p>Values returned are in lanes ({@link TexelLanes}: blue, red, green in the low bytes of 16-bit
- * lanes); {@link TexelLanes#argb} makes the opaque ARGB pixel.
+ * <p>Values returned are in lanes ({@link TexelLanes}: blue, red, green, alpha in the low bytes of
+ * 16-bit lanes; alpha is filtered as the colour is); {@link TexelLanes#argb} makes the opaque ARGB
+ * pixel, {@link TexelLanes#argbWithAlpha} the pixel with its alpha.
  */
 public final class LaneSampler {
-    /** Half of 1/256 in every colour lane: the rounding of a sum weighted in 1/256. */
-    private static final long ROUND = 0x0000_0080_0080_0080L;
+    /** Half of 1/256 in every lane: the rounding of a sum weighted in 1/256. */
+    private static final long ROUND = 0x0080_0080_0080_0080L;
 
     private LaneSampler() {
     }

@@ -11,10 +11,11 @@ import java.util.function.Function;
  * column and row, and one multiply per texel blends all three colour channels at once.
  *
  * <p><b>Texel format</b> ({@link #lanes(int)}): an ARGB texel {@code 0xAARRGGBB} becomes
- * {@code 0x0000_00GG_00RR_00BB}: blue in bits 0–7, red in bits 16–23, green in bits 32–39, each the
- * low byte of a 16-bit lane; alpha is dropped, since every filtered fill is opaque. A weighted sum of
- * such texels with integer weights adding up to 256 keeps each channel below 2^16 in its own lane
- * (255 * 256 + 128 &lt; 2^16), so the lanes never carry into each other.
+ * {@code 0x00AA_00GG_00RR_00BB}: blue in bits 0–7, red in bits 16–23, green in bits 32–39, alpha in
+ * bits 48–55, each the low byte of a 16-bit lane, so alpha is filtered exactly as the colour is, in
+ * the same multiply. A weighted sum of such texels with integer weights adding up to 256 keeps each
+ * channel below 2^16 in its own lane (255 * 256 + 128 &lt; 2^16), so the lanes never carry into each
+ * other (the alpha lane's top bit is the long's sign bit: the samplers shift with {@code >>>}).
  *
  * <p><b>Layout</b> ({@link #lanes()}, {@link #levels()}): all levels in one {@code long[]}, level 0
  * first. Level d, {@code w x h} texels, takes {@code (w + 1) x (h + 1)} longs from
@@ -53,8 +54,8 @@ public final class TexelLanes {
     /** Field of a level descriptor: right shift from level-0 t to level d's (power-of-two chains). */
     public static final int SHIFT_T = 7;
 
-    /** Bits of the three colour lanes of a texel in {@link #lanes()}: blue, red, green. */
-    public static final long CHANNELS = 0x0000_00FF_00FF_00FFL;
+    /** Bits of the four lanes of a texel in {@link #lanes()}: blue, red, green, alpha. */
+    public static final long CHANNELS = 0x00FF_00FF_00FF_00FFL;
 
     private final long[] lanes;
     private final int[] levels;
@@ -122,14 +123,19 @@ public final class TexelLanes {
         }
     }
 
-    /** An ARGB texel in lanes: {@code 0xAARRGGBB} to {@code 0x0000_00GG_00RR_00BB}. */
+    /** An ARGB texel in lanes: {@code 0xAARRGGBB} to {@code 0x00AA_00GG_00RR_00BB}. */
     public static long lanes(int argb) {
-        return argb & 0xFF00FFL | (long) (argb & 0xFF00) << 24;
+        return argb & 0xFF00FFL | (long) (argb & 0xFF00) << 24 | (long) (argb >>> 24) << 48;
     }
 
     /** The opaque ARGB colour of a value in lanes whose channels are 0..255 ({@link #CHANNELS} only). */
     public static int argb(long lanes) {
         return 0xFF000000 | (int) lanes & 0xFF00FF | (int) (lanes >>> 24) & 0xFF00;
+    }
+
+    /** {@link #argb} with the value's own alpha (its filtered texels' alpha) instead of 255. */
+    public static int argbWithAlpha(long lanes) {
+        return (int) (lanes >>> 24) & 0xFF00FF00 | (int) lanes & 0xFF00FF;
     }
 
     /** All levels' texels in lanes, padded, rows from the bottom (see the class comment); read-only. */

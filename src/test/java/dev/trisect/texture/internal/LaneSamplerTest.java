@@ -121,6 +121,27 @@ class LaneSamplerTest {
         }
     }
 
+    @Test
+    void alphaIsFilteredAsTheColourIsInItsOwnLane() {
+        Random rnd = new Random(5);
+        for (int n = 0; n < 10_000; n++) {
+            int[] c = {rnd.nextInt(), rnd.nextInt(), rnd.nextInt(), rnd.nextInt()};
+            int fx = rnd.nextInt(256);
+            int fy = rnd.nextInt(256);
+            long l = LaneSampler.blend(TexelLanes.lanes(c[0]), TexelLanes.lanes(c[1]), TexelLanes.lanes(c[2]),
+                    TexelLanes.lanes(c[3]), fx, fy);
+            int rgb = reference(c[0], c[1], c[2], c[3], fx, fy);
+            // The rule on each texel's alpha moved into the blue channel gives the alpha.
+            int alpha = reference(c[0] >>> 24, c[1] >>> 24, c[2] >>> 24, c[3] >>> 24, fx, fy) & 0xFF;
+            assertEquals(rgb, TexelLanes.argb(l), "colour, as without alpha");
+            assertEquals(alpha << 24 | rgb & 0xFFFFFF, TexelLanes.argbWithAlpha(l));
+            int weight = rnd.nextInt(257);
+            long m = LaneSampler.lerp(l, TexelLanes.lanes(c[0]), weight);
+            int want = (alpha * (256 - weight) + (c[0] >>> 24) * weight + 128) >> 8;
+            assertEquals(want, TexelLanes.argbWithAlpha(m) >>> 24, "the blend of two levels' alphas");
+        }
+    }
+
     /** The sample by the rule, from the texture's own texels: wrap each of the four with floorMod. */
     private static int expected(int[] argb, int w, int h, long px, long py) {
         int i0 = (int) Math.floorMod(px >> 8, (long) w);
