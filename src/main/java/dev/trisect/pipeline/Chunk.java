@@ -26,7 +26,7 @@ final class Chunk {
      * {@link Commands#TREE} per input triangle of {@link #trees} and a {@link Commands#TRIANGLE} per one
      * that was not split (its one piece).
      */
-    final Commands commands = new Commands(out, trees, null);
+    final Commands commands = new Commands().triangles(out).trees(trees);
     // What the last geometry attempt counted (see FrameStats for their meaning).
     long culledBack;
     long culledFrustum;

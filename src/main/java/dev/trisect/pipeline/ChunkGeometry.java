@@ -11,6 +11,7 @@ import static dev.trisect.tessellate.VertexLayout.Z;
 
 import dev.trisect.math.Viewport;
 import dev.trisect.raster.Commands;
+import dev.trisect.raster.ScreenTriangles;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.tessellate.PieceBudget;
 import dev.trisect.tessellate.Tessellator;
@@ -139,18 +140,21 @@ final class ChunkGeometry {
                 tess.process(b, o, o + clipStride, o + 2 * clipStride, split, w.sink);
                 if (!split) {
                     for (int p = firstPiece; p < chunk.out.count(); p++) {
-                        chunk.commands.add(Commands.TRIANGLE, p);
+                        chunk.commands.add(Commands.TRIANGLE, p, chunk.out.firstRow(p), chunk.out.endRow(p));
                     }
                 } else if (tess.splitTree().complete() && tess.splitTree().leaves() > 0) {
                     if (tess.splitTree().nodes() == 0) {
                         // Not split: its one piece is the input triangle, filled as the other paths fill one.
-                        chunk.commands.add(Commands.TRIANGLE, firstPiece);
+                        chunk.commands.add(Commands.TRIANGLE, firstPiece, chunk.out.firstRow(firstPiece),
+                                chunk.out.endRow(firstPiece));
                     } else {
                         int material = w.batchMaterials[i];
                         int maxLevel = trilinear ? draws.textures()[material].mipChain().maxLevel() : 0;
                         int ps = layout.projectedStride();
-                        chunk.commands.add(Commands.TREE, chunk.trees.add(tess.vertices(), 0, ps, 2 * ps,
-                                w.batchIds[i], material, tess.splitTree(), chunk.out, firstPiece, maxLevel));
+                        int g = chunk.trees.add(tess.vertices(), 0, ps, 2 * ps, w.batchIds[i], material,
+                                tess.splitTree(), chunk.out, firstPiece, maxLevel);
+                        ScreenTriangles inputs = chunk.trees.inputs();
+                        chunk.commands.add(Commands.TREE, g, inputs.firstRow(g), inputs.endRow(g));
                     }
                 }
             }

@@ -29,7 +29,7 @@ final class LineGeometry {
     private final Segments segments = new Segments();
     private final LineSetup setup = new LineSetup();
     /** The frame's lines as commands: what the fill draws after each band's triangles. */
-    private final Commands commands = new Commands(null, null, segments);
+    private final Commands commands = new Commands().segments(segments);
     private double[] clip = new double[0];
     /** The segment being clipped: x, y, z, w of each end. */
     private final double[] ends = new double[8];
@@ -65,7 +65,7 @@ final class LineGeometry {
                     if (setup.add(segments, viewport.screenX(e[0], e[3]), viewport.screenY(e[1], e[3]),
                             nearer / e[3], viewport.screenX(e[4], e[7]), viewport.screenY(e[5], e[7]),
                             nearer / e[7], lineWidth, colours[s])) {
-                        commands.add(Commands.LINE, ref);
+                        commands.add(Commands.LINE, ref, segments.firstRow(ref), segments.lastRow(ref) + 1);
                     }
                 }
             }

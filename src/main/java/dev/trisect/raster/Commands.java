@@ -24,9 +24,11 @@ import java.util.Arrays;
  * kinds (the bins keep it, {@link BandBins}); what is submitted later is drawn over what is submitted
  * earlier where the depth test lets it.
  *
- * <p>Use: {@link #clear}, {@link #add} each command in order, {@link #bin}; then band b's commands
- * are {@code command(bins().items()[k])} for k in {@code [bins().start(b), bins().start(b + 1))}.
- * Not thread-safe to fill; read by any number of threads after {@link #bin}.
+ * <p>Use: give the list the stores of the kinds it holds ({@link #triangles(ScreenTriangles)}, ...),
+ * {@link #clear}, {@link #add} each command in order with the rows its setup says it may light,
+ * {@link #bin}; then band b's commands are {@code command(bins().items()[k])} for k in
+ * {@code [bins().start(b), bins().start(b + 1))}. Not thread-safe to fill; read by any number of
+ * threads after {@link #bin}.
  */
 public final class Commands {
     /** A screen triangle, filled by the loop of the frame's path and filter. */
@@ -40,24 +42,31 @@ public final class Commands {
     /** The largest reference a command holds. */
     public static final int MAX_REF = (1 << KIND_SHIFT) - 1;
 
-    private final ScreenTriangles triangles;
-    private final SplitTrees trees;
-    private final Segments segments;
+    private ScreenTriangles triangles;
+    private SplitTrees trees;
+    private Segments segments;
     private int[] commands = new int[1024];
+    /** Per command, the first row it may light and the row after its last (unclipped). */
+    private int[] rows = new int[2 * 1024];
     private int count;
     private final BandBins bins = new BandBins();
 
-    /**
-     * A list over these stores; a list that holds no command of a kind may pass null for its store.
-     *
-     * @param triangles the store of {@link #TRIANGLE} commands
-     * @param trees     of {@link #TREE} commands
-     * @param segments  of {@link #LINE} commands
-     */
-    public Commands(ScreenTriangles triangles, SplitTrees trees, Segments segments) {
-        this.triangles = triangles;
-        this.trees = trees;
-        this.segments = segments;
+    /** Sets the store of {@link #TRIANGLE} commands; returns this list. */
+    public Commands triangles(ScreenTriangles store) {
+        triangles = store;
+        return this;
+    }
+
+    /** Sets the store of {@link #TREE} commands; returns this list. */
+    public Commands trees(SplitTrees store) {
+        trees = store;
+        return this;
+    }
+
+    /** Sets the store of {@link #LINE} commands; returns this list. */
+    public Commands segments(Segments store) {
+        segments = store;
+        return this;
     }
 
     /** Removes every command, keeping the storage (the stores are cleared by their owners). */
@@ -65,14 +74,20 @@ public final class Commands {
         count = 0;
     }
 
-    /** Appends a command of {@code kind} drawing item {@code ref} of that kind's store. */
-    public void add(int kind, int ref) {
+    /**
+     * Appends a command of {@code kind} drawing item {@code ref} of that kind's store, which may light
+     * frame rows {@code [firstRow, endRow)} (its setup says which; rows beyond the frame are allowed).
+     */
+    public void add(int kind, int ref, int firstRow, int endRow) {
         if (ref < 0 || ref > MAX_REF) {
             throw new IllegalArgumentException("command reference out of range: " + ref);
         }
         if (count == commands.length) {
             commands = Arrays.copyOf(commands, 2 * count);
+            rows = Arrays.copyOf(rows, 4 * count);
         }
+        rows[2 * count] = firstRow;
+        rows[2 * count + 1] = endRow;
         commands[count++] = kind << KIND_SHIFT | ref;
     }
 
@@ -103,26 +118,8 @@ public final class Commands {
     public void bin(int height, int bandRows) {
         bins.prepare(count);
         for (int i = 0; i < count; i++) {
-            int c = commands[i];
-            int ref = ref(c);
-            int first;
-            int end;
-            switch (kind(c)) {
-                case TRIANGLE -> {
-                    first = triangles.firstRow(ref);
-                    end = triangles.endRow(ref);
-                }
-                case TREE -> {
-                    first = trees.inputs().firstRow(ref);
-                    end = trees.inputs().endRow(ref);
-                }
-                default -> {
-                    first = segments.firstRow(ref);
-                    end = segments.lastRow(ref) + 1;
-                }
-            }
-            first = Math.max(0, first);
-            end = Math.min(height, end);
+            int first = Math.max(0, rows[2 * i]);
+            int end = Math.min(height, rows[2 * i + 1]);
             if (first >= end) {
                 bins.none(i);
             } else {
@@ -159,7 +156,9 @@ public final class Commands {
 
     /** Gives storage back: room for {@code n} commands and at most {@code entries} band entries. */
     public void shrink(int n, int entries) {
-        commands = Arrays.copyOf(commands, Math.max(1, Math.min(commands.length, Math.max(n, count))));
+        int keep = Math.max(1, Math.min(commands.length, Math.max(n, count)));
+        commands = Arrays.copyOf(commands, keep);
+        rows = Arrays.copyOf(rows, 2 * keep);
         bins.shrink(n, entries);
     }
 }

@@ -30,7 +30,7 @@ import org.junit.jupiter.api.Timeout;
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
 class WorkerPoolTest {
     /** A frame without lines. */
-    private static final Commands NO_LINES = new Commands(null, null, null);
+    private static final Commands NO_LINES = new Commands();
     /** The pool's helper threads, found by name. */
     private static List<Thread> helpers(String name) {
         List<Thread> found = new ArrayList<>();
@@ -261,7 +261,7 @@ class WorkerPoolTest {
                     double x = 4 + 20 * c;
                     chunk.out.add(x, 2, 1, 0, 0, x + 16, 40, 1, 2, 0, x, 44, 1, 0, 2, c,
                             broken && c == 1 ? 5 : 0);
-                    chunk.commands.add(Commands.TRIANGLE, 0);
+                    chunk.commands.add(Commands.TRIANGLE, 0, chunk.out.firstRow(0), chunk.out.endRow(0));
                     chunk.bin(h);
                 }
                 Framebuffer fb = new Framebuffer(w, h);

@@ -27,16 +27,18 @@ class CommandsTest {
         Segments segments = new Segments();
         segments.begin(W, H);
         LineSetup setup = new LineSetup();
-        Commands list = new Commands(triangles, null, segments);
+        Commands list = new Commands().triangles(triangles).segments(segments);
         for (int i = 0; i < 300; i++) {
             if (random.nextBoolean()) {
                 double x = W * random.nextDouble();
                 double y = H * random.nextDouble();
                 triangles.add(x, y, 1, 0, 0, x + 9 * random.nextDouble(), y + 9, 1, 1, 0, x - 5, y + 7, 1, 0, 1, i, 0);
-                list.add(Commands.TRIANGLE, triangles.count() - 1);
+                int t = triangles.count() - 1;
+                list.add(Commands.TRIANGLE, t, triangles.firstRow(t), triangles.endRow(t));
             } else if (setup.add(segments, W * random.nextDouble(), H * random.nextDouble(), 1, W * random.nextDouble(),
                     H * random.nextDouble(), 1, 1, 0xFFFFFF)) {
-                list.add(Commands.LINE, segments.count() - 1);
+                int l = segments.count() - 1;
+                list.add(Commands.LINE, l, segments.firstRow(l), segments.lastRow(l) + 1);
             }
         }
         list.bin(H, BAND_ROWS);
@@ -63,15 +65,15 @@ class CommandsTest {
         Segments segments = new Segments();
         segments.begin(W, H);
         LineSetup setup = new LineSetup();
-        Commands list = new Commands(triangles, null, segments);
+        Commands list = new Commands().triangles(triangles).segments(segments);
         triangles.add(2, 2, 0.5, 0, 0, 38, 3, 0.5, 1, 0, 3, 38, 0.5, 0, 1, 0, 0);
-        list.add(Commands.TRIANGLE, 0);
+        list.add(Commands.TRIANGLE, 0, triangles.firstRow(0), triangles.endRow(0));
         setup.add(segments, 4.5, 20.5, 0.5, 35.5, 20.5, 0.5, 1, 0x00FF00);
-        list.add(Commands.LINE, 0);
+        list.add(Commands.LINE, 0, segments.firstRow(0), segments.lastRow(0) + 1);
         triangles.add(2, 2, 0.5, 0, 0, 38, 3, 0.5, 1, 0, 3, 38, 0.5, 0, 1, 1, 1);
-        list.add(Commands.TRIANGLE, 1);
+        list.add(Commands.TRIANGLE, 1, triangles.firstRow(1), triangles.endRow(1));
         setup.add(segments, 4.5, 20.5, 0.5, 35.5, 20.5, 0.5, 1, 0xFFFFFF);
-        list.add(Commands.LINE, 1);
+        list.add(Commands.LINE, 1, segments.firstRow(1), segments.lastRow(1) + 1);
         list.bin(H, BAND_ROWS);
         Framebuffer frame = new Framebuffer(W, H);
         BandFill fill = new BandFill();
@@ -97,13 +99,13 @@ class CommandsTest {
 
     @Test
     void aSpikeOfCommandsGivesItsStorageBack() {
-        Commands list = new Commands(null, null, null);
+        Commands list = new Commands();
         for (int i = 0; i < 1_000_000; i++) {
-            list.add(Commands.TRIANGLE, i);
+            list.add(Commands.TRIANGLE, i, 0, 1);
         }
         list.clear();
-        list.add(Commands.TRIANGLE, 7);
-        list.add(Commands.TREE, 9);
+        list.add(Commands.TRIANGLE, 7, 0, 1);
+        list.add(Commands.TREE, 9, 0, 1);
         list.shrink(8192, 16384);
         assertTrue(list.capacity() <= 8192, "room kept for " + list.capacity() + " commands");
         assertEquals(2, list.count());
