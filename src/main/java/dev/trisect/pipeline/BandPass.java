@@ -72,14 +72,14 @@ final class BandPass {
         }
         boolean hasLines = lines.count() > 0;
         boolean perspective = settings.mode().divides();
-        double spanError = settings.mode().knots() ? settings.knotError() : 0;
+        double knotError = settings.mode().knots() ? settings.knotError() : 0;
         int width = frame.width();
         int height = frame.height();
         int background = settings.background();
         boolean borders = settings.borders();
         if (borders) {
             outlines.begin(chunkCount);
-            outlines.ticks(chunks, spanError, settings.borderStyle());
+            outlines.ticks(chunks, knotError, settings.borderStyle());
         }
         int prepTasks = borders ? chunkCount : 0;
         int bands = BandBins.bandCount(height, FrameRenderer.BAND_ROWS);
@@ -98,7 +98,7 @@ final class BandPass {
             BandFill fill = lane.fill;
             Rasterizer rasterizer = fill.rasterizer();
             rasterizer.filter(settings.filter());
-            rasterizer.spans(spanError);
+            rasterizer.spans(knotError);
             rasterizer.states(states);
             for (int c = 0; c < chunkCount; c++) {
                 lane.pixels += fill.fill(frame, chunks.get(c).commands, b, textures, perspective, 0, y0, width, y1);
