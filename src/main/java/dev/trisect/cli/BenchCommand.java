@@ -14,6 +14,9 @@ import dev.trisect.perf.FrameBench;
 import dev.trisect.perf.FrameTimes;
 import dev.trisect.mesh.Lines;
 import dev.trisect.perf.ScatteredLines;
+import dev.trisect.scene.Scene;
+import dev.trisect.scene.SceneObject;
+import dev.trisect.scene.internal.Sprites;
 import dev.trisect.perf.Sweep;
 import dev.trisect.perf.SweepChart;
 import dev.trisect.pipeline.Draws;
@@ -71,6 +74,13 @@ final class BenchCommand extends SceneCommand {
                     + "also timed without them, frame by frame in turn, and glref run with and without them, and "
                     + "each row ends with what the lines cost (the difference of the two).")
     int scatteredLines;
+
+    @Option(names = "--labels", paramLabel = "N", defaultValue = "0",
+            description = "Add N labels (\"label 0\", \"label 1\", ...; 16-pixel sans-serif, depth-tested) at points "
+                    + "scattered through the view (deterministic); each path is then also timed without them, frame "
+                    + "by frame in turn, and each row ends with what the labels cost, their layout included "
+                    + "(default: none; not with --lines or --glref).")
+    int scatteredLabels;
 
     @Option(names = "--json", description = "One JSON line per path instead of a table.")
     boolean json;
@@ -156,6 +166,12 @@ final class BenchCommand extends SceneCommand {
         if (scatteredLines < 0) {
             throw InputException.usage("--lines must be 0 or more, got " + scatteredLines);
         }
+        if (scatteredLabels < 0) {
+            throw InputException.usage("--labels must be 0 or more, got " + scatteredLabels);
+        }
+        if (scatteredLabels > 0 && (scatteredLines > 0 || glref != null)) {
+            throw InputException.usage("--labels times the labels alone: give it without --lines and --glref");
+        }
         SceneAsset scene = scatteredLines == 0 ? given : given.withLines(ScatteredLines.of(camera,
                 frame.size.viewport().aspect(), scatteredLines, 1, 0xFFFFFF));
         Texture[] textures = scene.textureArray();
@@ -230,21 +246,24 @@ final class BenchCommand extends SceneCommand {
                 FrameBench bench = new FrameBench(renderer, draws, Frames.allocate(frame.size));
                 // With lines, every path is also timed without them, frame by frame in turn: the
                 // difference of the medians is what the lines cost, measured alike for glref below.
-                Draws bare = scene.lines().isEmpty() ? null : light.draws(scene.mesh(), textures, vp);
+                Draws bare = scene.lines().isEmpty() && scatteredLabels == 0 ? null
+                        : light.draws(scene.mesh(), textures, vp);
+                // Labels are laid out again before every frame, as a view does.
+                Runnable labels = scatteredLabels == 0 ? null : labelLayout(camera, draws);
                 for (RenderMode mode : modes) {
                     RenderSettings settings = path.settings(frame).withMode(mode);
                     FrameBench.Result r;
-                    double linesMs = Double.NaN;
+                    double extraMs = Double.NaN;
                     if (bare == null) {
                         r = bench.time(settings, warmup, frames, progress.task(mode.id()));
                     } else {
                         FrameBench.Result[] pair = bench.timeAlternately(bare, settings, warmup, frames,
-                                progress.task(mode.id()));
+                                progress.task(mode.id()), labels);
                         r = pair[0];
-                        linesMs = pair[0].times().medianMs() - pair[1].times().medianMs();
+                        extraMs = pair[0].times().medianMs() - pair[1].times().medianMs();
                     }
                     progress.close(); // erased before the row, which goes to the same terminal
-                    Results.print(common.out(), List.of(row(mode.id(), r, threads, linesMs)));
+                    Results.print(common.out(), List.of(row(mode.id(), r, threads, extraMs)));
                     notice.measured();
                 }
                 if (glref != null) {
@@ -276,7 +295,7 @@ final class BenchCommand extends SceneCommand {
                     .put("pixels", (long) frame.size.width() * frame.size.height())
                     .put("pixels_written", r.last().pixelsWritten());
             if (!Double.isNaN(linesMs)) {
-                o.put("lines_ms", linesMs, 3);
+                o.put(extraName() + "_ms", linesMs, 3);
             }
             return o.toString();
         }
@@ -284,9 +303,26 @@ final class BenchCommand extends SceneCommand {
                 t.minMs(), t.meanMs(), t.p95Ms(), 1000 / t.medianMs(), r.last().pieces()) + linesColumn(linesMs);
     }
 
-    /** The lines' cost after a row, when measured. */
-    private static String linesColumn(double linesMs) {
-        return Double.isNaN(linesMs) ? "" : String.format(Locale.ROOT, "  lines %.3f ms", linesMs);
+    /** The lines' (or labels') cost after a row, when measured. */
+    private String linesColumn(double ms) {
+        return Double.isNaN(ms) ? "" : String.format(Locale.ROOT, "  %s %.3f ms", extraName(), ms);
+    }
+
+    /** What the rows' extra cost is of. */
+    private String extraName() {
+        return scatteredLabels > 0 ? "labels" : "lines";
+    }
+
+    /** Lays out the scattered labels into {@code draws}' quads, replacing those there. */
+    private Runnable labelLayout(Camera camera, Draws draws) {
+        Scene labels = new Scene();
+        labels.add(SceneObject.labels(ScatteredLines.labels(camera, frame.size.viewport().aspect(), scatteredLabels,
+                1)));
+        List<Scene.Placed> placed = labels.snapshot();
+        return () -> {
+            draws.quads().clear();
+            Sprites.layOut(placed, camera, frame.size.width(), frame.size.height(), draws.quads());
+        };
     }
 
     private static final Pattern GLREF_OUT = Pattern.compile("ms_per_frame\\s+([0-9.]+)");

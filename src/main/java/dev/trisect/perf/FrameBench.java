@@ -75,10 +75,12 @@ public final class FrameBench {
      * lines) frame by frame in turn, into the same frame, so that the machine's drift and load fall on
      * both alike: their difference is what the extra costs.
      *
+     * @param prepare run before each frame of this bench's draws, inside its time (a layout that a frame
+     *                of a view makes each time, such as its labels'); null for nothing
      * @return the times of this bench's draws, then those of {@code without}
      */
     public Result[] timeAlternately(Draws without, RenderSettings settings, int warmup, int frames,
-                                    Progress progress) {
+                                    Progress progress, Runnable prepare) {
         if (frames < 1 || warmup < 0) {
             throw new IllegalArgumentException("frames must be at least 1 and warmup at least 0");
         }
@@ -88,6 +90,9 @@ public final class FrameBench {
         for (int i = 0; i < warmup + frames; i++) {
             for (int k = 0; k < 2; k++) {
                 long t0 = System.nanoTime();
+                if (k == 0 && prepare != null) {
+                    prepare.run();
+                }
                 last[k] = renderer.render(k == 0 ? draws : without, settings, frame);
                 if (i >= warmup) {
                     ms[k][i - warmup] = (System.nanoTime() - t0) / 1e6;

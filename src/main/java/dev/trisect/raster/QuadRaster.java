@@ -59,6 +59,8 @@ public final class QuadRaster {
     private final int[] kinds = new int[3];
     /** Per quad, the frame columns and rows it covers, set by {@link #bin}. */
     private int[] bounds = new int[4 * 64];
+    /** Per quad, set by {@link #bin}: the texel column at its first column's centre and per pixel, 32.32. */
+    private long[] steps = new long[2 * 64];
     private final BandBins bins = new BandBins();
     private int binRows = 1;
     private int width;
@@ -143,6 +145,7 @@ public final class QuadRaster {
         this.binRows = bandRows;
         if (bounds.length < 4 * count) {
             bounds = new int[4 * Math.max(count, bounds.length)];
+            steps = new long[bounds.length / 2];
         }
         bins.prepare(count);
         int shown = 0;
@@ -161,6 +164,11 @@ public final class QuadRaster {
             bounds[4 * s + 1] = (int) x1;
             bounds[4 * s + 2] = (int) y0;
             bounds[4 * s + 3] = (int) y1;
+            // The texel column in 32.32 fixed point, stepped per pixel: exact where a texel is a whole number
+            // of pixels at whole-pixel edges (glyphs: one texel a pixel), within 2^-32 texel a pixel elsewhere.
+            double sPerPixel = ints[ISTRIDE * s + 2] / (doubles[d + 2] - doubles[d]);
+            steps[2 * s] = (long) Math.floor((x0 + 0.5 - doubles[d]) * sPerPixel * 0x1p32);
+            steps[2 * s + 1] = (long) Math.floor(sPerPixel * 0x1p32);
             bins.rows(s, (int) y0, (int) y1, bandRows);
             shown++;
         }
@@ -182,41 +190,51 @@ public final class QuadRaster {
         long written = 0;
         for (int k = bins.start(b), end = bins.start(b + 1); k < end; k++) {
             int s = items[k];
-            int from = Math.max(y0, bounds[4 * s + 2]);
-            int to = Math.min(y1, bounds[4 * s + 3]);
-            for (int y = from; y <= to; y++) {
-                written += row(s, y, colour, depths);
-            }
+            written += rows(s, Math.max(y0, bounds[4 * s + 2]), Math.min(y1, bounds[4 * s + 3]), colour, depths);
         }
         return written;
     }
 
-    /** One row of quad s. */
-    private int row(int s, int y, int[] colour, float[] depths) {
+    /** Rows {@code from..to} of quad s. */
+    private int rows(int s, int from, int to, int[] colour, float[] depths) {
         int i = ISTRIDE * s;
         int d = DSTRIDE * s;
         int mode = ints[i];
         int tint = ints[i + 1];
         int texW = ints[i + 2];
         int texH = ints[i + 3];
+        int stride = ints[i + 4];
         int[] tex = textures[s];
-        double left = doubles[d];
-        double sPerPixel = texW / (doubles[d + 2] - left);
-        double tPerPixel = texH / (doubles[d + 3] - doubles[d + 1]);
-        int t = Math.min(texH - 1, (int) ((y + 0.5 - doubles[d + 1]) * tPerPixel));
-        int rowStart = ints[i + 5] + t * ints[i + 4];
+        double top = doubles[d + 1];
+        double tPerPixel = texH / (doubles[d + 3] - top);
         float q = (float) doubles[d + 4];
-        boolean depthTest = (mode & ON_TOP) == 0;
-        boolean tinted = (mode & TINT) != 0;
         int x0 = bounds[4 * s];
         int x1 = bounds[4 * s + 1];
-        int base = y * width;
+        long sFixed = steps[2 * s];
+        long sStep = steps[2 * s + 1];
+        int written = 0;
+        for (int y = from; y <= to; y++) {
+            int rowStart = ints[i + 5] + Math.min(texH - 1, (int) ((y + 0.5 - top) * tPerPixel)) * stride;
+            int base = y * width;
+            written += mode == (TEST | TINT)
+                    ? testedTint(tex, rowStart, rowStart + texW - 1, sFixed, sStep, colour, depths, base + x0,
+                            base + x1, q, tint | 0xFF000000)
+                    : row(mode, tint, tex, rowStart, rowStart + texW - 1, sFixed, sStep, colour, depths, base + x0,
+                            base + x1, q);
+        }
+        return written;
+    }
+
+    /** A row of any mode, from frame index {@code from} to {@code to}. */
+    private static int row(int mode, int tint, int[] tex, int rowStart, int last, long sFixed, long sStep,
+                           int[] colour, float[] depths, int from, int to, float q) {
+        boolean depthTest = (mode & ON_TOP) == 0;
+        boolean tinted = (mode & TINT) != 0;
         int written = 0;
         if ((mode & BLEND) == 0) {
             int rgb = tint | 0xFF000000;
-            for (int x = x0; x <= x1; x++) {
-                int texel = tex[rowStart + Math.min(texW - 1, (int) ((x + 0.5 - left) * sPerPixel))];
-                int at = base + x;
+            for (int at = from; at <= to; at++, sFixed += sStep) {
+                int texel = tex[Math.min(last, rowStart + (int) (sFixed >>> 32))];
                 if (texel >>> 24 >= 128 && (!depthTest || q >= depths[at])) {
                     colour[at] = tinted ? rgb : texel | 0xFF000000;
                     if (depthTest) {
@@ -227,14 +245,28 @@ public final class QuadRaster {
             }
         } else {
             int tintAlpha = tint >>> 24;
-            for (int x = x0; x <= x1; x++) {
-                int texel = tex[rowStart + Math.min(texW - 1, (int) ((x + 0.5 - left) * sPerPixel))];
-                int at = base + x;
+            for (int at = from; at <= to; at++, sFixed += sStep) {
+                int texel = tex[Math.min(last, rowStart + (int) (sFixed >>> 32))];
                 int a = ((texel >>> 24) * tintAlpha + 127) / 255;
                 if (a > 0 && (!depthTest || q >= depths[at])) {
                     colour[at] = blend(tinted ? tint : texel, colour[at], a);
                     written++;
                 }
+            }
+        }
+        return written;
+    }
+
+    /** The common row: a depth-tested glyph, alpha-tested, in one colour. */
+    private static int testedTint(int[] tex, int rowStart, int last, long sFixed, long sStep, int[] colour,
+                                  float[] depths, int from, int to, float q, int rgb) {
+        int written = 0;
+        for (int at = from; at <= to; at++, sFixed += sStep) {
+            if (tex[Math.min(last, rowStart + (int) (sFixed >>> 32))] < 0 && q >= depths[at]) {
+                // A texel below 0 has alpha 128 or more: the sign bit is alpha's top bit.
+                colour[at] = rgb;
+                depths[at] = q;
+                written++;
             }
         }
         return written;

@@ -100,6 +100,16 @@ public final class Sprites {
         }
     }
 
+    /**
+     * Lays out every billboard and label of {@code placed} for {@code camera} and a {@code width x height}
+     * frame into {@code quads} (after what they hold).
+     *
+     * @return the layout, which knows where its labels went
+     */
+    public static Sprites layOut(List<Scene.Placed> placed, Camera camera, int width, int height, QuadRaster quads) {
+        return new Sprites(placed, camera.viewProjection(new Viewport(width, height)), camera, width, height, quads);
+    }
+
     /** The labels drawn, in drawing order, with their boxes. */
     public List<Placed> labels() {
         return labels;

@@ -136,14 +136,34 @@ public final class GlyphAtlas {
             g.dispose();
         }
         int[] argb = image.getRGB(0, 0, w, h, null, 0, w);
-        place(w, h);
+        // The ink's own bounds (AWT's pixel bounds are an estimate, hence the margin drawn above).
+        int c0 = w;
+        int c1 = -1;
+        int r0 = h;
+        int r1 = -1;
         for (int r = 0; r < h; r++) {
             for (int c = 0; c < w; c++) {
-                texels[(shelfY + r) * WIDTH + shelfX + c] = (argb[r * w + c] >>> 24) >= 128 ? 0xFFFFFFFF : 0;
+                if ((argb[r * w + c] >>> 24) >= 128) {
+                    c0 = Math.min(c0, c);
+                    c1 = Math.max(c1, c);
+                    r0 = Math.min(r0, r);
+                    r1 = Math.max(r1, r);
+                }
             }
         }
-        Glyph glyph = new Glyph(shelfX, shelfY, w, h, bounds.x - 1, bounds.y - 1, advance, texels);
-        shelfX += w;
+        if (c1 < 0) {
+            return new Glyph(0, 0, 0, 0, 0, 0, advance, texels);
+        }
+        int iw = c1 - c0 + 1;
+        int ih = r1 - r0 + 1;
+        place(iw, ih);
+        for (int r = 0; r < ih; r++) {
+            for (int c = 0; c < iw; c++) {
+                texels[(shelfY + r) * WIDTH + shelfX + c] = (argb[(r0 + r) * w + c0 + c] >>> 24) >= 128 ? 0xFFFFFFFF : 0;
+            }
+        }
+        Glyph glyph = new Glyph(shelfX, shelfY, iw, ih, bounds.x - 1 + c0, bounds.y - 1 + r0, advance, texels);
+        shelfX += iw;
         return glyph;
     }
 
