@@ -89,6 +89,18 @@ class LinesCommandTest {
     }
 
     @Test
+    void benchTimesScatteredLabelsAgainstTheFrameWithoutThem() {
+        CliRun r = CliRun.of("bench", "--scene", "floor", "--size", "96x64", "--modes", "perspective", "--frames", "2",
+                "--warmup", "0", "--labels", "30");
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.out().lines().anyMatch(l -> l.startsWith("perspective") && l.matches(".* labels -?[0-9.]+ ms")),
+                r.out());
+        CliRun both = CliRun.of("bench", "--scene", "floor", "--labels", "3", "--lines", "3");
+        assertEquals(2, both.status(), both.err());
+        assertTrue(both.err().contains("--labels times the labels alone"), both.err());
+    }
+
+    @Test
     void benchGivesGlrefsLineCostAsItsTimeWithThemLessItsTimeWithout() throws IOException {
         // A stand-in for glref: 9 ms a frame when the OBJ it is given has l elements, 4 ms otherwise.
         Path glref = dir.resolve("fake-glref.sh");
