@@ -161,7 +161,9 @@ final class PixelScenes {
         SplitTrees trees = new SplitTrees();
         trees.layout(LAYOUT);
         int ps = LAYOUT.projectedStride();
-        trees.add(tess.vertices(), 0, ps, 2 * ps, 0, 0, tess.splitTree(), pieces, 0, 0);
+        // With the chain's levels, so that trilinear takes each piece's own level of detail.
+        int maxLevel = filter == TextureFilter.TRILINEAR ? texture.mipChain().maxLevel() : 0;
+        trees.add(tess.vertices(), 0, ps, 2 * ps, 0, 0, tess.splitTree(), pieces, 0, maxLevel);
         return r.fillTree(frame, trees, 0, textures, 0, 0, WIDTH, HEIGHT);
     }
 }
