@@ -74,7 +74,7 @@ final class FileMenu {
     }
 
     private static Action action(String name, String description, KeyStroke key, Runnable behaviour) {
-        return DemoWindow.command(name, description, key, behaviour);
+        return DemoCommands.command(name, description, key, behaviour);
     }
 
     private void rebuildRecent() {

@@ -1,13 +1,21 @@
 package dev.trisect.ui;
 
+import java.awt.image.BufferedImage;
+import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
+import java.util.concurrent.ExecutionException;
+import java.util.function.Consumer;
+import javax.imageio.ImageIO;
+import javax.swing.SwingWorker;
 
 /**
  * Where Ctrl+S puts screenshots: the user's Pictures folder if there is one, else the home folder —
- * never the working directory, which under {@code mvn exec:java} is the repository.
+ * never the working directory, which under {@code mvn exec:java} is the repository — and how it saves
+ * one.
  */
 final class Screenshots {
     private Screenshots() {
@@ -32,5 +40,45 @@ final class Screenshots {
             out = dir.resolve("trisect-" + stamp + "-" + n + ".png");
         }
         return out;
+    }
+
+    /**
+     * Saves {@code image} (null: no frame yet) as a new PNG in {@link #folder()} on a background thread,
+     * all or nothing, saying what happens through {@code status} on the event thread.
+     */
+    static void save(BufferedImage image, Consumer<String> status) {
+        if (image == null) {
+            status.accept("No frame to save yet.");
+            return;
+        }
+        Path target = newFile(folder(), LocalDateTime.now());
+        status.accept("Saving " + target + " \u2026");
+        new SwingWorker<Path, Void>() {
+            @Override
+            protected Path doInBackground() throws IOException {
+                // All or nothing: a partial file never takes the final name.
+                Path part = target.resolveSibling(target.getFileName() + ".part");
+                try {
+                    if (!ImageIO.write(image, "png", part.toFile())) {
+                        throw new IOException("no PNG writer");
+                    }
+                    Files.move(part, target, StandardCopyOption.ATOMIC_MOVE);
+                } finally {
+                    Files.deleteIfExists(part);
+                }
+                return target;
+            }
+
+            @Override
+            protected void done() {
+                try {
+                    status.accept("Saved screenshot to " + get());
+                } catch (ExecutionException e) {
+                    status.accept("Could not save the screenshot: " + e.getCause().getMessage());
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            }
+        }.execute();
     }
 }

@@ -86,30 +86,30 @@ class DemoLogicTest {
     void theStatusBarNamesThePathAndTheFilter() {
         dev.trisect.render.RenderSettings r = dev.trisect.render.RenderSettings.defaults()
                 .withMode(dev.trisect.render.RenderMode.SPANS).withFilter(dev.trisect.texture.TextureFilter.BILINEAR);
-        assertEquals("spans, max error 0.5 px, bilinear", DemoWindow.howDrawn(r, null, 0));
-        assertEquals("perspective, bilinear", DemoWindow.howDrawn(r.withMode(dev.trisect.render.RenderMode.PERSPECTIVE),
+        assertEquals("spans, max error 0.5 px, bilinear", PaceText.howDrawn(r, null, 0));
+        assertEquals("perspective, bilinear", PaceText.howDrawn(r.withMode(dev.trisect.render.RenderMode.PERSPECTIVE),
                 null, 0));
     }
 
     @Test
     void theStatusBarNamesTheSplitPolicyBesidePathAndFilter() {
         dev.trisect.render.RenderSettings r = dev.trisect.render.RenderSettings.defaults();
-        assertEquals("tessellated, edge 32 px, nearest", DemoWindow.howDrawn(r, null, 0));
+        assertEquals("tessellated, edge 32 px, nearest", PaceText.howDrawn(r, null, 0));
         dev.trisect.render.RenderSettings error = r.withTessellation(r.tessellation()
                 .withPolicy(dev.trisect.render.SplitPolicy.ERROR).withMaxError(0.5));
-        assertEquals("tessellated, error 0.5 px, nearest", DemoWindow.howDrawn(error, null, 0));
+        assertEquals("tessellated, error 0.5 px, nearest", PaceText.howDrawn(error, null, 0));
         // Under Auto, the threshold the newest frame was drawn with, and that Auto chose it.
         dev.trisect.render.RenderSettings drawn = r.withTessellation(r.tessellation().withMaxEdge(14.635));
-        assertEquals("tessellated, edge 14.635 px (auto), nearest", DemoWindow.howDrawn(r, drawn, 40));
+        assertEquals("tessellated, edge 14.635 px (auto), nearest", PaceText.howDrawn(r, drawn, 40));
         // P's message, with the key of the path that uses the policy when another shows.
         assertEquals("Split policy: Error (split while an edge's affine error bound is over 0.5 px)",
-                DemoWindow.policyChanged(error));
-        assertTrue(DemoWindow.policyChanged(r.withMode(dev.trisect.render.RenderMode.SPANS))
+                PaceText.policyChanged(error));
+        assertTrue(PaceText.policyChanged(r.withMode(dev.trisect.render.RenderMode.SPANS))
                 .endsWith("; the tessellated path (3) uses it"));
     }
     @Test
     void menuTooltipsWrap() {
-        String tip = DemoWindow.wrapped("Show what the pixel under the mouse is made of (click to pin it): triangle, piece, "
+        String tip = DemoMenus.wrapped("Show what the pixel under the mouse is made of (click to pin it): triangle, piece, "
                 + "split level, depth, texel coordinates in both paths, exact displacement & more");
         for (String line : tip.replaceAll("</?html>", "").split("<br>")) {
             assertTrue(line.length() <= 64 + 4, line);

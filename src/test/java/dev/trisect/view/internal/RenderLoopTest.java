@@ -199,7 +199,7 @@ class RenderLoopTest {
         reference.recordUv(true);
         for (RenderMode shown : RenderMode.values()) {
             List<RenderMode> drawn = new ArrayList<>();
-            double[] ms = RenderLoop.drawReference(shown, true, reference, (mode, into) -> {
+            double[] ms = FrameDrawer.drawReference(shown, true, reference, (mode, into) -> {
                 assertNotNull(into.uv(), mode + " timed without the UV output while " + shown + " records it");
                 drawn.add(mode);
                 return 1_000_000L * (mode.ordinal() + 1);
@@ -213,7 +213,7 @@ class RenderLoopTest {
             }
         }
         List<RenderMode> drawn = new ArrayList<>();
-        assertEquals(null, RenderLoop.drawReference(RenderMode.SPANS, false, reference, (mode, into) -> {
+        assertEquals(null, FrameDrawer.drawReference(RenderMode.SPANS, false, reference, (mode, into) -> {
             drawn.add(mode);
             return 1;
         }), "no rows when not measuring");

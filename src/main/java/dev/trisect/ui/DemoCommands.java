@@ -1,0 +1,113 @@
+package dev.trisect.ui;
+
+import java.awt.event.ActionEvent;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
+import java.awt.event.WindowEvent;
+import java.util.List;
+import java.util.function.Consumer;
+import javax.swing.AbstractAction;
+import javax.swing.Action;
+import javax.swing.ActionMap;
+import javax.swing.InputMap;
+import javax.swing.JComponent;
+import javax.swing.KeyStroke;
+
+/**
+ * The demo's own commands (the view brings its own, {@code TrisectView.action}), in one table: each is
+ * one {@link Action} for its menu item and its key, placed in a menu. To add one, add a line to
+ * {@link #table} and its row to {@link DemoHelp#ROWS} (the F1 panel and docs/demo.md); the menus and
+ * the key bindings follow from the table, and {@code DemoCommandsTest} fails when a key has no help
+ * row or is taken twice. Event thread only.
+ */
+final class DemoCommands {
+    /** The menu a command's item goes in. Items go after the menu's own, in table order. */
+    enum Menu {
+        FILE, VIEW, RENDER, SCENE, HELP
+    }
+
+    /**
+     * A command of the table: its menu (null: its item is placed elsewhere, as Open OBJ's by
+     * {@link FileMenu}), its action, and whether the item is a check box.
+     */
+    record Entry(Menu menu, Action action, boolean check) {
+        KeyStroke key() {
+            return (KeyStroke) action.getValue(Action.ACCELERATOR_KEY);
+        }
+    }
+
+    private DemoCommands() {
+    }
+
+    /** The demo's commands on window {@code w}, in the order of their items. */
+    static List<Entry> table(DemoWindow w) {
+        return List.of(
+                new Entry(null, w.fileMenu.open, false),
+                new Entry(Menu.FILE, command("Save screenshot", "Save the frame on screen as a PNG in "
+                        + Screenshots.folder(), ctrl(KeyEvent.VK_S), () -> Screenshots.save(w.view().frameImage(),
+                        w::status)), false),
+                new Entry(Menu.FILE, command("Exit", "Close Trisect", ctrl(KeyEvent.VK_Q),
+                        () -> w.frame().dispatchEvent(new WindowEvent(w.frame(), WindowEvent.WINDOW_CLOSING))), false),
+                new Entry(Menu.HELP, command("Keys and mouse", "Show every key and mouse gesture of the demo in a "
+                        + "panel", KeyStroke.getKeyStroke(KeyEvent.VK_F1, 0), w::toggleHelp), false));
+    }
+
+    /** A plain command: one action for its menu item and its key ({@code key} may be null). */
+    static Action command(String name, String description, KeyStroke key, Runnable behaviour) {
+        Action a = new AbstractAction(name) {
+            private static final long serialVersionUID = 1L;
+
+            @Override
+            public void actionPerformed(ActionEvent e) {
+                behaviour.run();
+            }
+        };
+        a.putValue(Action.SHORT_DESCRIPTION, description);
+        a.putValue(Action.ACCELERATOR_KEY, key);
+        return a;
+    }
+
+    /**
+     * An on/off command for a check-box item ({@link Entry#check} true): each use flips its state and
+     * hands the new one to {@code behaviour}; it starts off.
+     */
+    static Action toggle(String name, String description, KeyStroke key, Consumer<Boolean> behaviour) {
+        Action a = new AbstractAction(name) {
+            private static final long serialVersionUID = 1L;
+
+            @Override
+            public void actionPerformed(ActionEvent e) {
+                boolean on = !Boolean.TRUE.equals(getValue(Action.SELECTED_KEY));
+                putValue(Action.SELECTED_KEY, on);
+                behaviour.accept(on);
+            }
+        };
+        a.putValue(Action.SHORT_DESCRIPTION, description);
+        a.putValue(Action.ACCELERATOR_KEY, key);
+        a.putValue(Action.SELECTED_KEY, false);
+        return a;
+    }
+
+    /** Ctrl and a key. */
+    static KeyStroke ctrl(int keyCode) {
+        return KeyStroke.getKeyStroke(keyCode, InputEvent.CTRL_DOWN_MASK);
+    }
+
+    /** Binds each command's key on the window (the view binds its own while it has the keyboard). */
+    static void bindKeys(JComponent root, List<Entry> table) {
+        InputMap in = root.getInputMap(JComponent.WHEN_IN_FOCUSED_WINDOW);
+        ActionMap act = root.getActionMap();
+        for (Entry e : table) {
+            if (e.key() != null) {
+                in.put(e.key(), e.action());
+                act.put(e.action(), e.action());
+            }
+        }
+    }
+
+    /** How a key reads in the help table: "Ctrl+S", "F1", "L". */
+    static String keyText(KeyStroke key) {
+        String mods = InputEvent.getModifiersExText(key.getModifiers());
+        return (mods.isEmpty() ? "" : mods + "+") + KeyEvent.getKeyText(key.getKeyCode());
+    }
+}
