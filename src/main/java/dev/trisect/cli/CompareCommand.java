@@ -46,8 +46,8 @@ final class CompareCommand extends SceneCommand {
     Path heatmap;
 
     @Option(names = "--heatmap-max", paramLabel = "PX", converter = Converters.PositiveConverter.class,
-            defaultValue = "2", description = "Displacement drawn at the top of the heat map's scale, pixels "
-                    + "(default: ${DEFAULT-VALUE}).")
+            description = "Displacement drawn at the top of the heat map's scale, pixels (default: the frame's "
+                    + "largest, so that its worst pixel is white).")
     double heatmapMax;
 
     @Option(names = "--heatmap-scale", paramLabel = "linear|log", defaultValue = "linear",
@@ -129,7 +129,8 @@ final class CompareCommand extends SceneCommand {
         Results.deliver(common.out(), batch, b -> {
             if (heatmap != null) {
                 int[] argb = new int[w * h];
-                HeatScale scale = new HeatScale(heatmapScale.equals("log"), heatmapMax);
+                HeatScale scale = heatmapMaxGiven() ? new HeatScale(heatmapScale.equals("log"), heatmapMax)
+                        : new HeatScale(heatmapScale.equals("log"), 1).fitted(displacement);
                 HeatMap.render(displacement, test.uv(), reference.uv(), w, h, scale, argb);
                 HeatMap.drawLegend(argb, w, h, scale);
                 ImageFiles.write(b, heatmap, w, h, argb);

@@ -7,6 +7,7 @@ import dev.trisect.io.OutputBatch;
 import dev.trisect.io.Pfm;
 import dev.trisect.metrics.Comparison;
 import dev.trisect.metrics.HeatMap;
+import dev.trisect.metrics.HeatScale;
 import dev.trisect.metrics.ImageComparison;
 import dev.trisect.texture.Texture;
 import dev.trisect.texture.TextureReader;
@@ -54,8 +55,8 @@ final class DiffCommand implements Callable<Integer> {
     Path heatmap;
 
     @Option(names = "--heatmap-max", paramLabel = "PX", converter = Converters.PositiveConverter.class,
-            defaultValue = "2", description = "Displacement estimate at the top of the heat map's scale, pixels "
-                    + "(default: ${DEFAULT-VALUE}).")
+            description = "Displacement estimate at the top of the heat map's scale, pixels (default: the largest, "
+                    + "so that the worst pixel is white).")
     double heatmapMax;
 
     @Override
@@ -108,7 +109,9 @@ final class DiffCommand implements Callable<Integer> {
         Results.deliver(common.out(), batch, files -> {
             if (heatmap != null) {
                 int[] argb = new int[w * h];
-                HeatMap.render(displacement, uvA, uvB, w, h, heatmapMax, argb);
+                HeatScale scale = heatmapMax > 0 ? HeatScale.linear(heatmapMax) : HeatScale.linear(1).fitted(displacement);
+                HeatMap.render(displacement, uvA, uvB, w, h, scale, argb);
+                HeatMap.drawLegend(argb, w, h, scale);
                 ImageFiles.write(files, heatmap, w, h, argb);
             }
         }, List.of(json));

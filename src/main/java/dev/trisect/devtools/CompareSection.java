@@ -33,6 +33,7 @@ public final class CompareSection implements ToolSection {
     /** Top of the heat map's scale: 0..400 maps onto 0.1..1000 px, logarithmically. */
     private final JSlider heatTop = new JSlider(0, 400, topToSlider(2));
     private final NumberField heatTopValue;
+    private final JCheckBox heatTopFitted = new JCheckBox("Top at the frame's largest displacement");
 
     CompareSection(ViewController owner) {
         this.owner = owner;
@@ -75,12 +76,27 @@ public final class CompareSection implements ToolSection {
         form.row(viewRow);
         heatScale.setToolTipText("Heat map scale: linear from 0, or logarithmic over " + HeatScale.DECADES
                 + " decades below its top, so that 0.5 px and 1,000 px errors both read");
-        heatTop.setToolTipText("Displacement drawn white, at the top of the heat map's scale, pixels");
-        heatScale.addActionListener(e -> heat());
+        heatTop.setToolTipText("Displacement drawn white, at the top of the heat map's scale, pixels; setting it "
+                + "keeps it there");
+        heatTopFitted.setToolTipText("Put the top of the heat map's scale at the largest displacement of the frame "
+                + "on screen, so that its worst pixel is white (the default); off, the top stays where it was set");
+        heatTopFitted.addActionListener(e -> {
+            if (!syncing) {
+                owner.update(s -> s.withHeatTopFitted(heatTopFitted.isSelected()));
+            }
+        });
+        // Linear or log keeps the top, fitted or set.
+        heatScale.addActionListener(e -> {
+            if (!syncing) {
+                owner.update(s -> s.withHeatScale(new HeatScale(heatScale.getSelectedIndex() == 1,
+                        s.heatScale().maxPixels())).withHeatTopFitted(s.heatTopFitted()));
+            }
+        });
         ToolsForm.listen(heatTop, () -> syncing, this::showHeatTop, v -> heat());
         form.row(ToolsForm.label("Heat map scale", heatScale.getToolTipText()), heatScale);
         form.row(ToolsForm.label("Heat map top", heatTop.getToolTipText()), heatTopValue);
         form.row(heatTop);
+        form.row(heatTopFitted);
     }
 
     static int topToSlider(double px) {
@@ -127,8 +143,10 @@ public final class CompareSection implements ToolSection {
             viewDifference.setSelected(s.view() == ViewKind.DIFFERENCE);
             viewSplit.setSelected(s.view() == ViewKind.SPLIT);
             heatScale.setSelectedIndex(s.heatScale().logarithmic() ? 1 : 0);
-            heatTop.setValue(topToSlider(s.heatScale().maxPixels()));
-            heatTopValue.show(s.heatScale().maxPixels());
+            heatTopFitted.setSelected(s.heatTopFitted());
+            if (!s.heatTopFitted()) {
+                showTop(s.heatScale().maxPixels());
+            }
         } finally {
             syncing = false;
         }
@@ -143,9 +161,26 @@ public final class CompareSection implements ToolSection {
         return Double.isNaN(value) ? "\u2014" : String.format(Locale.ROOT, format, value);
     }
 
+    /** Shows a top on the slider and in the field without setting it. */
+    private void showTop(double px) {
+        boolean was = syncing;
+        syncing = true;
+        try {
+            heatTop.setValue(topToSlider(px));
+            heatTopValue.show(px);
+        } finally {
+            syncing = was;
+        }
+    }
+
     @Override
     public void refresh(ViewState.Progress progress, FrameSlot front, ViewState.Measurement m) {
         ViewSettings now = owner.state().settings();
+        if (now.heatTopFitted() && front != null && front.view == ViewKind.DIFFERENCE && front.heatScale != null
+                && !heatTopValue.isFocusOwner()) {
+            // The fitted top of the heat map on screen, as its legend says.
+            showTop(front.heatScale.maxPixels());
+        }
         boolean measuring = now.compare() || now.view() != ViewKind.IMAGE;
         for (String k : MEASURES) {
             form.setEnabled(k, measuring);

@@ -8,11 +8,12 @@ import java.util.List;
  * Draws a displacement image (pixels, as filled by
  * {@link ImageComparison#compare(int, int, int[], double[], int[], double[], float[])}) as colours.
  *
- * <p>The ramp runs from a very dark indigo at 0 through blue, purple, red, orange and yellow to white at
+ * <p>The ramp runs from a dark blue at 0 through blue, purple, red, orange and yellow to white at
  * {@code maxPixels} and above. Its relative luminance rises strictly from each of its
  * {@value #RAMP_SIZE} entries to the next, so brighter always means further off, also in grey scale and
- * for colour-blind readers. It starts above black so that a perfect pixel stays distinguishable from
- * an uncovered one. Values map linearly: entry {@code round(value / maxPixels * (RAMP_SIZE - 1))},
+ * for colour-blind readers. It starts well above black (a contrast of 1.6:1 by WCAG 2's formula; the
+ * dark indigo it started from before, 1.17:1, read as black on screen), so that a perfect pixel is
+ * told from one that nothing drew. Values map linearly: entry {@code round(value / maxPixels * (RAMP_SIZE - 1))},
  * clamped.
  *
  * <p>Pixels without a displacement (NaN) are drawn {@link #UNDEFINED_ARGB}, a neutral dark grey that the
@@ -30,7 +31,7 @@ public final class HeatMap {
     /** Key colours at ramp entries; the entries between are interpolated linearly in sRGB. */
     private static final int[] KEY_INDEX = {0, 40, 85, 125, 170, 212, 255};
     private static final int[] KEY_RGB = {
-        0x101040, // dark indigo
+        0x1E2878, // dark blue
         0x2832C8, // blue
         0x9632C8, // purple
         0xE63246, // red
@@ -105,30 +106,51 @@ public final class HeatMap {
         }
     }
 
+    /** Background of the legend's panel: a dark slate, told from black ("not drawn") and the grey. */
+    public static final int LEGEND_BACKGROUND = 0xFF1C2430;
+
     /**
-     * Draws the scale's legend into an image: a bar of the ramp with its labels ({@link HeatScale#labels})
-     * and the scale named, on a dark box in the top-left corner (clipped to small images).
+     * Draws the scale's legend into an image, on a panel in its top-left corner: a bar of the ramp with
+     * its labels ({@link HeatScale#labels}), the scale named, and a swatch each for "not drawn" (black)
+     * and "not comparable" (grey). The text is 14 px high (the built-in font at scale 2) where the image
+     * is at least 480 x 240 px, else 7 px (the panel would cover most of a smaller image); no legend
+     * where even that has no room.
      */
     public static void drawLegend(int[] argb, int width, int height, HeatScale scale) {
-        int barW = Math.min(200, width - 16);
-        if (barW < 20 || height < 40) {
+        int s = width >= 480 && height >= 240 ? 2 : 1;
+        int barW = Math.min(150 * s, width - 16);
+        int line = BitmapFont.CELL_HEIGHT * s + 2 * s;
+        int barH = 6 * s;
+        if (barW < 20 || height < 24 + barH + 4 * line) {
             return;
         }
         int x = 8;
         int y = 8;
-        int font = BitmapFont.CELL_HEIGHT;
-        fill(argb, width, height, x - 4, y - 4, x + barW + 4, y + 10 + 2 * font + 8, 0xFF000000);
+        String title = (scale.logarithmic() ? "LOG" : "LINEAR") + " DISPLACEMENT";
+        String[] swatches = {"NOT DRAWN", "NOT COMPARABLE"};
+        int swatch = BitmapFont.GLYPH_HEIGHT * s;
+        int textW = Math.max(BitmapFont.textWidth(title, s), swatch + 2 * s + BitmapFont.textWidth(swatches[1], s));
+        fill(argb, width, height, x - 6, y - 6, x + Math.max(barW, textW) + 6, y + barH + 4 * s + 3 * line + 4,
+                LEGEND_BACKGROUND);
         for (int i = 0; i < barW; i++) {
             int c = RAMP[(int) Math.round((double) i / (barW - 1) * (RAMP_SIZE - 1))];
-            fill(argb, width, height, x + i, y, x + i + 1, y + 10, c);
+            fill(argb, width, height, x + i, y, x + i + 1, y + barH, c);
         }
         // A label per decade (log) or the ends and middle (linear), the top marked as a floor ("≥"), in
         // the view's words: the font has the "≥" for that (only its capitals show "px" as "PX").
-        for (HeatScale.Placed p : HeatScale.layout(scale.labels(), barW, t -> BitmapFont.textWidth(t, 1), 12)) {
-            BitmapFont.drawText(argb, width, height, x + p.x(), y + 13, p.text(), 1, 0xFFFFFFFF);
+        int labels = y + barH + 4 * s;
+        for (HeatScale.Placed p : HeatScale.layout(scale.labels(), barW, t -> BitmapFont.textWidth(t, s), 6 * s)) {
+            BitmapFont.drawText(argb, width, height, x + p.x(), labels, p.text(), s, 0xFFFFFFFF);
         }
-        BitmapFont.drawText(argb, width, height, x, y + 13 + font, (scale.logarithmic() ? "LOG" : "LINEAR")
-                + " DISPLACEMENT", 1, 0xFFFFFFFF);
+        BitmapFont.drawText(argb, width, height, x, labels + line, title, s, 0xFFFFFFFF);
+        int[] colours = {UNCOVERED_ARGB, UNDEFINED_ARGB};
+        for (int k = 0; k < 2; k++) {
+            int sy = labels + (2 + k) * line;
+            // A white frame round each swatch, so that black shows on the dark panel.
+            fill(argb, width, height, x, sy, x + swatch, sy + swatch, 0xFFFFFFFF);
+            fill(argb, width, height, x + s, sy + s, x + swatch - s, sy + swatch - s, colours[k]);
+            BitmapFont.drawText(argb, width, height, x + swatch + 2 * s, sy, swatches[k], s, 0xFFFFFFFF);
+        }
     }
 
     private static void fill(int[] argb, int width, int height, int x0, int y0, int x1, int y1, int colour) {

@@ -32,6 +32,33 @@ public record HeatScale(boolean logarithmic, double maxPixels) {
         return new HeatScale(true, maxPixels);
     }
 
+    /** The least top {@link #fitted} gives, pixels: below it every pixel looks exact anyway. */
+    public static final double LEAST_FITTED_TOP = 0.001;
+
+    /** This scale (linear or log) with another top, pixels. */
+    public HeatScale withTop(double top) {
+        return new HeatScale(logarithmic, top);
+    }
+
+    /**
+     * The scale's kind with its top at the largest displacement of an image, so that the worst pixel is
+     * white and the ramp spans what is there: the heat map's default top (the view's, unless the user
+     * sets one, and {@code compare --heatmap}'s without {@code --heatmap-max}). At least
+     * {@link #LEAST_FITTED_TOP}; 1 px when no displacement is defined or none is above 0.
+     *
+     * @param displacement displacements in pixels, NaN where undefined
+     */
+    public HeatScale fitted(float[] displacement) {
+        float max = 0;
+        for (float d : displacement) {
+            // NaN fails both comparisons, so undefined pixels are passed over.
+            if (d > max && d < Float.POSITIVE_INFINITY) {
+                max = d;
+            }
+        }
+        return withTop(max > 0 ? Math.max(LEAST_FITTED_TOP, max) : 1);
+    }
+
     /** Bottom of a logarithmic scale, pixels: anything at or below it gets the first colour. */
     public double minPixels() {
         return logarithmic ? maxPixels / Math.pow(10, DECADES) : 0;

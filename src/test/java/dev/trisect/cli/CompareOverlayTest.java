@@ -44,7 +44,7 @@ class CompareOverlayTest {
                 "--heatmap", log.toString(), "--heatmap-max", "1000", "--heatmap-scale", "log").status());
         int[] a = TextureReader.read(lin).argb();
         int[] b = TextureReader.read(log).argb();
-        assertEquals(0xFFFFFFFF, a[8 * 320 + 207], "the legend's bar ends white");
+        assertEquals(0xFFFFFFFF, a[8 * 320 + 8 + 149], "the legend's bar ends white");
         java.util.Set<Integer> linColours = new java.util.HashSet<>();
         java.util.Set<Integer> logColours = new java.util.HashSet<>();
         for (int i = 60 * 320; i < a.length; i++) {
@@ -56,6 +56,33 @@ class CompareOverlayTest {
         CliRun bad = CliRun.of("compare", "--scene", "floor", "--heatmap-scale", "cubic", "--heatmap", lin.toString());
         assertEquals(2, bad.status());
         assertTrue(bad.errLine().contains("--heatmap-scale must be linear or log"), bad.err());
+    }
+
+    /** Without --heatmap-max the top is the frame's largest displacement: its worst pixel is white. */
+    @Test
+    void theHeatMapsTopIsTheLargestDisplacementByDefault() throws IOException {
+        String[] frame = {"compare", "--scene", "floor", "--size", "320x180", "--split", "error", "--max-error", "0.5"};
+        Path fitted = dir.resolve("fitted.png");
+        CliRun run = CliRun.of(cat(frame, "--heatmap", fitted.toString()));
+        assertEquals(0, run.status(), run.err());
+        java.util.regex.Matcher max = java.util.regex.Pattern.compile("\"max_displacement\":([0-9.eE-]+)")
+                .matcher(run.out());
+        assertTrue(max.find(), run.out());
+        Path atMax = dir.resolve("at-max.png");
+        Path atTwo = dir.resolve("at-two.png");
+        assertEquals(0, CliRun.of(cat(frame, "--heatmap", atMax.toString(), "--heatmap-max", max.group(1))).status());
+        assertEquals(0, CliRun.of(cat(frame, "--heatmap", atTwo.toString(), "--heatmap-max", "2")).status());
+        int[] byDefault = TextureReader.read(fitted).argb();
+        assertTrue(java.util.Arrays.equals(TextureReader.read(atMax).argb(), byDefault),
+                "the default top is the printed max_displacement, " + max.group(1));
+        // The old default, 2 px, left this 0.5 px-bounded frame in the ramp's dark third.
+        assertFalse(java.util.Arrays.equals(TextureReader.read(atTwo).argb(), byDefault));
+    }
+
+    private static String[] cat(String[] a, String... b) {
+        String[] out = java.util.Arrays.copyOf(a, a.length + b.length);
+        System.arraycopy(b, 0, out, a.length, b.length);
+        return out;
     }
 
     @Test

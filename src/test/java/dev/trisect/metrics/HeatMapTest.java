@@ -38,7 +38,11 @@ class HeatMapTest {
     void endsOfTheRamp() {
         int zero = HeatMap.colour(0, 2);
         assertNotEquals(HeatMap.UNCOVERED_ARGB, zero, "a perfect pixel must not look uncovered");
-        assertTrue(luminance(zero) < 0.02, "the ramp starts dark");
+        assertTrue(luminance(zero) < 0.05, "the ramp starts dark");
+        // WCAG 2 contrast (L1 + 0.05) / (L2 + 0.05): the old start, 0x101040, was 1.17:1 against black and
+        // read as "nothing drawn" on screen.
+        double contrast = (luminance(zero) + 0.05) / (luminance(HeatMap.UNCOVERED_ARGB) + 0.05);
+        assertTrue(contrast >= 1.5, "an exact pixel is told from one nothing drew: contrast " + contrast);
         assertEquals(zero, HeatMap.colour(-3, 2));
         assertEquals(WHITE, HeatMap.colour(2, 2));
         assertEquals(WHITE, HeatMap.colour(50, 2));

@@ -52,9 +52,9 @@ class HeatScaleTest {
         int[] argb = new int[w * h];
         HeatMap.drawLegend(argb, w, h, HeatScale.log(1000));
         assertEquals(HeatMap.colour(0, 1), argb[8 * w + 8], "the bar starts at the ramp's first colour");
-        assertEquals(0xFFFFFFFF, argb[8 * w + 8 + 199], "and ends white");
+        assertEquals(0xFFFFFFFF, argb[8 * w + 8 + 149], "and ends white");
         int white = 0;
-        for (int y = 21; y < 40; y++) {
+        for (int y = 18; y < 40; y++) {
             for (int x = 0; x < w; x++) {
                 white += argb[y * w + x] == 0xFFFFFFFF ? 1 : 0;
             }
@@ -73,12 +73,12 @@ class HeatScaleTest {
         int[] argb = new int[w * h];
         HeatMap.drawLegend(argb, w, h, HeatScale.linear(2));
         String top = "\u2265 2 px";
-        int x = 8 + 200 - BitmapFont.textWidth(top, 1);
+        int x = 8 + 150 - BitmapFont.textWidth(top, 1);
         int[] expected = new int[w * h];
-        BitmapFont.drawText(expected, w, h, x, 21, top, 1, 0xFFFFFFFF);
+        BitmapFont.drawText(expected, w, h, x, 18, top, 1, 0xFFFFFFFF);
         int inked = 0;
-        for (int y = 21; y < 21 + BitmapFont.GLYPH_HEIGHT; y++) {
-            for (int i = x - BitmapFont.CELL_WIDTH; i < 8 + 200; i++) {
+        for (int y = 18; y < 18 + BitmapFont.GLYPH_HEIGHT; y++) {
+            for (int i = x - BitmapFont.CELL_WIDTH; i < 8 + 150; i++) {
                 boolean white = argb[y * w + i] == 0xFFFFFFFF;
                 assertEquals(expected[y * w + i] == 0xFFFFFFFF, white, "pixel " + i + "," + y + " of \"" + top + "\"");
                 inked += white ? 1 : 0;
@@ -93,6 +93,55 @@ class HeatScaleTest {
                 }
             }
         }
+    }
+
+    /** The legend of a heat map image: text 14 px high on a panel, and what black and grey mean. */
+    @Test
+    void theImagesLegendIsAPanelWithReadableTextAndTheColoursThatAreNotErrors() {
+        int w = 640;
+        int h = 360;
+        int[] argb = new int[w * h];
+        java.util.Arrays.fill(argb, 0xFFFFFFFF);
+        HeatMap.drawLegend(argb, w, h, HeatScale.linear(2));
+        // The rows the white title text inks, on the panel: its glyphs are 7 font pixels at scale 2.
+        int top = -1;
+        int bottom = -1;
+        int background = 0;
+        int black = 0;
+        int grey = 0;
+        for (int y = 0; y < 120; y++) {
+            for (int x = 8; x < 300; x++) {
+                int c = argb[y * w + x];
+                background += c == HeatMap.LEGEND_BACKGROUND ? 1 : 0;
+                black += c == HeatMap.UNCOVERED_ARGB ? 1 : 0;
+                grey += c == HeatMap.UNDEFINED_ARGB ? 1 : 0;
+            }
+        }
+        // The title ("LINEAR DISPLACEMENT") is the third line: find its inked rows left of the bar's labels.
+        for (int y = 40; y < 90; y++) {
+            boolean inked = false;
+            for (int x = 8; x < 8 + BitmapFont.textWidth("LINEAR", 2); x++) {
+                inked |= argb[y * w + x] == 0xFFFFFFFF;
+            }
+            if (inked) {
+                top = top < 0 ? y : top;
+                bottom = y;
+            }
+        }
+        assertTrue(top > 0 && bottom - top + 1 >= 12, "text at least 12 px high: rows " + top + ".." + bottom);
+        assertTrue(background > 5000, "on a panel of its own colour: " + background);
+        assertTrue(black > 50 && grey > 50, "swatches for not drawn (black) and not comparable (grey): " + black
+                + ", " + grey);
+    }
+
+    @Test
+    void theFittedTopIsTheLargestDisplacement() {
+        float[] d = {0.25f, Float.NaN, 1.5f, 0, Float.POSITIVE_INFINITY, 0.75f};
+        assertEquals(1.5, HeatScale.log(2).fitted(d).maxPixels(), 0.0);
+        assertTrue(HeatScale.log(2).fitted(d).logarithmic());
+        assertEquals(1, HeatScale.linear(2).fitted(new float[] {0, Float.NaN}).maxPixels(), 0.0,
+                "nothing off: any top shows it");
+        assertEquals(HeatScale.LEAST_FITTED_TOP, HeatScale.linear(2).fitted(new float[] {1e-9f}).maxPixels(), 0.0);
     }
 
     @Test

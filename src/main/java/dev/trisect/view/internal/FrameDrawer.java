@@ -207,7 +207,9 @@ final class FrameDrawer {
             back.overlayNanos = 0;
         }
         if (settings.view() == ViewKind.DIFFERENCE) {
-            HeatMap.render(displacement, fb.uv(), reference.uv(), fw, fh, settings.heatScale(), fb.colour());
+            // The top the legend shows: this frame's worst pixel, unless the user set one.
+            back.heatScale = settings.heatTopFitted() ? settings.heatScale().fitted(displacement) : settings.heatScale();
+            HeatMap.render(displacement, fb.uv(), reference.uv(), fw, fh, back.heatScale, fb.colour());
         } else if (settings.view() == ViewKind.SPLIT) {
             int divider = (int) Math.round(settings.splitFraction() * fw);
             if (divider < fw) {

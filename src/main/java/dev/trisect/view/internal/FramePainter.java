@@ -103,30 +103,54 @@ public final class FramePainter {
         label(g, labels[1], x + 10, 22);
     }
 
-    private static void paintLegend(Graphics2D g, HeatScale scale) {
+    /** Size of the heat-map legend's text, pixels. */
+    static final float LEGEND_TEXT_PX = 13f;
+
+    /**
+     * The heat map's legend, on a panel of its own in the top-left corner: the ramp with its labels,
+     * the scale named, and what black (nothing drawn) and grey (another triangle) mean.
+     */
+    static void paintLegend(Graphics2D g, HeatScale scale) {
         int x = 14;
         int y = 14;
-        int barW = 260;
+        int barW = 300;
         int barH = 14;
-        g.setColor(new Color(0, 0, 0, 150));
-        g.fillRoundRect(x - 8, y - 8, barW + 16, barH + 44, 10, 10);
+        g.setFont(g.getFont().deriveFont(LEGEND_TEXT_PX));
+        java.awt.FontMetrics fm = g.getFontMetrics();
+        int line = fm.getHeight();
+        String title = (scale.logarithmic() ? "log" : "linear") + " displacement from the per-pixel path";
+        int sw = fm.getAscent() - 2;
+        String[] names = {"not drawn", "not comparable (another triangle)"};
+        int[] colours = {HeatMap.UNCOVERED_ARGB, HeatMap.UNDEFINED_ARGB};
+        int rowW = 2 * (sw + 4) + 14 + fm.stringWidth(names[0]) + fm.stringWidth(names[1]);
+        int boxW = Math.max(barW, Math.max(fm.stringWidth(title), rowW));
+        g.setColor(new Color(HeatMap.LEGEND_BACKGROUND & 0xFFFFFF | 0xE0000000, true));
+        g.fillRoundRect(x - 8, y - 8, boxW + 16, barH + 8 + 3 * line + 12, 10, 10);
         for (int i = 0; i < barW; i++) {
             g.setColor(new Color(HeatMap.colour(scale.pixelsAt((double) i / (barW - 1)), scale)));
             g.fillRect(x + i, y, 1, barH);
         }
         g.setColor(Color.WHITE);
-        g.setFont(g.getFont().deriveFont(11f));
-        java.awt.FontMetrics fm = g.getFontMetrics();
         // A label at every decade (log) or at the ends and middle (linear), with a tick; the top "≥".
         for (HeatScale.Label l : scale.labels()) {
             int tx = x + (int) Math.round((barW - 1) * l.fraction());
             g.drawLine(tx, y + barH, tx, y + barH + 3);
         }
+        int base = y + barH + 4 + fm.getAscent();
         for (HeatScale.Placed p : HeatScale.layout(scale.labels(), barW, fm::stringWidth, 6)) {
-            g.drawString(p.text(), x + p.x(), y + barH + 14);
+            g.drawString(p.text(), x + p.x(), base);
         }
-        g.drawString((scale.logarithmic() ? "log" : "linear") + " displacement vs per-pixel; grey: not comparable",
-                x, y + barH + 29);
+        g.drawString(title, x, base + line);
+        int sx = x;
+        for (int k = 0; k < 2; k++) {
+            // A white frame round each swatch, so that black shows on the dark panel.
+            g.fillRect(sx, base + 2 * line - sw, sw, sw);
+            g.setColor(new Color(colours[k]));
+            g.fillRect(sx + 1, base + 2 * line - sw + 1, sw - 2, sw - 2);
+            g.setColor(Color.WHITE);
+            g.drawString(names[k], sx + sw + 4, base + 2 * line);
+            sx += sw + 4 + fm.stringWidth(names[k]) + 14;
+        }
     }
 
     /** The frame's pieces filled per pixel (outlined in magenta), 0 when unknown. */

@@ -33,26 +33,12 @@ class RenderLoopTest {
     private static ViewState.Measurement measure(ViewState state, ViewSettings settings) throws Exception {
         state.settings(settings);
         state.toolsOpen(true);
-        TripleBuffer buffers = new TripleBuffer();
-        RenderLoop loop = new RenderLoop(state, buffers, () -> { }, 2);
-        Thread t = new Thread(loop, "test-render");
-        t.start();
-        try {
-            // Bounded waiting (up to about 30 s), not timing: 1500 polls 20 ms apart.
-            for (int poll = 0; poll < 1500; poll++) {
-                ViewState.Measurement m = state.measurement();
-                // Frames keep flowing even though nobody paints them (the wait times out); the
-                // progress is published just after the frame that carries the measurement.
-                if (m != null && m.settings().equals(settings) && state.progress().frames() >= 1) {
-                    return m;
-                }
-                Thread.sleep(20);
-            }
-            throw new AssertionError("no measurement within 30 s");
-        } finally {
-            loop.stop();
-            t.join(5000);
-        }
+        // Frames keep flowing even though nobody paints them (the wait times out); the progress is
+        // published just after the frame that carries the measurement.
+        return LoopRun.until(state, new TripleBuffer(), 2, "measurement", () -> {
+            ViewState.Measurement m = state.measurement();
+            return m != null && m.settings().equals(settings) && state.progress().frames() >= 1 ? m : null;
+        });
     }
 
     @Test
