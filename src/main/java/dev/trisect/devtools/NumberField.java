@@ -1,5 +1,6 @@
 package dev.trisect.devtools;
 
+import dev.trisect.base.internal.ErrorLine;
 import java.awt.Font;
 import java.awt.event.FocusAdapter;
 import java.awt.event.FocusEvent;
@@ -124,8 +125,8 @@ final class NumberField extends JTextField {
         }
         Double v = parse(typed, unit);
         if (v == null || !(v >= min && v <= max)) {
-            problem.accept(String.format(Locale.ROOT, "%s: \"%s\" is not a number from %s to %s%s; kept %s", name,
-                    typed, plain(min), plain(max), unit.isEmpty() ? "" : " " + unit, text(shown)));
+            problem.accept(ErrorLine.of(String.format(Locale.ROOT, "%s: \"%s\" is not a number from %s to %s%s; kept %s",
+                    name, typed, plain(min), plain(max), unit.isEmpty() ? "" : " " + unit, text(shown))));
             show(shown);
             refused = true;
             return;

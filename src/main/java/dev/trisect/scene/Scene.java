@@ -1,5 +1,6 @@
 package dev.trisect.scene;
 
+import dev.trisect.base.internal.ChangeSignal;
 import dev.trisect.math.Mat4;
 import dev.trisect.mesh.Lines;
 import dev.trisect.mesh.Mesh;
@@ -77,6 +78,8 @@ public final class Scene extends Group {
     /** One more change; under {@link Node#LOCK}. */
     void bump() {
         version++;
+        // Idle views wake now, rather than at their next look.
+        ChangeSignal.signal();
     }
 
     /**

@@ -48,6 +48,10 @@ final class DemoCommands {
                         w::status)), false),
                 new Entry(Menu.FILE, command("Exit", "Close Trisect", ctrl(KeyEvent.VK_Q),
                         () -> w.frame().dispatchEvent(new WindowEvent(w.frame(), WindowEvent.WINDOW_CLOSING))), false),
+                new Entry(Menu.VIEW, toggle("Uncapped frame rate", "Draw frames continuously, as fast as the view "
+                        + "can, with no cap: the status bar's rate is then the uncapped one (a still scene otherwise "
+                        + "draws no frames, an animated one at most the screen's rate)", KeyStroke.getKeyStroke(
+                        KeyEvent.VK_M, 0), w::measureUncapped), true),
                 new Entry(Menu.HELP, command("Keys and mouse", "Show every key and mouse gesture of the demo in a "
                         + "panel", KeyStroke.getKeyStroke(KeyEvent.VK_F1, 0), w::toggleHelp), false));
     }

@@ -26,6 +26,8 @@ final class DemoHelp {
         {"B", "polygon borders on/off"},
         {"U", "statistics overlay on/off: frames per second, the frame's milliseconds by stage (geometry, "
             + "tessellation, fill, overlay), pieces and fallback pieces, path, policy, threshold and filter"},
+        {"M", "uncapped frame rate on/off: frames drawn continuously with no cap, so the status bar's fps is the "
+            + "rate the view can reach (otherwise a still scene draws no frames and the bar says \"idle\")"},
         {"C", "next border colouring: yellow, by split depth, by error bound (turns the borders on)"},
         {"I", "pixel inspector on/off: it follows the mouse; a click (without dragging) pins it to a pixel, another "
             + "click frees it"},

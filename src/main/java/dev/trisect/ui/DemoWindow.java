@@ -1,6 +1,6 @@
 package dev.trisect.ui;
 
-import dev.trisect.base.InputException;
+import dev.trisect.base.internal.ErrorLine;
 import dev.trisect.content.AssetScenes;
 import dev.trisect.content.SceneAsset;
 import dev.trisect.render.RenderSettings;
@@ -42,6 +42,12 @@ final class DemoWindow {
     private final Timer refresh;
     /** The newest frame the view drew (written on its render thread). */
     private volatile FrameInfo latest;
+    /** {@link System#nanoTime} when {@link #latest} came. */
+    private volatile long latestAt;
+    /** The cap before the uncapped rate was asked for, or NaN while it is not. Event thread. */
+    private double cappedAt = Double.NaN;
+    /** Keeps frames coming while the uncapped rate is measured. */
+    private final dev.trisect.view.UpdateListener flatOut = (step, frame) -> true;
 
     /** The demo's own commands (menu items and keys); see {@link DemoCommands#table}. */
     final List<DemoCommands.Entry> commands;
@@ -60,7 +66,10 @@ final class DemoWindow {
         view = new TrisectView(AssetScenes.scene(scene), threads);
         view.setCamera(scene.camera());
         view.setPreferredSize(new Dimension(1280, 720));
-        view.addFrameListener(f -> latest = f);
+        view.addFrameListener(f -> {
+            latestAt = System.nanoTime();
+            latest = f;
+        });
         view.addMessageListener(this::status);
 
         fileMenu = new FileMenu(this, recent);
@@ -181,10 +190,30 @@ final class DemoWindow {
         statusLine.tick(System.nanoTime());
         FrameInfo f = latest;
         boolean frozen = Boolean.TRUE.equals(view.action(ViewAction.FREEZE).getValue(Action.SELECTED_KEY));
-        pace.setText(PaceText.pace(view.getRenderSettings(), f, view.getFrameTimeTarget(), frozen));
+        pace.setText(PaceText.pace(view.getRenderSettings(), f, System.nanoTime() - latestAt,
+                view.getFrameTimeTarget(), frozen));
         // A warning lasts while its frames do (none stays after the frame on screen stopped earning
         // it), and never covers a passing message: StatusLine keeps the two apart.
         statusLine.warn(f == null ? null : f.warning());
+    }
+
+    /**
+     * Draws frames flat out, with no cap, so that the status bar's rate is the uncapped one (a still
+     * scene draws no frames at all, an animated one at most the cap); off, the cap comes back.
+     */
+    void measureUncapped(boolean on) {
+        if (on && Double.isNaN(cappedAt)) {
+            cappedAt = view.getMaxFrameRate();
+            view.setMaxFrameRate(0);
+            view.addUpdateListener(flatOut);
+            status("Uncapped: frames drawn continuously as fast as they can be, no cap (M again to stop)");
+        } else if (!on && !Double.isNaN(cappedAt)) {
+            view.removeUpdateListener(flatOut);
+            view.setMaxFrameRate(cappedAt);
+            cappedAt = Double.NaN;
+            status("Capped again: frames only when something changes, animated ones at most "
+                    + Math.round(view.getMaxFrameRate()) + " a second");
+        }
     }
 
     /** Loads an OBJ in the background (see {@link FileMenu#load}). */
@@ -220,15 +249,12 @@ final class DemoWindow {
         sceneNote(null);
     }
 
-    /** The one-line message the command line would print for this failure. */
+    /** What to do when the demo runs out of memory. */
+    static final String MEMORY_HINT = "give Java more with -Xmx";
+
+    /** Why {@code t} happened, in the words the command line would print after "trisect: ". */
     static String message(Throwable t) {
-        if (t instanceof InputException ie) {
-            return ie.getMessage();
-        }
-        if (t instanceof OutOfMemoryError) {
-            return "out of memory (give Java more with -Xmx)";
-        }
-        return "internal error: " + t;
+        return ErrorLine.reason(t, MEMORY_HINT);
     }
 
     private void shutdown() {

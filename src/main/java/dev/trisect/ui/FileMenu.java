@@ -1,5 +1,6 @@
 package dev.trisect.ui;
 
+import dev.trisect.base.internal.ErrorLine;
 import dev.trisect.base.internal.Counts;
 import dev.trisect.content.DemoScenes;
 import dev.trisect.content.SceneAsset;
@@ -179,7 +180,7 @@ final class FileMenu {
                     shown.accept(get());
                 } catch (ExecutionException e) {
                     window.restoreScene(previous.get());
-                    String line = "trisect: " + DemoWindow.message(e.getCause());
+                    String line = ErrorLine.of(DemoWindow.message(e.getCause()));
                     window.status(line);
                     failed.accept(line);
                 } catch (InterruptedException e) {

@@ -15,19 +15,36 @@ final class PaceText {
     private PaceText() {
     }
 
+    /** How long without a new frame before the status bar says the view idles, nanoseconds. */
+    static final long IDLE_NANOS = 700_000_000L;
+
     /**
-     * The right side of the status bar: how frames are drawn, then "FROZEN at frame n" or the frame
-     * rate, then the frame's size.
+     * The right side of the status bar: how frames are drawn, then "FROZEN at frame n", the frame rate,
+     * or — where there is no rate to show — the last frame's time, then the frame's size. A view that
+     * draws only when something changes has no rate while it idles: it said "0 fps" there.
      *
      * @param latest   the newest frame drawn, or null before the first
+     * @param sinceNanos nanoseconds since {@code latest} came
      * @param targetMs the frame-time target, 0 when off
      */
-    static String pace(RenderSettings user, FrameInfo latest, double targetMs, boolean frozen) {
+    static String pace(RenderSettings user, FrameInfo latest, long sinceNanos, double targetMs, boolean frozen) {
         String path = howDrawn(user, latest == null ? null : latest.settings(), targetMs);
-        String size = latest == null ? "" : latest.width() + "x" + latest.height();
-        return frozen
-                ? String.format(Locale.ROOT, "%s  FROZEN at frame %d  %s", path, latest == null ? 0 : latest.number(), size)
-                : String.format(Locale.ROOT, "%s  %.0f fps  %s", path, latest == null ? 0 : latest.framesPerSecond(), size);
+        if (latest == null) {
+            return path;
+        }
+        String size = latest.width() + "x" + latest.height();
+        String rate;
+        if (frozen) {
+            rate = "FROZEN at frame " + latest.number();
+        } else if (sinceNanos >= IDLE_NANOS) {
+            rate = String.format(Locale.ROOT, "idle, last frame %.1f ms", latest.frameMillis());
+        } else if (latest.framesPerSecond() <= 0) {
+            // Frames are coming, but not yet for a whole second: their time, not a rate of 0.
+            rate = String.format(Locale.ROOT, "%.1f ms a frame", latest.frameMillis());
+        } else {
+            rate = String.format(Locale.ROOT, "%.0f fps", latest.framesPerSecond());
+        }
+        return path + "  " + rate + "  " + size;
     }
 
     /**

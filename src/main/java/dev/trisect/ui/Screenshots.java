@@ -1,5 +1,6 @@
 package dev.trisect.ui;
 
+import dev.trisect.base.internal.ErrorLine;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -47,13 +48,18 @@ final class Screenshots {
      * all or nothing, saying what happens through {@code status} on the event thread.
      */
     static void save(BufferedImage image, Consumer<String> status) {
+        save(image, folder(), status);
+    }
+
+    /** As {@link #save(BufferedImage, Consumer)}, into {@code dir}. */
+    static SwingWorker<Path, Void> save(BufferedImage image, Path dir, Consumer<String> status) {
         if (image == null) {
             status.accept("No frame to save yet.");
-            return;
+            return null;
         }
-        Path target = newFile(folder(), LocalDateTime.now());
+        Path target = newFile(dir, LocalDateTime.now());
         status.accept("Saving " + target + " \u2026");
-        new SwingWorker<Path, Void>() {
+        SwingWorker<Path, Void> worker = new SwingWorker<>() {
             @Override
             protected Path doInBackground() throws IOException {
                 // All or nothing: a partial file never takes the final name.
@@ -74,11 +80,13 @@ final class Screenshots {
                 try {
                     status.accept("Saved screenshot to " + get());
                 } catch (ExecutionException e) {
-                    status.accept("Could not save the screenshot: " + e.getCause().getMessage());
+                    status.accept(ErrorLine.of("cannot save the screenshot: " + e.getCause().getMessage()));
                 } catch (InterruptedException e) {
                     Thread.currentThread().interrupt();
                 }
             }
-        }.execute();
+        };
+        worker.execute();
+        return worker;
     }
 }

@@ -277,8 +277,9 @@ final class SoakRun {
             w.view().setRenderScale(1);
             w.render(r -> standard);
         });
-        // Settled means: frames of the standard size are on screen, and well over the renderer's trim
-        // window of ordinary frames (60) has passed since (so no buffer of an earlier state is still held).
+        // Settled means: frames of the standard size are on screen, and far more than the renderer's trim
+        // window (FrameRenderer.TRIM_FRAMES, 5 frames) have passed since, so no buffer of an earlier state
+        // is still held.
         long deadline = System.currentTimeMillis() + 20_000;
         long settledFrom = -1;
         while (System.currentTimeMillis() < deadline) {
@@ -301,7 +302,10 @@ final class SoakRun {
         return heapAfterGc();
     }
 
-    /** Frames a checkpoint waits: three times the renderer's trim window of 60 frames. */
+    /**
+     * Frames a checkpoint waits: 36 times the renderer's trim window (FrameRenderer.TRIM_FRAMES, 5 frames),
+     * 3 s at 60 fps, so that the collector too has had time to give back what the earlier state held.
+     */
     private static final int SETTLE_FRAMES = 180;
 
     /** Least-squares slope per sample interval (one minute between checkpoints). */

@@ -1,5 +1,6 @@
 package dev.trisect.view;
 
+import dev.trisect.base.internal.ErrorLine;
 import dev.trisect.scene.Pick;
 import dev.trisect.view.internal.FrameReport;
 import java.awt.event.MouseEvent;
@@ -62,7 +63,7 @@ final class ViewListeners {
             try {
                 animates |= u.update(seconds, frame);
             } catch (RuntimeException e) {
-                problems.accept("an update hook failed: " + e);
+                problems.accept(ErrorLine.of("an update hook failed: " + e));
             }
         }
         return animates;

@@ -159,7 +159,7 @@ class DevToolsGuiTest {
         // Still in the field, its text selected after Enter: the next typing replaces it.
         type(KeyEvent.VK_X, KeyEvent.VK_ENTER);
         waitFor("a message about the typing", () -> !messages.isEmpty());
-        assertTrue(messages.get(0).startsWith("Max edge: \"x\" is not a number from 2 to 128 px"), messages.get(0));
+        assertTrue(messages.get(0).startsWith("trisect: Max edge: \"x\" is not a number from 2 to 128 px"), messages.get(0));
         assertEquals(12, state().settings().render().tessellation().maxEdge(), "bad text changes nothing");
         assertEquals("12 px", onEdt(maxEdge::getText), "and the field shows the value in force again");
 

@@ -41,7 +41,7 @@ public final class DemoHeapProbe {
         w.view().addUpdateListener((seconds, frame) -> true);
         AtomicReference<String> failed = new AtomicReference<>();
         w.view().addMessageListener(m -> {
-            if (m.startsWith("rendering failed")) {
+            if (m.startsWith("trisect: cannot draw the frame")) {
                 failed.compareAndSet(null, m);
             }
         });

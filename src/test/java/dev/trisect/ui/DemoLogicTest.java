@@ -92,6 +92,39 @@ class DemoLogicTest {
     }
 
     @Test
+    void aScreenshotThatCannotBeSavedSaysSoAsEveryProblemDoes(@TempDir Path dir)
+            throws Exception {
+        Path notAFolder = Files.writeString(dir.resolve("file"), "");
+        java.util.List<String> said = new java.util.concurrent.CopyOnWriteArrayList<>();
+        var worker = Screenshots.save(new java.awt.image.BufferedImage(4, 4, java.awt.image.BufferedImage.TYPE_INT_RGB),
+                notAFolder, said::add);
+        // Bounded: the save fails at once; its message comes on the event thread after.
+        for (int i = 0; i < 200 && said.size() < 2; i++) {
+            Thread.sleep(10);
+        }
+        assertEquals(2, said.size(), said.toString());
+        // It said "Could not save the screenshot: ..." where everything else says "trisect: ...".
+        assertTrue(said.get(1).startsWith("trisect: cannot save the screenshot: "), said.get(1));
+        assertTrue(worker.isDone());
+    }
+
+    @Test
+    void aStillViewsStatusBarSaysIdleWithTheLastFramesTimeNotZeroFps() {
+        dev.trisect.render.RenderSettings r = dev.trisect.render.RenderSettings.defaults();
+        dev.trisect.view.FrameInfo one = new dev.trisect.view.FrameInfo(1, 640, 360, null, r, null, 23.45, 0, null);
+        // One frame, then none: the rate was never worked out, and "0 fps" said the view was stuck.
+        assertEquals("tessellated, edge 32 px, nearest  idle, last frame 23.5 ms  640x360",
+                PaceText.pace(r, one, 2_000_000_000L, 0, false));
+        assertEquals("tessellated, edge 32 px, nearest  23.5 ms a frame  640x360",
+                PaceText.pace(r, one, 10_000_000L, 0, false), "frames coming, but not for a second yet");
+        dev.trisect.view.FrameInfo flowing = new dev.trisect.view.FrameInfo(90, 640, 360, null, r, null, 10, 59.6, null);
+        assertEquals("tessellated, edge 32 px, nearest  60 fps  640x360", PaceText.pace(r, flowing, 10_000_000L, 0,
+                false));
+        assertEquals("tessellated, edge 32 px, nearest  FROZEN at frame 90  640x360", PaceText.pace(r, flowing,
+                5_000_000_000L, 0, true));
+    }
+
+    @Test
     void theStatusBarNamesTheSplitPolicyBesidePathAndFilter() {
         dev.trisect.render.RenderSettings r = dev.trisect.render.RenderSettings.defaults();
         assertEquals("tessellated, edge 32 px, nearest", PaceText.howDrawn(r, null, 0));

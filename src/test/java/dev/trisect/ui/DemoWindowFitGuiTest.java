@@ -60,4 +60,24 @@ class DemoWindowFitGuiTest {
             return f != null && f.height() < 600 && f.width() <= 1024;
         });
     }
+
+    /** A still scene draws once and idles: the status bar says so; M draws flat out and shows the rate. */
+    @Test
+    void aStillViewSaysIdleAndMMeasuresTheUncappedRate() throws Exception {
+        GuiTests.requireDisplay();
+        window = DemoApp.openForTest(DemoScenes.demo(), 1);
+        waitFor("idle in the status bar", () -> onEdt(() -> window.paceText()).contains("idle, last frame "));
+        javax.swing.Action uncapped = onEdt(() -> window.commands.stream().map(DemoCommands.Entry::action)
+                .filter(a -> "Uncapped frame rate".equals(a.getValue(javax.swing.Action.NAME))).findFirst()
+                .orElseThrow());
+        double cap = onEdt(() -> window.view().getMaxFrameRate());
+        long before = onEdt(() -> window.latest().number());
+        edt(() -> uncapped.actionPerformed(null));
+        assertEquals(0, onEdt(() -> window.view().getMaxFrameRate()), 0.0, "no cap");
+        waitFor("frames flat out, and their rate", () -> onEdt(() -> window.latest().number() > before + 5
+                && window.paceText().matches(".* [0-9]+ fps .*")));
+        edt(() -> uncapped.actionPerformed(null));
+        assertEquals(cap, onEdt(() -> window.view().getMaxFrameRate()), 0.0, "the cap back");
+        waitFor("idle again", () -> onEdt(() -> window.paceText()).contains("idle, last frame "));
+    }
 }

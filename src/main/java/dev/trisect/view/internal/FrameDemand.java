@@ -1,5 +1,6 @@
 package dev.trisect.view.internal;
 
+import dev.trisect.base.internal.ChangeSignal;
 import dev.trisect.scene.Scene;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
@@ -12,15 +13,20 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * the node under the pointer whose hover highlight shows —
  * or when something animates: an update hook that said so, the camera moving under the user's input
  * (or the auto-orbit), the developer tools showing (their live graph), the budget controller, or a
- * reason registered with {@link #keepDrawing}. Otherwise the loop idles, looking again every
- * {@link #POLL_NANOS} (a change is drawn within that, plus a frame). Animated frames are paced to at
- * most the view's maximum frame rate.
+ * reason registered with {@link #keepDrawing}. Otherwise the loop idles until a change wakes it: each
+ * setter of {@link ViewState}, the input, the freeze gate, {@link #request}, {@link #keepDrawing} and
+ * every change to a scene signal it ({@link dev.trisect.base.internal.ChangeSignal}), so a change is
+ * drawn at once, not at the next look; the loop also looks every {@link #IDLE_LOOK_NANOS} in case a
+ * change came without a signal. Animated frames are paced to at most the view's maximum frame rate.
  *
  * <p>{@link #keepDrawing} and {@link #request} from any thread; the rest on the render thread.
  */
 public final class FrameDemand {
-    /** How often an idle loop looks for a change, nanoseconds: within one frame at 60 Hz. */
-    static final long POLL_NANOS = 10_000_000L;
+    /** How often an idle loop looks for a change that came without a signal, nanoseconds. */
+    static final long IDLE_LOOK_NANOS = 1_000_000_000L;
+
+    /** How long an idle loop waits between looks; a test lengthens it to show that signals alone wake it. */
+    volatile long idleLook = IDLE_LOOK_NANOS;
 
     /** Everything the last frame was drawn from that a host or user may change. */
     private record Seen(Scene scene, long version, ViewSettings settings, long size, long home,
@@ -45,6 +51,7 @@ public final class FrameDemand {
     public void keepDrawing(Object reason, boolean on) {
         if (on) {
             reasons.add(reason);
+            ChangeSignal.signal();
         } else {
             reasons.remove(reason);
         }
@@ -53,6 +60,7 @@ public final class FrameDemand {
     /** Asks for one more frame even though nothing the view can see changed. Any thread. */
     public void request() {
         requested.set(true);
+        ChangeSignal.signal();
     }
 
     /** Whether a frame is due now: something changed since the last one, or something animates. */

@@ -1,5 +1,6 @@
 package dev.trisect.view.internal;
 
+import dev.trisect.base.internal.ChangeSignal;
 import java.util.concurrent.atomic.AtomicInteger;
 
 /**
@@ -57,12 +58,14 @@ public final class FreezeGate {
         if (!on) {
             steps.set(0);
         }
+        ChangeSignal.signal();
     }
 
     /** Event thread: asks for one step; freezes first if running. */
     public void step() {
         frozen = true;
         steps.incrementAndGet();
+        ChangeSignal.signal();
     }
 
     /**

@@ -1,5 +1,6 @@
 package dev.trisect.view.internal;
 
+import dev.trisect.base.internal.ChangeSignal;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
@@ -33,6 +34,7 @@ public final class InputState {
     public void press(int key) {
         held.getAndUpdate(v -> v | key);
         pressed.getAndUpdate(v -> v | key);
+        ChangeSignal.signal();
     }
 
     public void release(int key) {
@@ -62,6 +64,7 @@ public final class InputState {
 
     public void drag(int dx, int dy) {
         drag.getAndUpdate(v -> pack(unpackX(v) + dx, unpackY(v) + dy));
+        ChangeSignal.signal();
     }
 
     /** The drag since the last call, {dx, dy} in logical pixels. */
@@ -72,6 +75,7 @@ public final class InputState {
 
     public void wheel(int notches) {
         wheel.addAndGet(notches);
+        ChangeSignal.signal();
     }
 
     /** Whether a drag waits to be taken. */
@@ -90,6 +94,7 @@ public final class InputState {
 
     public void requestReset() {
         reset.set(true);
+        ChangeSignal.signal();
     }
 
     /** Whether a reset waits to be taken. */
@@ -107,6 +112,7 @@ public final class InputState {
 
     public void orbit(boolean on) {
         orbit = on;
+        ChangeSignal.signal();
     }
 
     private static long pack(int x, int y) {

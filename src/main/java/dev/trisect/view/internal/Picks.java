@@ -1,5 +1,6 @@
 package dev.trisect.view.internal;
 
+import dev.trisect.base.internal.ChangeSignal;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.render.Framebuffer;
 import dev.trisect.scene.Pick;
@@ -38,6 +39,8 @@ public final class Picks {
             answer.accept(at(slot, slot.frame.uv(), x, y));
         } else {
             pending.set(new Request(slot, x, y, answer));
+            // An idle loop serves it now.
+            ChangeSignal.signal();
         }
     }
 

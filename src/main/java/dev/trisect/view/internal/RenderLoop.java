@@ -1,6 +1,7 @@
 package dev.trisect.view.internal;
 
-import dev.trisect.base.InputException;
+import dev.trisect.base.internal.ErrorLine;
+import dev.trisect.base.internal.ChangeSignal;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.render.FrameStats;
 
@@ -85,6 +86,8 @@ public final class RenderLoop implements Runnable {
     public void stop() {
         running = false;
         framePainted(Long.MAX_VALUE);
+        // An idle loop stops now, not at its next look.
+        ChangeSignal.signal();
     }
 
     /** Whether {@link #stop} has been called. */
@@ -92,15 +95,12 @@ public final class RenderLoop implements Runnable {
         return !running;
     }
 
-    /** The one-line message for a failure: an input error's own, or what went wrong inside. */
-    public static String message(Throwable t) {
-        if (t instanceof InputException ie) {
-            return ie.getMessage();
-        }
-        if (t instanceof OutOfMemoryError) {
-            return "out of memory (lower the render scale, or give Java more with -Xmx)";
-        }
-        return "internal error: " + t;
+    /** What to do when a frame runs out of memory. */
+    static final String MEMORY_HINT = "lower the render scale, or give Java more with -Xmx";
+
+    /** The one-line message for a failure to do {@code doing}: "trisect: cannot draw the frame: reason". */
+    public static String failure(String doing, Throwable t) {
+        return ErrorLine.cannot(doing, t, MEMORY_HINT);
     }
 
     /** Event thread: the frame with this serial number is now on screen. */
@@ -120,20 +120,22 @@ public final class RenderLoop implements Runnable {
         FrameDemand demand = state.demand;
         try {
             while (running) {
+                // Read before looking for work: a change made while looking still wakes the wait below.
+                long seen = ChangeSignal.epoch();
                 servePicks();
                 int w = state.viewWidth();
                 int h = state.viewHeight();
                 if (w <= 0 || h <= 0) {
-                    // Minimized or not shown yet: nothing to draw.
+                    // Minimized or not shown yet: nothing to draw until the size changes.
                     rate.pause();
-                    sleep(50);
+                    ChangeSignal.await(seen, demand.idleLook);
                     continue;
                 }
                 long size = ((long) w << 32) | h;
                 if (!state.freeze.frozen() && !demand.due(state, size)) {
-                    // Nothing changed and nothing animates: idle, and look again shortly.
+                    // Nothing changed and nothing animates: idle until something does.
                     rate.pause();
-                    java.util.concurrent.locks.LockSupport.parkNanos(FrameDemand.POLL_NANOS);
+                    ChangeSignal.await(seen, demand.idleLook);
                     continue;
                 }
                 demand.pace(state, this);
@@ -171,7 +173,7 @@ public final class RenderLoop implements Runnable {
                     // Keep the view alive and say what happened; the next frame starts afresh.
                     LoopListener l = listener;
                     if (l != null) {
-                        l.problem("rendering failed: " + message(e));
+                        l.problem(failure("draw the frame", e));
                     }
                     back = null;
                     drawer.failed();
@@ -240,7 +242,7 @@ public final class RenderLoop implements Runnable {
         } catch (RuntimeException | OutOfMemoryError e) {
             LoopListener l = listener;
             if (l != null) {
-                l.problem("picking failed: " + message(e));
+                l.problem(failure("pick", e));
             }
         }
     }

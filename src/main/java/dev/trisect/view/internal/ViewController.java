@@ -1,5 +1,6 @@
 package dev.trisect.view.internal;
 
+import dev.trisect.base.internal.ErrorLine;
 import dev.trisect.render.BorderStyle;
 import dev.trisect.render.RenderMode;
 import dev.trisect.texture.TextureFilter;
@@ -95,7 +96,7 @@ public final class ViewController {
                         l.accept(report);
                     } catch (RuntimeException e) {
                         // A listener's failure must not end the render thread; say so once per frame.
-                        problem("a frame listener failed: " + e);
+                        problem(ErrorLine.of("a frame listener failed: " + e));
                     }
                 }
             }

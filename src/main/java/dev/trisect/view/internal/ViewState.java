@@ -1,5 +1,6 @@
 package dev.trisect.view.internal;
 
+import dev.trisect.base.internal.ChangeSignal;
 import dev.trisect.perf.BudgetController;
 import java.util.Locale;
 import dev.trisect.metrics.Comparison;
@@ -10,7 +11,8 @@ import dev.trisect.scene.Scene;
 
 /**
  * What the event thread and the render thread of one view share. Each field is an immutable value
- * behind a volatile reference: one side replaces it, the other reads the latest.
+ * behind a volatile reference: one side replaces it, the other reads the latest. Each change that a
+ * frame shows wakes an idle render loop ({@link ChangeSignal}).
  */
 public final class ViewState {
     /** Largest frame the view renders, in pixels, so a huge window cannot exhaust memory. */
@@ -166,11 +168,13 @@ public final class ViewState {
 
     public synchronized void settings(ViewSettings s) {
         settings = s;
+        ChangeSignal.signal();
     }
 
     /** Replaces the settings by {@code change} of them, atomically against other changes (any thread). */
     public synchronized ViewSettings updateSettings(java.util.function.UnaryOperator<ViewSettings> change) {
         settings = change.apply(settings);
+        ChangeSignal.signal();
         return settings;
     }
 
@@ -188,6 +192,7 @@ public final class ViewState {
         scene = s;
         measurement = null;
         pathMs = null;
+        ChangeSignal.signal();
     }
 
     /** Puts the camera here from the next frame on, and makes it the one R returns to. */
@@ -195,6 +200,7 @@ public final class ViewState {
         long serial = home == null ? 0 : home.serial() + 1;
         home = new CameraRequest(c, serial);
         current = c;
+        ChangeSignal.signal();
     }
 
     public CameraRequest home() {
@@ -220,10 +226,12 @@ public final class ViewState {
 
     public void controls(Controls c) {
         controls = c;
+        ChangeSignal.signal();
     }
 
     public void viewSize(int width, int height) {
         viewSize = ((long) Math.max(0, width) << 32) | Math.max(0, height);
+        ChangeSignal.signal();
     }
 
     public int viewWidth() {
@@ -248,6 +256,7 @@ public final class ViewState {
     /** Points the inspector at frame pixel (x, y), or turns it off with a negative x. */
     public void inspect(int x, int y) {
         inspected = x < 0 ? -1 : ((long) x << 32) | (y & 0xFFFFFFFFL);
+        ChangeSignal.signal();
     }
 
     /** The inspected pixel packed as in {@link #inspect}, -1 when off. */
@@ -282,6 +291,7 @@ public final class ViewState {
 
     public void toolsOpen(boolean open) {
         toolsOpen = open;
+        ChangeSignal.signal();
     }
 
     public Budget budget() {
@@ -290,6 +300,7 @@ public final class ViewState {
 
     public void budget(Budget b) {
         budget = b;
+        ChangeSignal.signal();
     }
 
     /** What the budget controller chose for the last frame, or null when it is off. */
@@ -309,6 +320,7 @@ public final class ViewState {
     /** Makes every frame from the next on record its triangle ids (or stops asking for them). */
     public void idsWanted(boolean on) {
         idsWanted = on;
+        ChangeSignal.signal();
     }
 
     /** The node whose hover highlight the frames draw, or null. */
@@ -319,11 +331,13 @@ public final class ViewState {
     /** Event thread: the pointer is over this node's objects, and it holds a hover highlight (or null). */
     public void hovered(dev.trisect.scene.Node owner) {
         hovered = owner;
+        ChangeSignal.signal();
     }
 
     /** Sets the cap: frames per second at most, 0 for none, NaN to follow the screen's refresh rate. */
     public void maxFrameRate(double fps) {
         maxFrameRate = fps;
+        ChangeSignal.signal();
     }
 
     /** The cap in force: frames per second at most, 0 for none. */

@@ -40,6 +40,9 @@ class FrameDemandTest {
         ViewState state = new ViewState(scene, Camera.looking(new dev.trisect.math.Vec3(0, 2, 4),
                 dev.trisect.math.Vec3.ZERO));
         state.viewSize(64, 48);
+        // No looking for changes while idle (it looked every 10 ms): each change below must wake the loop
+        // itself, or its frame never comes and the wait times out. Stopping must wake it too.
+        state.demand.idleLook = Long.MAX_VALUE / 4;
         AtomicBoolean animate = new AtomicBoolean();
         AtomicInteger hooks = new AtomicInteger();
         RenderLoop loop = new RenderLoop(state, new TripleBuffer(), () -> { }, 1);
@@ -97,10 +100,16 @@ class FrameDemandTest {
             state.demand.keepDrawing("graph", true);
             waitFor("frames while a reason is registered", () -> frames(state) >= settled + 5);
             state.demand.keepDrawing("graph", false);
+            long last = frames(state);
+            idlesAt(state, last, "once the reason is gone");
+            state.input.press(InputState.FORWARD);
+            waitFor("a frame for a key", () -> frames(state) > last);
+            state.input.release(InputState.FORWARD);
         } finally {
             loop.stop();
             t.join(5000);
         }
+        assertTrue(!t.isAlive(), "an idle loop stops when asked, without a look to wait for");
     }
 
     @Test
