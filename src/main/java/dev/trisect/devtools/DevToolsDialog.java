@@ -1,10 +1,12 @@
 package dev.trisect.devtools;
 
 import dev.trisect.view.internal.ViewController;
+import java.awt.Component;
 import java.awt.Dialog;
 import java.awt.Dimension;
 import java.awt.GraphicsEnvironment;
 import java.awt.Insets;
+import java.awt.Point;
 import java.awt.Rectangle;
 import java.awt.Window;
 import java.awt.event.WindowAdapter;
@@ -24,6 +26,9 @@ public final class DevToolsDialog extends JDialog {
 
     private final DevToolsPanel panel;
     private boolean folded;
+    /** The view's window and the view, which the tools window docks to; null before it is first shown. */
+    private Window main;
+    private Component view;
 
     /** A tools window owned by {@code owner} (the view's window; may be null). */
     public DevToolsDialog(Window owner, ViewController controller) {
@@ -46,54 +51,53 @@ public final class DevToolsDialog extends JDialog {
     }
 
     /**
-     * The window's size: tall enough for every section where the screen allows, else the screen's
-     * usable height below {@code top} (and then a scroll bar, for which the width makes room).
-     */
-    static Dimension fit(Dimension content, int scrollBarWidth, Rectangle usable, int top) {
-        int room = Math.max(200, usable.y + usable.height - Math.max(usable.y, top));
-        int height = Math.min(content.height, room);
-        int width = Math.max(DevToolsPanel.MIN_WIDTH, content.width) + (height < content.height ? scrollBarWidth : 0);
-        return new Dimension(width, height);
-    }
-
-    /** The window's size for its content now, its top at {@code top}. */
-    private Dimension size(Rectangle usable, int top) {
-        Dimension content = panel.scrollPane().getViewport().getView().getPreferredSize();
-        Insets frame = getInsets();
-        return fit(new Dimension(content.width + frame.left + frame.right,
-                content.height + frame.top + frame.bottom), panel.scrollPane().getVerticalScrollBar()
-                .getPreferredSize().width, usable, top);
-    }
-
-    /**
-     * Places the window to the right of {@code main} (or inside the screen), sized to fit, and shows
+     * Docks the window to {@code main}, the window of {@code view} ({@link DevToolsDock}), and shows
      * it; without {@code main}, at the screen's top right. The first time, sections are folded (the
-     * least used first) until the rest fit the screen's height, so that none is cut off.
+     * least used first) until the rest fit the height it gets, so that none is cut off.
      */
-    public void showBeside(Window main) {
-        Rectangle usable = GraphicsEnvironment.getLocalGraphicsEnvironment().getMaximumWindowBounds();
-        int top = main == null ? usable.y : main.getY();
+    public void showBeside(Window main, Component view) {
+        this.main = main;
+        this.view = view;
         if (!folded) {
             folded = true;
             Insets frame = getInsets();
-            panel.foldToFit(usable.y + usable.height - Math.max(usable.y, top) - frame.top - frame.bottom);
+            panel.foldToFit(bounds(Integer.MAX_VALUE / 2, 0).height - frame.top - frame.bottom);
         }
-        setSize(size(usable, top));
-        int x = main == null ? usable.x + usable.width : main.getX() + main.getWidth();
-        if (x + getWidth() > usable.x + usable.width) {
-            x = Math.max(usable.x, usable.x + usable.width - getWidth());
-        }
-        setLocation(x, Math.max(usable.y, Math.min(top, usable.y + usable.height - getHeight())));
+        dock();
         setVisible(true);
     }
 
-    /** Resizes the window to its content (after a section was folded or opened), where it stands. */
-    void refit() {
-        if (!isShowing()) {
-            return;
+    /** Puts the window where {@link DevToolsDock} says for the view's window where it is now. */
+    void dock() {
+        Dimension content = panel.scrollPane().getViewport().getView().getPreferredSize();
+        Insets frame = getInsets();
+        int w = Math.max(DevToolsPanel.MIN_WIDTH, content.width + frame.left + frame.right);
+        int h = content.height + frame.top + frame.bottom;
+        Rectangle b = bounds(h, w);
+        if (b.height < h) {
+            // Cut short: a scroll bar shows the rest, and the width makes room for it.
+            b = bounds(h, w + panel.scrollPane().getVerticalScrollBar().getPreferredSize().width);
         }
-        Rectangle usable = GraphicsEnvironment.getLocalGraphicsEnvironment().getMaximumWindowBounds();
-        setSize(size(usable, getY()));
+        setBounds(b);
         validate();
+    }
+
+    private Rectangle bounds(int height, int width) {
+        Rectangle usable = GraphicsEnvironment.getLocalGraphicsEnvironment().getMaximumWindowBounds();
+        Dimension wanted = new Dimension(Math.max(width, DevToolsPanel.MIN_WIDTH), height);
+        if (main == null || !main.isShowing() || view == null || !view.isShowing()) {
+            int h = Math.min(height, usable.height);
+            return new Rectangle(usable.x + usable.width - wanted.width, usable.y, wanted.width, h);
+        }
+        Point at = view.getLocationOnScreen();
+        return DevToolsDock.place(main.getBounds(), new Rectangle(at.x, at.y, view.getWidth(), view.getHeight()),
+                wanted, usable);
+    }
+
+    /** Resizes the window to its content (after a section was folded or opened), docked as before. */
+    void refit() {
+        if (isShowing()) {
+            dock();
+        }
     }
 }

@@ -31,6 +31,8 @@ final class DemoHelp {
         {"C", "next border colouring: yellow, by split depth, by error bound (turns the borders on)"},
         {"I", "pixel inspector on/off: it follows the mouse; a click (without dragging) pins it to a pixel, another "
             + "click frees it"},
+        {"Shift+click (inspector on)", "pin that pixel to a list of up to four whose readouts update every frame; "
+            + "Shift+click it again to unpin it"},
         {"Ctrl+C", "copy the pixel inspector's readout as text"},
         {"Space", "freeze: stop on this frame (camera and comparison); settings still apply to the frozen frame"},
         {". (period)", "step: draw the next frame, 1/60 s on, and stay frozen"},

@@ -225,13 +225,25 @@ class DevToolsLogicTest {
     }
 
     @Test
-    void theToolsWindowIsAsTallAsItsContentWhereTheScreenAllows() {
+    void theToolsWindowDocksBesideTheViewsWindowOrOverTheViewAboveItsStatusBar() {
         Rectangle screen = new Rectangle(0, 0, 1920, 1080);
-        assertEquals(new Dimension(420, 1000), DevToolsDialog.fit(new Dimension(420, 1000), 15, screen, 0));
-        Dimension tall = DevToolsDialog.fit(new Dimension(420, 1400), 15, screen, 40);
-        assertEquals(1040, tall.height, "down to the screen's bottom edge");
-        assertEquals(435, tall.width, "room for the scroll bar");
-        assertEquals(DevToolsPanel.MIN_WIDTH, DevToolsDialog.fit(new Dimension(100, 100), 15, screen, 0).width);
+        Dimension wanted = new Dimension(420, 1000);
+        // Room on the right: docked there, level with the window's top.
+        Rectangle main = new Rectangle(100, 40, 1280, 767);
+        Rectangle view = new Rectangle(100, 90, 1280, 690);
+        assertEquals(new Rectangle(1380, 40, 420, 1000), DevToolsDock.place(main, view, wanted, screen));
+        assertEquals(new Rectangle(1380, 40, 420, 1040), DevToolsDock.place(main, view, new Dimension(420, 1400),
+                screen), "down to the screen's bottom edge, no further");
+        // None on the right, some on the left.
+        Rectangle moved = new Rectangle(600, 40, 1280, 767);
+        assertEquals(new Rectangle(180, 40, 420, 1000), DevToolsDock.place(moved, view, wanted, screen));
+        // The window fills the screen's width: over the view's right edge, never below the view (it once
+        // ran to the screen's bottom over the status bar).
+        Rectangle wide = new Rectangle(0, 0, 1920, 1080);
+        Rectangle wideView = new Rectangle(0, 50, 1920, 1000);
+        Rectangle over = DevToolsDock.place(wide, wideView, new Dimension(420, 1400), screen);
+        assertEquals(new Rectangle(1500, 50, 420, 1000), over);
+        assertTrue(over.y + over.height <= wideView.y + wideView.height, "the status bar below the view stays clear");
         assertTrue(DevToolsPanel.WHEEL_PIXELS >= 16, "a wheel notch scrolls rows, not pixels");
     }
 

@@ -67,10 +67,17 @@ public final class AutoTargetCheck {
         return c != null && !Double.isNaN(c.medianMs());
     }
 
-    /** The frames per second in the status bar's right side ("tessellated, ...  24 fps  1280x720"). */
+    /**
+     * The frames per second in the status bar's right side ("tessellated, ...  24 fps  1280x720"), or
+     * from the frame's time where frames come too slowly for a rate ("... 2131.6 ms a frame ...").
+     */
     static double fps(String pace) {
         Matcher m = Pattern.compile("(\\d+) fps").matcher(pace);
-        return m.find() ? Double.parseDouble(m.group(1)) : Double.NaN;
+        if (m.find()) {
+            return Double.parseDouble(m.group(1));
+        }
+        Matcher ms = Pattern.compile("([0-9.]+) ms a frame").matcher(pace);
+        return ms.find() ? 1000 / Double.parseDouble(ms.group(1)) : Double.NaN;
     }
 
     private static String size(String pace) {

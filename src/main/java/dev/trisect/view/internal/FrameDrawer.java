@@ -184,18 +184,28 @@ final class FrameDrawer {
         }
         compareNanos += System.nanoTime() - afterThisPath;
         back.inspection = null;
+        back.underMarks = null;
+        long t0 = System.nanoTime();
         if (inspected >= 0) {
-            long t0 = System.nanoTime();
             int ix = (int) (inspected >> 32);
             int iy = (int) inspected;
             if (ix < fw && iy < fh) {
-                back.inspection = PixelInspector.inspect(renderer.drawn(), fb, reference,
-                        new TexelToScreen(draws, viewport), drawn, settings.render().filter(),
-                        settings.render().mode().divides(),
-                        settings.render().borders() && settings.view() != ViewKind.DIFFERENCE, ix, iy);
+                back.inspection = inspect(fb, draws, viewport, drawn, settings, ix, iy);
+                back.underMarks = InspectorPainter.patch(fb.colour(), fw, fh, ix, iy);
             }
-            back.inspectNanos = System.nanoTime() - t0;
         }
+        // The pinned pixels' readouts, afresh each frame.
+        long[] pins = state.pins();
+        java.util.List<PixelInspector.Inspection> read = new java.util.ArrayList<>();
+        for (long p : inspected >= 0 ? pins : new long[0]) {
+            int px = (int) (p >> 32);
+            int py = (int) p;
+            if (px < fw && py < fh) {
+                read.add(inspect(fb, draws, viewport, drawn, settings, px, py));
+            }
+        }
+        back.pins = read.toArray(PixelInspector.Inspection[]::new);
+        back.inspectNanos = System.nanoTime() - t0;
         compareStageNanos = compareNanos;
         highlight.apply(fb, draws, drawn.placed(), state.hovered());
         if (settings.view() == ViewKind.DIFFERENCE) {
@@ -221,6 +231,14 @@ final class FrameDrawer {
             }
         }
         return back;
+    }
+
+    /** The inspector's reading of frame pixel (x, y) of this frame (before anything is drawn over the image). */
+    private PixelInspector.Inspection inspect(Framebuffer fb, Draws draws, Viewport viewport, DrawnFrame drawn,
+                                              ViewSettings settings, int x, int y) {
+        return PixelInspector.inspect(renderer.drawn(), fb, reference, new TexelToScreen(draws, viewport), drawn,
+                settings.render().filter(), settings.render().mode().divides(),
+                settings.render().borders() && settings.view() != ViewKind.DIFFERENCE, x, y);
     }
 
     /** Draws this frame in one path into a framebuffer; returns the nanoseconds it took. */

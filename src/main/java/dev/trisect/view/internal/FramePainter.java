@@ -57,6 +57,7 @@ public final class FramePainter {
         if (front.inspection != null) {
             InspectorPainter.paint(g2, front, w, h, pinned);
         }
+        InspectorPainter.paintPins(g2, front, w, h);
         if (front.view == ViewKind.DIFFERENCE) {
             paintLegend(g2, front.heatScale);
         } else if (front.view == ViewKind.SPLIT) {

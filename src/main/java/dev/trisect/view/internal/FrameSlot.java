@@ -30,6 +30,14 @@ public final class FrameSlot {
     public RenderSettings drawnRender;
     /** The pixel inspector's reading of this frame, or null when it is off. */
     public PixelInspector.Inspection inspection;
+    /**
+     * The frame's colours around the inspected pixel before anything was drawn over the image (outlines,
+     * the hover tint), {@link InspectorPainter#MAGNIFIED} squared, row by row; null when not inspected.
+     * The inspector's numbers are of these; the magnifier shows the frame as it is on screen.
+     */
+    public int[] underMarks;
+    /** The readouts of the pinned pixels on this frame, oldest pin first; empty when none are pinned. */
+    public PixelInspector.Inspection[] pins = new PixelInspector.Inspection[0];
     /** Time the inspector took on this frame, nanoseconds. */
     public long inspectNanos;
     /** What the view showed when the frame was drawn. */

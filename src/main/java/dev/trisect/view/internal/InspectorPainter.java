@@ -82,6 +82,81 @@ public final class InspectorPainter {
         return l;
     }
 
+    /** The frame's colours in the magnifier's square round (x, y), row by row; 0 outside the frame. */
+    static int[] patch(int[] argb, int width, int height, int x, int y) {
+        int[] out = new int[MAGNIFIED * MAGNIFIED];
+        for (int j = 0; j < MAGNIFIED; j++) {
+            for (int i = 0; i < MAGNIFIED; i++) {
+                int px = x + i - MAGNIFIED / 2;
+                int py = y + j - MAGNIFIED / 2;
+                out[j * MAGNIFIED + i] = px >= 0 && py >= 0 && px < width && py < height ? argb[py * width + px] : 0;
+            }
+        }
+        return out;
+    }
+
+    /**
+     * What the magnifier says when it shows marks drawn over the image — outlines (B), the hover tint —
+     * that the numbers exclude (they are read from the image before them): how many of its pixels
+     * they cover; null when it shows none.
+     */
+    static String marksNote(FrameSlot f) {
+        if (f.underMarks == null || f.inspection == null) {
+            return null;
+        }
+        int[] now = patch(f.frame.colour(), f.width(), f.height(), f.inspection.x(), f.inspection.y());
+        int marked = 0;
+        for (int k = 0; k < now.length; k++) {
+            marked += now[k] != f.underMarks[k] ? 1 : 0;
+        }
+        boolean centre = now[now.length / 2] != f.underMarks[now.length / 2];
+        return marked == 0 ? null : String.format(Locale.ROOT, "magnifier: %d px marked over the image%s "
+                + "(outlines, hover tint); the numbers are of the image", marked, centre ? ", this one too" : "");
+    }
+
+    /** A pinned pixel's one-line readout, numbered from 1 as its marker in the view. */
+    static String pinLine(int number, PixelInspector.Inspection in) {
+        String what = in.triangle() < 0 ? "background" : triangleOf(in.owner(), in.triangle())
+                + (Double.isNaN(in.displacement()) ? ", displacement undefined"
+                : String.format(Locale.ROOT, ", exact displacement %.4f px", in.displacement()));
+        return String.format(Locale.ROOT, "#%d %d,%d #%06X %s", number, in.x(), in.y(), in.argb() & 0xFFFFFF, what);
+    }
+
+    /**
+     * The pinned pixels: a numbered square on each, and their readouts, read afresh each frame, in a box
+     * at the view's bottom right.
+     */
+    static void paintPins(Graphics2D g, FrameSlot f, int viewW, int viewH) {
+        if (f.pins.length == 0) {
+            return;
+        }
+        double sx = (double) viewW / f.width();
+        double sy = (double) viewH / f.height();
+        g.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
+        int lineH = g.getFontMetrics().getHeight();
+        int textW = 0;
+        for (int k = 0; k < f.pins.length; k++) {
+            PixelInspector.Inspection in = f.pins[k];
+            int px = (int) Math.round((in.x() + 0.5) * sx);
+            int py = (int) Math.round((in.y() + 0.5) * sy);
+            g.setColor(new Color(0, 0, 0, 170));
+            g.fillRect(px - 5, py - 5, 11, 11);
+            g.setColor(Color.ORANGE);
+            g.drawRect(px - 4, py - 4, 8, 8);
+            g.drawString(Integer.toString(k + 1), px + 8, py - 6);
+            textW = Math.max(textW, g.getFontMetrics().stringWidth(pinLine(k + 1, in)));
+        }
+        int h = f.pins.length * lineH + 8;
+        int x = viewW - textW - 12 - MARGIN;
+        int y = viewH - h - MARGIN;
+        g.setColor(new Color(0, 0, 0, 170));
+        g.fillRect(x, y, textW + 12, h);
+        g.setColor(Color.WHITE);
+        for (int k = 0; k < f.pins.length; k++) {
+            g.drawString(pinLine(k + 1, f.pins[k]), x + 6, y + 4 + (k + 1) * lineH - 3);
+        }
+    }
+
     /** The readout as text, one line each, for the clipboard. */
     static String text(PixelInspector.Inspection in) {
         return String.join(System.lineSeparator(), lines(in, false)) + System.lineSeparator();
@@ -137,6 +212,10 @@ public final class InspectorPainter {
         }
         paintKnots(g, in, sx, py);
         List<String> lines = lines(in, pinned);
+        String note = marksNote(f);
+        if (note != null) {
+            lines.add(note);
+        }
         g.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
         int lineH = g.getFontMetrics().getHeight();
         int textW = 0;

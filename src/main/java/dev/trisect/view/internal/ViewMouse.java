@@ -86,7 +86,13 @@ public final class ViewMouse extends MouseAdapter {
         if (dragged || draggingDivider) {
             return;
         }
-        if (inspecting) {
+        if (inspecting && e.isShiftDown()) {
+            // Shift and a click pins this pixel to the list whose readouts update each frame, or unpins it.
+            FrameSlot f = controller.front();
+            if (f != null && view.getWidth() > 0 && view.getHeight() > 0) {
+                state().togglePin(frameX(f, e.getX()), frameY(f, e.getY()));
+            }
+        } else if (inspecting) {
             // A click without a drag pins the inspector to this pixel, or lets it follow again.
             pinned = !pinned;
             inspectAt(e.getX(), e.getY());
@@ -123,6 +129,7 @@ public final class ViewMouse extends MouseAdapter {
         pinned = false;
         if (!on) {
             state().inspect(-1, -1);
+            state().clearPins();
         } else {
             Point p = view.getMousePosition();
             inspectAt(p == null ? view.getWidth() / 2 : p.x, p == null ? view.getHeight() / 2 : p.y);

@@ -58,6 +58,10 @@ public final class ViewState {
     private volatile Progress progress = new Progress(0, 0, 0);
     /** The pixel the inspector looks at, frame pixels x in the high half; -1 when the inspector is off. */
     private volatile long inspected = -1;
+    /** Pinned pixels, packed as {@link #inspected}, oldest first; a new array on each change. */
+    private volatile long[] pins = new long[0];
+    /** How many pixels may be pinned at once: a short list that reads at a glance. */
+    public static final int MAX_PINS = 4;
     /** The last few seconds of frame times by stage, for the graph. */
     public final FrameTimes frameTimes = new FrameTimes();
     /** Milliseconds each path (by RenderMode ordinal) took on the last measured frame, or null. */
@@ -257,6 +261,43 @@ public final class ViewState {
     public void inspect(int x, int y) {
         inspected = x < 0 ? -1 : ((long) x << 32) | (y & 0xFFFFFFFFL);
         ChangeSignal.signal();
+    }
+
+    /**
+     * Pins frame pixel (x, y) — its readout then shows and updates every frame — or unpins it if it is
+     * pinned; a pin beyond {@link #MAX_PINS} unpins the oldest.
+     */
+    public synchronized void togglePin(int x, int y) {
+        long p = ((long) x << 32) | (y & 0xFFFFFFFFL);
+        long[] now = pins;
+        int at = -1;
+        for (int k = 0; k < now.length; k++) {
+            at = now[k] == p ? k : at;
+        }
+        long[] next;
+        if (at >= 0) {
+            next = new long[now.length - 1];
+            System.arraycopy(now, 0, next, 0, at);
+            System.arraycopy(now, at + 1, next, at, now.length - at - 1);
+        } else {
+            int keep = Math.min(now.length, MAX_PINS - 1);
+            next = new long[keep + 1];
+            System.arraycopy(now, now.length - keep, next, 0, keep);
+            next[keep] = p;
+        }
+        pins = next;
+        ChangeSignal.signal();
+    }
+
+    /** Unpins every pixel. */
+    public void clearPins() {
+        pins = new long[0];
+        ChangeSignal.signal();
+    }
+
+    /** The pinned pixels, packed as {@link #inspected}, oldest first; do not change the array. */
+    public long[] pins() {
+        return pins;
     }
 
     /** The inspected pixel packed as in {@link #inspect}, -1 when off. */

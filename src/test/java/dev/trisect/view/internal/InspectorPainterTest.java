@@ -80,4 +80,84 @@ class InspectorPainterTest {
         assertTrue(text.contains("in the view: piece outlined cyan, input triangle dashed"), text);
         assertTrue(f.width() == 8);
     }
+
+    /** The magnifier shows the frame with its outlines; the numbers are read before them: it says so. */
+    @Test
+    void theMagnifierSaysWhenItShowsMarksTheNumbersExclude() {
+        FrameSlot f = new FrameSlot(64, 48);
+        Arrays.fill(f.frame.colour(), 0xFF808080);
+        f.inspection = new PixelInspector.Inspection(10, 10, 0xFF808080, 3, null, 2.5, 10.25, 3.5, 10.25, 3.5, 0.125,
+                null, 1.5, 1, 12, 4, null, null, null, 0, null);
+        f.underMarks = InspectorPainter.patch(f.frame.colour(), 64, 48, 10, 10);
+        assertEquals(null, InspectorPainter.marksNote(f), "nothing drawn over the image");
+        for (int x = 8; x <= 10; x++) {
+            f.frame.colour()[10 * 64 + x] = 0xFFFFFF00;
+        }
+        f.frame.colour()[40 * 64 + 60] = 0xFFFFFF00;
+        String note = InspectorPainter.marksNote(f);
+        assertTrue(note != null && note.startsWith("magnifier: 3 px marked over the image, this one too"), note);
+    }
+
+    @Test
+    void theLoopKeepsTheImageUnderTheOutlinesForTheMagnifier() throws Exception {
+        ViewState state = new ViewState(dev.trisect.content.DemoScenes.demo());
+        state.viewSize(320, 180);
+        ViewSettings d = ViewSettings.defaults();
+        state.settings(d.withRender(d.render().withMode(dev.trisect.render.RenderMode.TESSELLATED).withBorders(true)
+                .withTessellation(d.render().tessellation().withMaxEdge(4))));
+        state.inspect(160, 120);
+        TripleBuffer buffers = new TripleBuffer();
+        FrameSlot[] shown = new FrameSlot[1];
+        FrameSlot f = LoopRun.until(state, buffers, 1, "an inspected frame", () -> {
+            shown[0] = buffers.acquire(shown[0]);
+            return shown[0] != null && shown[0].inspection != null ? shown[0] : null;
+        });
+        assertTrue(f.underMarks != null, "the image under the marks is kept");
+        String note = InspectorPainter.marksNote(f);
+        assertTrue(note != null && note.contains("px marked over the image"), "4 px pieces' outlines: " + note);
+    }
+
+    @Test
+    void pinsAreAShortListTheSecondClickUnpins() {
+        ViewState state = new ViewState(dev.trisect.content.DemoScenes.floor());
+        for (int k = 1; k <= 5; k++) {
+            state.togglePin(k, 2 * k);
+        }
+        assertEquals(ViewState.MAX_PINS, state.pins().length, "at most four");
+        assertEquals((2L << 32) | 4, state.pins()[0], "the oldest went");
+        state.togglePin(3, 6);
+        assertEquals(3, state.pins().length, "pinned again: unpinned");
+        state.clearPins();
+        assertEquals(0, state.pins().length);
+    }
+
+    @Test
+    void pinnedPixelsAreReadAfreshEachFrame() throws Exception {
+        ViewState state = new ViewState(dev.trisect.content.DemoScenes.demo());
+        state.viewSize(320, 180);
+        state.inspect(160, 120);
+        state.togglePin(100, 150);
+        state.togglePin(250, 160);
+        TripleBuffer buffers = new TripleBuffer();
+        FrameSlot[] shown = new FrameSlot[1];
+        FrameSlot first = LoopRun.until(state, buffers, 1, "a frame with pins", () -> {
+            shown[0] = buffers.acquire(shown[0]);
+            return shown[0] != null && shown[0].pins.length == 2 ? shown[0] : null;
+        });
+        assertEquals(100, first.pins[0].x());
+        assertEquals(160, first.pins[1].y());
+        PixelInspector.Inspection firstPin = first.pins[0];
+        String line = InspectorPainter.pinLine(1, firstPin);
+        assertTrue(line.startsWith("#1 100,150 #"), line);
+        // The camera moves: the same pixel's readout follows the new frame.
+        state.camera(dev.trisect.scene.Camera.looking(new dev.trisect.math.Vec3(3, 1, 5), dev.trisect.math.Vec3.ZERO));
+        dev.trisect.scene.Camera before = first.camera;
+        FrameSlot[] again = new FrameSlot[1];
+        FrameSlot next = LoopRun.until(state, buffers, 1, "a frame from the new camera", () -> {
+            again[0] = buffers.acquire(again[0]);
+            return again[0] != null && !before.equals(again[0].camera) && again[0].pins.length == 2 ? again[0] : null;
+        });
+        assertTrue(next.pins[0].argb() != firstPin.argb() || next.pins[0].w() != firstPin.w(),
+                "read from the new frame");
+    }
 }
