@@ -162,6 +162,27 @@ final class TriangleSetup {
         fixedPointSafe = Math.abs(at[c0 + 1]) < limit && Math.abs(at[c1 + 1]) < limit && Math.abs(at[c2 + 1]) < limit
                 && Math.abs(at[c0 + 2]) < limit && Math.abs(at[c1 + 2]) < limit && Math.abs(at[c2 + 2]) < limit;
         qPlane.fit(x0, y0, ex1, ey1, ex2, ey2, inv, q0, q1, q2);
+        planeCount = cs;
+        if (cs == 3) {
+            // The textured layout (s, t alone), every frame but a lit one: two fits written out, with
+            // no loop over a count the compiler does not know and no load of the plane from the array
+            // (sphere160k, where setup weighs as much as the pixels, is 2-3 % faster so; docs/
+            // performance.md, "The pixel stage as templates, and attributes by layout").
+            double s0 = at[c0 + 1];
+            double s1 = at[c1 + 1];
+            double s2 = at[c2 + 1];
+            double t0 = at[c0 + 2];
+            double t1 = at[c1 + 2];
+            double t2 = at[c2 + 2];
+            if (perspective) {
+                sPlane.fit(x0, y0, ex1, ey1, ex2, ey2, inv, s0 * q0, s1 * q1, s2 * q2);
+                tPlane.fit(x0, y0, ex1, ey1, ex2, ey2, inv, t0 * q0, t1 * q1, t2 * q2);
+            } else {
+                sPlane.fit(x0, y0, ex1, ey1, ex2, ey2, inv, s0, s1, s2);
+                tPlane.fit(x0, y0, ex1, ey1, ex2, ey2, inv, t0, t1, t2);
+            }
+            return;
+        }
         for (int k = 1; k < cs; k++) {
             double v0 = at[c0 + k];
             double v1 = at[c1 + k];
@@ -174,7 +195,6 @@ final class TriangleSetup {
             }
             planes[k].fit(x0, y0, ex1, ey1, ex2, ey2, inv, v0, v1, v2);
         }
-        planeCount = cs;
     }
 
     private static Plane[] newPlanes() {
