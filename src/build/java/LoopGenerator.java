@@ -20,9 +20,10 @@ import java.util.TreeSet;
  *
  * <p>Template ({@code dev/trisect/raster/NAME.java.template}): sections {@code //#header},
  * {@code //#method} (expanded per combination), {@code //#footer}; lines {@code //#params} and
- * {@code //#dimensions} (of {@code source colour write uv divide}; without {@code colour} or
+ * {@code //#dimensions} (of {@code source colour write uv ids divide}; without {@code colour} or
  * {@code write}, only the first of {@link #COLOURS} or {@link #WRITES}). A line of a template or of
- * a source may end in markers, each {@code " //#"} and a word: {@code uv}, {@code divide},
+ * a source may end in markers, each {@code " //#"} and a word: {@code uv}, {@code ids} (the int ids,
+ * written with the UV output or alone), {@code divide},
  * {@code varyings} (the colour reads varyings), each negated by {@code !}, keep the line when they
  * hold; {@code write=V,..}, {@code colour=V,..}, {@code source=V,..} (names with a lower-case first
  * letter) for those values; {@code varying} writes the line once per varying of the colour, with
@@ -30,8 +31,8 @@ import java.util.TreeSet;
  * {@code $DOUBLE$} the fragment's colour (ARGB, alpha kept: the colour's {@code //#combine} of the
  * source's texel from 32.32 fixed-point or double {@code s}, {@code t}, where the template has left a
  * double for each varying); {@code $STEP$} (in a for header) the source's further steps;
- * {@code $SOURCE_ID$}, {@code $PIXEL_STATE$}, {@code $UV$}, {@code $NAME$} the combination's source,
- * state, UV setting and the loop's name. A line that is only {@code $WRITE$} or {@code $END_WRITE$}
+ * {@code $SOURCE_ID$}, {@code $PIXEL_STATE$}, {@code $UV$}, {@code $IDS$}, {@code $NAME$} the
+ * combination's source, state, UV and ids settings and the loop's name. A line that is only {@code $WRITE$} or {@code $END_WRITE$}
  * becomes the write's {@code //#begin} or {@code //#end} (around the UV output's lines; they read the
  * locals {@code i}, {@code qf}, {@code argb} and the arrays {@code depth}, {@code color}); a line that is
  * only another {@code $WORD$} is a hook: the source's section of that name in lower case
@@ -151,6 +152,7 @@ public final class LoopGenerator {
         String method = section(text, "//#method", "//#footer");
         String footer = text.substring(text.indexOf("//#footer") + "//#footer".length() + 1);
         boolean divides = dims.contains("divide");
+        boolean hasIds = dims.contains("ids");
         boolean stated = dims.contains("colour") || dims.contains("write");
         List<LoopPart> colours = dims.contains("colour") ? allColours : allColours.subList(0, 1);
         List<LoopPart> writes = dims.contains("write") ? allWrites : allWrites.subList(0, 1);
@@ -158,21 +160,26 @@ public final class LoopGenerator {
         for (LoopPart s : sources) {
             for (LoopPart c : colours) {
                 for (LoopPart w : writes) {
-                    all.add(new LoopPart.Combination(s, c, w, w.writesUv(), false));
+                    all.add(new LoopPart.Combination(s, c, w, w.writesUv(), w.writesUv() && hasIds, false));
                 }
             }
         }
         StringBuilder b = new StringBuilder(banner(name + ".java.template"));
         b.append(withImports(header, sources));
-        b.append(dispatcher(params, divides, stated, all));
+        b.append(dispatcher(params, divides, hasIds, stated, all));
         for (LoopPart.Combination k : all) {
-            for (boolean uv : k.uv() ? new boolean[] {true, false} : new boolean[] {false}) {
+            // Recording: the UV output (and the ids with it), the ids alone, or nothing.
+            int recordings = k.uv() ? k.ids() ? 3 : 2 : 1;
+            for (int r = 0; r < recordings; r++) {
+                boolean uv = r == 0 && recordings > 1;
+                boolean ids = k.ids() && r < 2;
                 for (boolean divide : divides ? new boolean[] {true, false} : new boolean[] {false}) {
-                    LoopPart.Combination m = k.withUv(uv).dividing(divide);
+                    LoopPart.Combination m = k.recording(uv, ids).dividing(divide);
                     b.append('\n');
                     b.append("    /** ").append(k.source().name()).append(", ").append(k.colour().name()).append(", ")
                             .append(k.write().name()).append(divides ? divide ? ", dividing by 1/w" : ", affine" : "")
-                            .append(uv ? ", with" : ", without").append(" the UV output; pixels written. */\n");
+                            .append(uv ? ", with the UV output" : ids ? ", with the ids alone" : ", recording nothing")
+                            .append("; pixels written. */\n");
                     b.append(method(method, name, m, methodName(m, divides)));
                 }
             }
@@ -197,7 +204,8 @@ public final class LoopGenerator {
         return b.append(header.substring(end)).toString();
     }
 
-    private static String dispatcher(String params, boolean divides, boolean stated, List<LoopPart.Combination> all) {
+    private static String dispatcher(String params, boolean divides, boolean hasIds, boolean stated,
+                                     List<LoopPart.Combination> all) {
         StringBuilder args = new StringBuilder();
         for (String p : params.split(",")) {
             String[] words = p.trim().split(" ");
@@ -206,10 +214,12 @@ public final class LoopGenerator {
         StringBuilder b = new StringBuilder("\n");
         b.append("    /**\n     * The loop of colour source {@code source} ({@link ColourSources})")
                 .append(stated ? " and pixel state {@code state}\n     * ({@link PixelState})" : "")
-                .append(", with the UV output when {@code uv}").append(stated ? " (and the write has one)" : "")
+                .append(", with the UV output when {@code uv}").append(hasIds ? " (and the ids), else the ids when {@code ids}" : "")
+                .append(stated ? " (when the write has them)" : "")
                 .append(divides ? ",\n     * dividing by the interpolated 1/w when {@code divide}" : "")
                 .append(": chosen once per triangle.\n     *\n     * @return pixels written\n     */\n");
         b.append("    static long fill(int source, ").append(stated ? "int state, " : "").append("boolean uv, ")
+                .append(hasIds ? "boolean ids, " : "")
                 .append(divides ? "boolean divide," : "").append("\n            ").append(params).append(") {\n");
         b.append("        switch (source) {\n");
         String indent = stated ? "                        " : "                ";
@@ -244,20 +254,22 @@ public final class LoopGenerator {
         return b.toString();
     }
 
-    /** The call of combination {@code k}'s loop, choosing by {@code uv} where the write has a UV output. */
+    /** The call of combination {@code k}'s loop, choosing by {@code uv} and {@code ids} where the write records. */
     private static String call(LoopPart.Combination k, boolean divides, CharSequence args, String indent) {
+        String none = methodName(k.recording(false, false), divides) + "(" + args + ")";
         if (!k.uv()) {
-            return methodName(k, divides) + "(" + args + ")";
+            return none;
         }
-        return "uv ? " + methodName(k, divides) + "(" + args + ")\n" + indent + ": "
-                + methodName(k.withUv(false), divides) + "(" + args + ")";
+        String uv = "uv ? " + methodName(k, divides) + "(" + args + ")\n" + indent + ": ";
+        return k.ids() ? uv + "ids ? " + methodName(k.recording(false, true), divides) + "(" + args + ")\n" + indent
+                + ": " + none : uv + none;
     }
 
     private static String methodName(LoopPart.Combination k, boolean divides) {
         String n = Character.toLowerCase(k.source().name().charAt(0)) + k.source().name().substring(1);
         return n + (k.colour().name().equals(COLOURS.get(0)) ? "" : k.colour().name())
                 + (k.write().name().equals(WRITES.get(0)) ? "" : k.write().name())
-                + (divides ? k.divide() ? "Divide" : "Affine" : "") + (k.uv() ? "Uv" : "");
+                + (divides ? k.divide() ? "Divide" : "Affine" : "") + (k.uv() ? "Uv" : k.ids() ? "Ids" : "");
     }
 
     private static String method(String template, String templateName, LoopPart.Combination k, String name) {
@@ -305,7 +317,8 @@ public final class LoopGenerator {
 
     private static String substitute(String line, LoopPart.Combination k, String name) {
         return line.replace("$NAME$", name).replace("$SOURCE_ID$", "ColourSources." + k.source().constant())
-                .replace("$PIXEL_STATE$", k.state()).replace("$UV$", Boolean.toString(k.uv()));
+                .replace("$PIXEL_STATE$", k.state()).replace("$UV$", Boolean.toString(k.uv()))
+                .replace("$IDS$", Boolean.toString(k.ids()));
     }
 
     private static String section(String text, String start, String end) {

@@ -23,18 +23,19 @@ record LoopPart(String name, String description, Map<String, List<String>> secti
     private static final Pattern MARKER = Pattern.compile(" //#(!?)([a-zA-Z]+)(?:=([a-zA-Z,]+))?$");
 
     /** One loop's place in the dimensions. */
-    record Combination(LoopPart source, LoopPart colour, LoopPart write, boolean uv, boolean divide) {
+    record Combination(LoopPart source, LoopPart colour, LoopPart write, boolean uv, boolean ids, boolean divide) {
         /** The loop's {@code PixelState}, as a constant expression. */
         String state() {
             return "PixelState." + colour.constant() + " | PixelState." + write.constant();
         }
 
-        Combination withUv(boolean on) {
-            return new Combination(source, colour, write, on, divide);
+        /** With the UV output (which brings the ids) or the ids alone or neither. */
+        Combination recording(boolean uvOn, boolean idsOn) {
+            return new Combination(source, colour, write, uvOn, idsOn, divide);
         }
 
         Combination dividing(boolean on) {
-            return new Combination(source, colour, write, uv, on);
+            return new Combination(source, colour, write, uv, ids, on);
         }
     }
 
@@ -74,6 +75,8 @@ record LoopPart(String name, String description, Map<String, List<String>> secti
         switch (dim + (values == null ? "" : "=")) {
             case "uv":
                 return k.uv;
+            case "ids":
+                return k.ids;
             case "divide":
                 return k.divide;
             case "varyings":

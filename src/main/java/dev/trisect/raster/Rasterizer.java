@@ -126,14 +126,15 @@ public final class Rasterizer {
         Texture texture = textures[material];
         int uvId = triangles.ids()[tri] + 1;
         boolean uv = frame.uv() != null;
+        boolean ids = frame.ids() != null;
         int source = source(texture);
         int state = state(triangles, material);
         if (knots) {
-            return KnotNearest.fill(source, state, uv, t, spans, frame, texture, uvId, knotError, x0, x1);
+            return KnotNearest.fill(source, state, uv, ids, t, spans, frame, texture, uvId, knotError, x0, x1);
         } else if (!divide && t.fixedPointSafe) {
-            return FixedNearest.fill(source, state, uv, t, spans, frame, texture, uvId);
+            return FixedNearest.fill(source, state, uv, ids, t, spans, frame, texture, uvId);
         } else {
-            return PerPixelNearest.fill(source, state, uv, divide, t, spans, frame, texture, uvId);
+            return PerPixelNearest.fill(source, state, uv, ids, divide, t, spans, frame, texture, uvId);
         }
     }
 
@@ -172,8 +173,9 @@ public final class Rasterizer {
         int[] spans = solver.spans();
         Texture texture = textures[inputs.materials()[g]];
         int uvId = inputs.ids()[g] + 1;
-        return TreeNearest.fill(source(texture), state(inputs, inputs.materials()[g]), frame.uv() != null, this.trees,
-                t, spans, trees, trees.roots()[g], trees.nodeCount(g), frame, texture, uvId);
+        return TreeNearest.fill(source(texture), state(inputs, inputs.materials()[g]), frame.uv() != null,
+                frame.ids() != null, this.trees, t, spans, trees, trees.roots()[g], trees.nodeCount(g), frame, texture,
+                uvId);
     }
 
     /**

@@ -3,7 +3,8 @@ package dev.trisect.render;
 import java.awt.image.BufferedImage;
 
 /**
- * The frame being drawn: ARGB colour, a depth buffer and, when asked for, the UV output.
+ * The frame being drawn: ARGB colour, a depth buffer and, when asked for, the UV output and the
+ * triangle ids.
  *
  * <p>All arrays are row-major, row 0 at the top, pixel (x, y) at index {@code y * width + x}.
  * Depth holds {@code 1/w} (w the view depth), which is linear in screen space and larger for nearer
@@ -13,7 +14,9 @@ import java.awt.image.BufferedImage;
  * triangle's index + 1 (0 where nothing was drawn). Doubles, not the floats of the UV file, because
  * the exact displacement maps them back to the screen: where one texel covers hundreds of pixels and
  * s is in the thousands, a float's rounding of s alone moves the point by tenths of a pixel. The file
- * ({@code render --uv-out}) still stores floats, rounded when written.
+ * ({@code render --uv-out}) still stores floats, rounded when written. The ids ({@link #ids()}) are
+ * the UV output's third channel alone, as ints: 4 bytes a pixel instead of 24, for a program that
+ * only asks which triangle each pixel shows.
  */
 public final class Framebuffer {
     private final int width;
@@ -21,6 +24,9 @@ public final class Framebuffer {
     private final int[] colour;
     private final float[] depth;
     private double[] uv;
+    private int[] ids;
+    /** Whether {@link #recordIds} asked for the ids (the UV output brings them too). */
+    private boolean idsWanted;
     /** Calls of {@link #clearRows} so far: see {@link #clearCount()}. */
     private final java.util.concurrent.atomic.AtomicLong clears = new java.util.concurrent.atomic.AtomicLong();
 
@@ -94,11 +100,43 @@ public final class Framebuffer {
         } else if (!on) {
             uv = null;
         }
+        keepIds();
+    }
+
+    /**
+     * The triangle ids: per pixel the index + 1 of the triangle drawn there (the frame triangle, as
+     * the UV output's third channel), 0 where nothing was drawn; recorded while {@link #recordIds}
+     * or {@link #recordUv} is on. A blended fragment writes none (the id stays the surface's behind).
+     *
+     * @return the ids, {@code width * height} values, live; or null when not recorded
+     */
+    public int[] ids() {
+        return ids;
+    }
+
+    /**
+     * Starts or stops recording the triangle ids alone ({@link #ids()}); the UV output records them
+     * too while it is on. The buffer is kept once made.
+     *
+     * @param on true to record from the next frame on, false to stop (unless the UV output is on)
+     */
+    public void recordIds(boolean on) {
+        idsWanted = on;
+        keepIds();
+    }
+
+    /** The ids buffer made or dropped as the UV output and {@link #recordIds} ask. */
+    private void keepIds() {
+        if ((idsWanted || uv != null) && ids == null) {
+            ids = new int[width * height];
+        } else if (!idsWanted && uv == null) {
+            ids = null;
+        }
     }
 
     /**
      * Clears rows {@code [y0, y1)} of every buffer: colour to {@code background} (opaque), depth to
-     * 0, UV output to 0.
+     * 0, UV output and ids to 0.
      *
      * @param y0         first row cleared, 0 at the top
      * @param y1         the row after the last one cleared
@@ -112,6 +150,9 @@ public final class Framebuffer {
         java.util.Arrays.fill(depth, from, to, 0f);
         if (uv != null) {
             java.util.Arrays.fill(uv, 3 * from, 3 * to, 0.0);
+        }
+        if (ids != null) {
+            java.util.Arrays.fill(ids, from, to, 0);
         }
     }
 
