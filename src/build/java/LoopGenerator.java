@@ -70,7 +70,7 @@ public final class LoopGenerator {
             "AlphaTest",
             "Blend");
     /** The templates, each giving one class of loops. */
-    static final List<String> TEMPLATES = List.of("PerPixelNearest", "FixedNearest", "KnotNearest", "TreeNearest");
+    static final List<String> TEMPLATES = List.of("PerPixelLoops", "FixedLoops", "KnotLoops", "TreeLoops");
     /** Where the raster package's templates are, below the templates' root; likewise its output. */
     static final Path PACKAGE = Path.of("dev/trisect/raster");
 
@@ -130,8 +130,8 @@ public final class LoopGenerator {
         StringBuilder b = new StringBuilder(banner("sources/*.source"));
         b.append("package dev.trisect.raster;\n\n");
         b.append("/**\n * The colour sources of the pixel loops: what colour a fragment gets, chosen once per triangle.\n");
-        b.append(" * Each generated loop class ({@link PerPixelNearest}, {@link FixedNearest}, {@link KnotNearest},\n");
-        b.append(" * {@link TreeNearest}) has one loop per source and dispatches on these numbers.\n */\n");
+        b.append(" * Each generated loop class ({@link PerPixelLoops}, {@link FixedLoops}, {@link KnotLoops},\n");
+        b.append(" * {@link TreeLoops}) has one loop per source and dispatches on these numbers.\n */\n");
         b.append("final class ColourSources {\n");
         for (int i = 0; i < sources.size(); i++) {
             LoopPart s = sources.get(i);

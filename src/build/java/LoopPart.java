@@ -12,7 +12,7 @@ import java.util.regex.Pattern;
 
 /**
  * A piece of the pixel loops read from its file ({@link LoopGenerator} gives the syntax): a colour
- * source, a colour or a write, as its sections by name ({@code "setup"}, or {@code "setup KnotNearest"}
+ * source, a colour or a write, as its sections by name ({@code "setup"}, or {@code "setup KnotLoops"}
  * for one template only), each a list of lines; and how a line of a template or a source is kept for
  * one combination of the pieces ({@link #kept}).
  */

@@ -4,7 +4,7 @@ import dev.trisect.texture.internal.Lod;
 import dev.trisect.texture.internal.Sampler;
 
 /**
- * Trilinear's level of detail: that of the per-pixel loop ({@link PerPixelNearest}) over runs of
+ * Trilinear's level of detail: that of the per-pixel loop ({@link PerPixelLoops}) over runs of
  * {@link #LOD_RUN} columns: lambda along x and along y exact at the columns that are multiples of
  * {@link #LOD_RUN} ({@link #lodAt}), interpolated linearly in between where the chord is provably
  * within 3/256 level of the exact value ({@link #nearlyLinear}), and exact per pixel elsewhere

@@ -14,7 +14,7 @@ package dev.trisect.raster;
  * </ul>
  * A state is one of each, joined by {@code |}: {@code MODULATE | BLEND}. State 0 is
  * {@code TEXEL | OPAQUE}, every frame's state until a material asks for another. The loop is chosen
- * once per triangle from it (the generated loops' dispatchers, {@link PerPixelNearest#fill}), never per pixel.
+ * once per triangle from it (the generated loops' dispatchers, {@link PerPixelLoops#fill}), never per pixel.
  */
 public final class PixelState {
     /** Colour: the texel, alpha kept. */

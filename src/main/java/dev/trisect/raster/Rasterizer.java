@@ -9,8 +9,8 @@ import dev.trisect.texture.TextureFilter;
  * for each triangle, {@link TriangleSetup} (bounds and attribute planes), {@link SpanSolver} (the
  * covered pixels of each row), then the pixel loop of the texture filter and path, chosen once per
  * triangle: the loops generated from templates, one per colour source ({@link ColourSources}: the
- * filter and the texture's kind) and UV setting ({@link PerPixelNearest}, {@link FixedNearest}, in the
- * span path {@link KnotNearest}, in the tessellated path {@link TreeNearest}); the span path's knots
+ * filter and the texture's kind) and UV setting ({@link PerPixelLoops}, {@link FixedLoops}, in the
+ * span path {@link KnotLoops}, in the tessellated path {@link TreeLoops}); the span path's knots
  * are placed by {@link KnotSpacing}.
  *
  * <p>Coverage is exact integer arithmetic on snapped corners: a pixel belongs to a triangle when its
@@ -130,11 +130,11 @@ public final class Rasterizer {
         int source = source(texture);
         int state = state(triangles, material);
         if (knots) {
-            return KnotNearest.fill(source, state, uv, ids, t, spans, frame, texture, uvId, knotError, x0, x1);
+            return KnotLoops.fill(source, state, uv, ids, t, spans, frame, texture, uvId, knotError, x0, x1);
         } else if (!divide && t.fixedPointSafe) {
-            return FixedNearest.fill(source, state, uv, ids, t, spans, frame, texture, uvId);
+            return FixedLoops.fill(source, state, uv, ids, t, spans, frame, texture, uvId);
         } else {
-            return PerPixelNearest.fill(source, state, uv, ids, divide, t, spans, frame, texture, uvId);
+            return PerPixelLoops.fill(source, state, uv, ids, divide, t, spans, frame, texture, uvId);
         }
     }
 
@@ -173,7 +173,7 @@ public final class Rasterizer {
         int[] spans = solver.spans();
         Texture texture = textures[inputs.materials()[g]];
         int uvId = inputs.ids()[g] + 1;
-        return TreeNearest.fill(source(texture), state(inputs, inputs.materials()[g]), frame.uv() != null,
+        return TreeLoops.fill(source(texture), state(inputs, inputs.materials()[g]), frame.uv() != null,
                 frame.ids() != null, this.trees, t, spans, trees, trees.roots()[g], trees.nodeCount(g), frame, texture,
                 uvId);
     }

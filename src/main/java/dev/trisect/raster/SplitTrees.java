@@ -142,7 +142,7 @@ public final class SplitTrees {
 
     /**
      * Per piece, {@link #FIXED_STEP} longs: the steps per column of s and of t in 32.32 fixed point,
-     * {@code floor(dx * 2^32)}, as {@link FixedNearest} steps a piece.
+     * {@code floor(dx * 2^32)}, as {@link FixedLoops} steps a piece.
      */
     public long[] fixedSteps() {
         return fixedSteps;
@@ -150,7 +150,7 @@ public final class SplitTrees {
 
     /**
      * Per piece: its own first column (from its snapped corners), where each of its rows is anchored in
-     * fixed point as {@link FixedNearest} anchors it, so that a pixel's texel coordinates
+     * fixed point as {@link FixedLoops} anchors it, so that a pixel's texel coordinates
      * are those the piece-by-piece fill gave it: they depend on the piece and the pixel alone.
      */
     public int[] firstColumns() {

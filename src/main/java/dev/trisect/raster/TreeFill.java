@@ -3,7 +3,7 @@ package dev.trisect.raster;
 import java.util.Arrays;
 
 /**
- * The tessellated path's one-pass fill, the part every filter shares (its loops are {@link TreeNearest},
+ * The tessellated path's one-pass fill, the part every filter shares (its loops are {@link TreeLoops},
  * generated from a template), one pass per input triangle: the input triangle's rows, as
  * {@link SpanSolver} solved them from its own snapped corners, are each cut into the segments of its
  * pieces by descending the split tree ({@link SplitTrees}) along the row, left to right, and each run
@@ -126,8 +126,8 @@ final class TreeFill {
     /**
      * A texel coordinate at column {@code x} of row {@code y} of a piece, in 32.32 fixed point, from its
      * plane at {@code planes[o..o+3)} (base, dx, dy): anchored at the piece's first column {@code fc}
-     * and stepped from there by {@code step}, exactly as {@link FixedNearest} and
-     * {@link TreeNearest}'s filtered loops do for a piece's row, so that the pixel takes the bits it took when pieces
+     * and stepped from there by {@code step}, exactly as {@link FixedLoops} and
+     * {@link TreeLoops}'s filtered loops do for a piece's row, so that the pixel takes the bits it took when pieces
      * were filled one by one.
      */
     static long start(double[] planes, int o, int y, int fc, long step, int x) {
@@ -143,7 +143,7 @@ final class TreeFill {
     /**
      * Pixels [a, b) of row y of {@code piece}, a per-pixel fallback piece or an affine piece too large
      * for fixed point, as a setup of one row for the loops that fill whole triangles
-     * ({@link PerPixelNearest}; its span in {@link #segmentSpan}):
+     * ({@link PerPixelLoops}; its span in {@link #segmentSpan}):
      * the input triangle's depth, and its perspective-correct planes for a fallback piece (so that
      * the pixel is the per-pixel path's), the piece's own affine planes (doubles) for the other.
      */

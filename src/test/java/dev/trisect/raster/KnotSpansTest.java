@@ -24,7 +24,7 @@ import org.junit.jupiter.api.Test;
 class KnotSpansTest {
     private static final int W = 160;
     private static final int H = 100;
-    private static final double FIXED = KnotNearest.FIXED_SCALE;
+    private static final double FIXED = KnotLoops.FIXED_SCALE;
 
     private static Texture noise(int w, int h, long seed) {
         Random rnd = new Random(seed);

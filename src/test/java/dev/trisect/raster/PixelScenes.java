@@ -22,13 +22,13 @@ final class PixelScenes {
 
     /** The paths, as {@link Rasterizer} picks its loops. */
     enum Path {
-        /** Perspective, every pixel divides ({@link PerPixelNearest}). */
+        /** Perspective, every pixel divides ({@link PerPixelLoops}). */
         PER_PIXEL,
-        /** Affine in 32.32 fixed point ({@link FixedNearest}). */
+        /** Affine in 32.32 fixed point ({@link FixedLoops}). */
         FIXED,
-        /** The span path's knots ({@link KnotNearest}). */
+        /** The span path's knots ({@link KnotLoops}). */
         KNOTS,
-        /** The tessellated path's one-pass fill ({@link TreeNearest}). */
+        /** The tessellated path's one-pass fill ({@link TreeLoops}). */
         TREE
     }
 
