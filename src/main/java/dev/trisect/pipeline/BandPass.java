@@ -14,8 +14,9 @@ import dev.trisect.texture.Texture;
  * its rows, then draws the band's commands of every chunk ({@link Chunk#commands}: triangles, split
  * trees), chunk by chunk, so that every pixel sees its triangles in input order whatever the number of
  * threads; then fogs the band, outlines it when the borders are on (the tasks of an {@link Outlines}
- * pass come first), and draws the band's commands of the frame's lines ({@link LineGeometry}), all
- * while its rows are in cache. One {@link BandFill} per thread dispatches each command by its kind.
+ * pass come first), and draws the band's commands of the lists that come after the triangles — the
+ * frame's lines ({@link LineGeometry}), then its quads ({@link QuadGeometry}) — all while its rows are
+ * in cache. One {@link BandFill} per thread dispatches each command by its kind.
  */
 final class BandPass {
     /**
@@ -25,10 +26,10 @@ final class BandPass {
      * @param fillNanos    processor time of all threads clearing and filling bands
      * @param overlayNanos processor time of all threads preparing outlines and outlining bands, not
      *                     waiting for the preparations
-     * @param linePixels   pixels written by the lines (depth test passed)
-     * @param lineNanos    processor time of all threads drawing lines
+     * @param afterPixels  per list drawn after the triangles (the lines, the quads), pixels it wrote
+     * @param afterNanos   per such list, processor time of all threads drawing it
      */
-    record Result(long pixels, long fillNanos, long overlayNanos, long linePixels, long lineNanos) {
+    record Result(long pixels, long fillNanos, long overlayNanos, long[] afterPixels, long[] afterNanos) {
     }
 
     /** Per-thread scratch and counters. */
@@ -37,8 +38,8 @@ final class BandPass {
         long pixels;
         long fillNanos;
         long overlayNanos;
-        long linePixels;
-        long lineNanos;
+        long[] afterPixels = new long[0];
+        long[] afterNanos = new long[0];
     }
 
     private final Lane[] lanes;
@@ -54,23 +55,28 @@ final class BandPass {
     /**
      * Clears {@code frame} and fills the commands of chunks 0..chunkCount-1 into it, fogs each band
      * when there is fog ({@link FogPass}, before the overlay: the borders are not part of the scene),
-     * outlines it by {@code outlines} when the settings have borders on, then draws its lines.
+     * outlines it by {@code outlines} when the settings have borders on, then draws its commands of
+     * each list of {@code after}, in order.
      *
      * @param fog      the frame's fog, or null for none
      * @param textures the texture of each material, by material index
      * @param states   the pixel state of each material, by material index (see {@link Rasterizer#states})
-     * @param lines    the frame's {@link Commands#LINE} commands, binned into the same bands
+     * @param after    the lists each band draws after its triangles, fog and outlines (the frame's
+     *                 lines, then its quads), binned into the same bands
      */
     Result draw(Framebuffer frame, Chunks chunks, int chunkCount, Texture[] textures, int[] states,
-                RenderSettings settings, FogPass fog, Outlines outlines, Commands lines, WorkerPool pool) {
+                RenderSettings settings, FogPass fog, Outlines outlines, Commands[] after, WorkerPool pool) {
         for (Lane lane : lanes) {
             lane.pixels = 0;
             lane.fillNanos = 0;
             lane.overlayNanos = 0;
-            lane.linePixels = 0;
-            lane.lineNanos = 0;
+            if (lane.afterPixels.length != after.length) {
+                lane.afterPixels = new long[after.length];
+                lane.afterNanos = new long[after.length];
+            }
+            java.util.Arrays.fill(lane.afterPixels, 0);
+            java.util.Arrays.fill(lane.afterNanos, 0);
         }
-        boolean hasLines = lines.count() > 0;
         boolean perspective = settings.mode().divides();
         double knotError = settings.mode().knots() ? settings.knotError() : 0;
         int width = frame.width();
@@ -113,27 +119,30 @@ final class BandPass {
                 outlines.drawBand(thread, frame, b, y0, y1);
                 lane.overlayNanos += System.nanoTime() - t2;
             }
-            // The lines come after the band's triangles, its fog and its outlines, as they were submitted.
-            if (hasLines) {
-                long t3 = System.nanoTime();
-                lane.fill.fill(frame, lines, b, textures, perspective, 0, y0, width, y1);
-                lane.linePixels += lane.fill.linePixels();
-                lane.lineNanos += System.nanoTime() - t3;
+            // The lines, then the quads, after the band's triangles, fog and outlines, as they were submitted.
+            for (int l = 0; l < after.length; l++) {
+                if (after[l].count() > 0) {
+                    long t3 = System.nanoTime();
+                    lane.afterPixels[l] += fill.fill(frame, after[l], b, textures, perspective, 0, y0, width, y1);
+                    lane.afterNanos[l] += System.nanoTime() - t3;
+                }
             }
         });
         long pixels = 0;
         long fill = 0;
         long overlay = 0;
-        long linePixels = 0;
-        long lineNanos = 0;
+        long[] afterPixels = new long[after.length];
+        long[] afterNanos = new long[after.length];
         for (Lane lane : lanes) {
             pixels += lane.pixels;
             fill += lane.fillNanos;
             overlay += lane.overlayNanos;
-            linePixels += lane.linePixels;
-            lineNanos += lane.lineNanos;
+            for (int l = 0; l < after.length; l++) {
+                afterPixels[l] += lane.afterPixels[l];
+                afterNanos[l] += lane.afterNanos[l];
+            }
         }
-        return new Result(pixels, fill, overlay, linePixels, lineNanos);
+        return new Result(pixels, fill, overlay, afterPixels, afterNanos);
     }
 
     /**

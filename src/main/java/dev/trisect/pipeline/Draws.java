@@ -24,7 +24,7 @@ import java.util.Objects;
  *
  * <p>Lines ({@link #addLines}) are a list of their own, drawn in their order after every mesh's
  * triangles (see {@link LineGeometry}); the screen-aligned quads ({@link #quads()}) after the fill (see
- * {@link QuadPass}).
+ * {@link QuadGeometry}).
  */
 public final class Draws {
     private Mesh[] meshes = new Mesh[4];

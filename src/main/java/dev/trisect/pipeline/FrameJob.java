@@ -32,8 +32,8 @@ final class FrameJob {
     long bandsDone;
     /** What the lines' geometry did: segments set up, time. */
     LineGeometry.Result lines = LineGeometry.Result.NONE;
-    /** What the quad pass did: billboards, glyphs, pixels, time. */
-    QuadPass.Result quads = QuadPass.Result.NONE;
+    /** What the quads' set-up did: billboards, glyphs, time. */
+    QuadGeometry.Result quads = QuadGeometry.Result.NONE;
 
     FrameJob(Draws draws, RenderSettings settings, Framebuffer frame, WorkerPool pool, Chunks chunks, long start) {
         this.draws = draws;

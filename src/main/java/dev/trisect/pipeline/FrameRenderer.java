@@ -2,6 +2,7 @@ package dev.trisect.pipeline;
 
 import dev.trisect.math.Mat4;
 import dev.trisect.mesh.Mesh;
+import dev.trisect.raster.Commands;
 import dev.trisect.render.BorderStyle;
 import dev.trisect.render.FrameStats;
 import dev.trisect.render.Framebuffer;
@@ -17,7 +18,7 @@ import java.util.List;
  * {@link ClipSpace}, {@link ChunkGeometry}, {@link DepthCapSearch}) makes the chunks' screen
  * triangles, {@link BandPass} fills them band by band, and with the borders on {@link Outlines} draws
  * the border overlay on each band as it is filled, {@link LineGeometry} sets up the lines that each band draws over its filled
- * frame, {@link QuadPass} draws the billboards, labels and screen text after the fill; {@link FrameStatsBuilder} makes the statistics, all
+ * frame, {@link QuadGeometry} sets up the billboards, labels and screen text that each band draws last; {@link FrameStatsBuilder} makes the statistics, all
  * on the threads of one {@link WorkerPool}. What the frame drew is kept as a {@link FrameRecord}
  * ({@link #drawn()}), which answers the pixel inspector's questions until the next frame.
  *
@@ -53,7 +54,7 @@ public final class FrameRenderer implements AutoCloseable {
     private final BandPass bands;
     private final Outlines outlines;
     private final LineGeometry lines;
-    private final QuadPass quads;
+    private final QuadGeometry quads;
     /**
      * The frame's passes, in the order they run: the geometry, the lines' geometry, the fill, the quads
      * (see {@link FramePass}).
@@ -100,9 +101,8 @@ public final class FrameRenderer implements AutoCloseable {
         this.bands = new BandPass(threads);
         this.outlines = new Outlines(threads);
         this.lines = new LineGeometry();
-        this.quads = new QuadPass(threads);
-        List<FramePass> all = new java.util.ArrayList<>(List.of(this::geometryPass, this::linePass, this::fillPass,
-                this::quadPass));
+        this.quads = new QuadGeometry();
+        List<FramePass> all = new java.util.ArrayList<>(List.of(this::geometryPass, this::setUpPass, this::fillPass));
         all.addAll(later);
         this.passes = List.copyOf(all);
     }
@@ -143,8 +143,8 @@ public final class FrameRenderer implements AutoCloseable {
      * Draws every draw into {@code frame}, one depth buffer for all, after clearing it: each mesh's
      * positions go through that draw's own model-view-projection, so moving one object never touches
      * another's data. The draws' lines come after every triangle (and, with the borders on, after the
-     * overlay), depth-tested against them ({@link LineGeometry}), and the quads after the fill
-     * ({@link QuadPass}); neither touches the UV output.
+     * overlay), depth-tested against them ({@link LineGeometry}), and the quads after the lines
+     * ({@link QuadGeometry}); neither touches the UV output.
      * Triangles are numbered across the draws (see {@link Draws}) in the UV output and in
      * {@link FrameRecord#pieceAt}.
      *
@@ -173,22 +173,22 @@ public final class FrameRenderer implements AutoCloseable {
 
     /**
      * The fill pass: every band cleared and filled, fogged, outlined right after when the borders are
-     * on, and its lines drawn.
+     * on, and its lines and quads drawn.
      */
     private void fillPass(FrameJob job) {
         job.bands = bands.draw(job.frame, job.chunks, job.chunkCount(), job.draws.textures(), job.draws.states(),
-                job.settings, job.draws.fogPass(), outlines, lines.commands(), job.pool);
+                job.settings, job.draws.fogPass(), outlines, new Commands[] {lines.commands(), quads.commands()},
+                job.pool);
         job.bandsDone = System.nanoTime();
     }
 
-    /** The lines' geometry: the draws' segments clipped, set up and binned for the fill. */
-    private void linePass(FrameJob job) {
+    /**
+     * The set-up of what comes after the triangles: the draws' segments clipped, set up and binned
+     * ({@link LineGeometry}), then their quads ({@link QuadGeometry}), for the fill to draw per band.
+     */
+    private void setUpPass(FrameJob job) {
         job.lines = lines.setUp(job.draws, job.frame.width(), job.frame.height());
-    }
-
-    /** The quad pass: billboards, labels and screen text over everything else (see {@link QuadPass}). */
-    private void quadPass(FrameJob job) {
-        job.quads = quads.draw(job.draws, job.frame, job.pool);
+        job.quads = quads.setUp(job.draws, job.frame.width(), job.frame.height());
     }
 
     private FrameRecord record(int chunkCount, int width, int height, RenderSettings settings) {

@@ -74,32 +74,41 @@ final class FrameStatsBuilder {
      * overlay drawn in it or not.
      */
     FrameStats bands(BandPass.Result result, long end, boolean borders) {
-        return bands(result, end, borders, LineGeometry.Result.NONE, 0, QuadPass.Result.NONE);
+        return bands(result, end, borders, LineGeometry.Result.NONE, 0, QuadGeometry.Result.NONE);
     }
 
     /**
-     * The lines' geometry ({@code lines}, with {@code segmentsIn} segments given), then the band pass,
-     * done at {@code end}, then the quad pass ({@code quads}), which ends the frame.
+     * The set-up of the lines ({@code lines}, with {@code segmentsIn} segments given) and quads
+     * ({@code quads}), then the band pass, done at {@code end}, which ends the frame; the band pass drew
+     * the lines and the quads as its lists after the triangles (0, 1).
      */
     FrameStats bands(BandPass.Result result, long end, boolean borders, LineGeometry.Result lines, long segmentsIn,
-                     QuadPass.Result quads) {
-        // Filling, outlining and drawing lines run interleaved on all threads, so none has a wall time
-        // of its own: the band pass's wall time is shared out in proportion to the time the threads
-        // spent on each, an estimate that FrameStats names as such.
-        long bandsWall = end - geometryDone - lines.nanos();
-        long work = result.fillNanos() + result.overlayNanos() + result.lineNanos();
+                     QuadGeometry.Result quads) {
+        // Filling, outlining and drawing lines and quads run interleaved on all threads, so none has a
+        // wall time of its own: the band pass's wall time is shared out in proportion to the time the
+        // threads spent on each, an estimate that FrameStats names as such.
+        long bandsWall = end - geometryDone - lines.nanos() - quads.nanos();
+        long lineCpu = after(result.afterNanos(), 0);
+        long quadCpu = after(result.afterNanos(), 1);
+        long work = result.fillNanos() + result.overlayNanos() + lineCpu + quadCpu;
         long overlay = !borders || work == 0 ? 0
                 : Math.round(bandsWall * (double) result.overlayNanos() / work);
-        long lineShare = work == 0 ? 0 : Math.round(bandsWall * (double) result.lineNanos() / work);
+        long lineShare = work == 0 ? 0 : Math.round(bandsWall * (double) lineCpu / work);
+        long quadShare = work == 0 ? 0 : Math.round(bandsWall * (double) quadCpu / work);
         long transformed = start + transformNanos;
         long geometryWall = geometryDone - transformed;
         long cpu = clipCpu + tessellateCpu;
         long clipWall = cpu == 0 ? 0 : Math.round(geometryWall * (double) clipCpu / cpu);
         return new FrameStats(triangles, back, frustum, degenerate, invalid, clipped, pieces, offScreen, splits,
                 deepest, caps, fallback, pieceBudget, budgetDepth, result.pixels(), threads, transformed - start,
-                clipWall, geometryWall - clipWall, bandsWall - overlay - lineShare, overlay,
-                borders || lines.segments() > 0, end + quads.nanos() - start, segmentsIn, lines.segments(),
-                result.linePixels(), lines.nanos() + lineShare, quads.billboards(), quads.glyphs(), quads.pixels(),
-                quads.nanos());
+                clipWall, geometryWall - clipWall, bandsWall - overlay - lineShare - quadShare, overlay,
+                borders || lines.segments() > 0 || quadCpu > 0, end - start, segmentsIn, lines.segments(),
+                after(result.afterPixels(), 0), lines.nanos() + lineShare, quads.billboards(), quads.glyphs(),
+                after(result.afterPixels(), 1), quads.nanos() + quadShare);
+    }
+
+    /** Entry {@code i} of a band pass's per-list figures, 0 when it drew fewer lists. */
+    private static long after(long[] perList, int i) {
+        return i < perList.length ? perList[i] : 0;
     }
 }

@@ -7,15 +7,14 @@ import dev.trisect.texture.Texture;
  * Draws one band's commands of a {@link Commands} list, in the list's order, each by the loop of its
  * kind ({@code lp_rast}'s dispatch of a bin's commands): a {@link Commands#TRIANGLE TRIANGLE} by the
  * {@link Rasterizer}'s loop of the frame's path and filter, a {@link Commands#TREE TREE} by its
- * one-pass fill, a {@link Commands#LINE LINE} by {@link LineRaster}. The kind is read once per
+ * one-pass fill, a {@link Commands#LINE LINE} by {@link LineRaster}, a {@link Commands#QUAD QUAD} by
+ * {@link QuadRaster#rows}. The kind is read once per
  * command; every loop below is the same whatever the list holds.
  *
  * <p>One instance per thread: its rasterizer holds the triangle being filled.
  */
 public final class BandFill {
     private final Rasterizer rasterizer = new Rasterizer();
-    /** Pixels the lines of the last {@link #fill} wrote. */
-    private long linePixels;
 
     /** The rasterizer of this thread's triangles: set its filter and span error before filling. */
     public Rasterizer rasterizer() {
@@ -29,32 +28,24 @@ public final class BandFill {
      * @param textures    texture of each material index
      * @param perspective whether screen triangles divide per pixel (or per knot), as
      *                    {@link Rasterizer#fill}'s
-     * @return the number of pixels the triangles and trees wrote (depth test passed); the lines'
-     *         are {@link #linePixels()}
+     * @return the number of pixels written (depth test passed; blended quads count too)
      */
     public long fill(Framebuffer frame, Commands list, int band, Texture[] textures, boolean perspective,
                      int x0, int y0, int x1, int y1) {
         int[] items = list.bins().items();
         long written = 0;
-        long lines = 0;
         for (int k = list.bins().start(band), end = list.bins().start(band + 1); k < end; k++) {
             int command = list.command(items[k]);
             int ref = Commands.ref(command);
-            switch (Commands.kind(command)) {
-                case Commands.TRIANGLE -> written += rasterizer.fillOne(frame, list.triangles(), ref, textures,
-                        perspective, x0, y0, x1, y1);
-                case Commands.TREE -> written += rasterizer.fillTree(frame, list.trees(), ref, textures, x0, y0, x1,
-                        y1);
-                default -> lines += LineRaster.rows(list.segments(), ref, frame.colour(), frame.depth(), y0, y1);
-            }
+            written += switch (Commands.kind(command)) {
+                case Commands.TRIANGLE -> rasterizer.fillOne(frame, list.triangles(), ref, textures, perspective,
+                        x0, y0, x1, y1);
+                case Commands.TREE -> rasterizer.fillTree(frame, list.trees(), ref, textures, x0, y0, x1, y1);
+                case Commands.LINE -> LineRaster.rows(list.segments(), ref, frame.colour(), frame.depth(), y0, y1);
+                default -> list.quads().rows(ref, frame.colour(), frame.depth(), y0, y1);
+            };
         }
-        linePixels = lines;
         return written;
-    }
-
-    /** The pixels the lines of the last {@link #fill} wrote (not in what it returned). */
-    public long linePixels() {
-        return linePixels;
     }
 
     /**

@@ -18,6 +18,8 @@ import java.util.Arrays;
  * <td>{@link SplitTrees#add}</td><td>{@link Rasterizer}'s one-pass fill ({@link TreeFill})</td></tr>
  * <tr><td>{@link #LINE}</td><td>a screen segment of {@link #segments()}</td>
  * <td>{@link LineSetup}</td><td>{@link LineRaster}</td></tr>
+ * <tr><td>{@link #QUAD}</td><td>a screen-aligned textured rectangle of {@link #quads()}</td>
+ * <td>{@link QuadRaster#add}, {@link QuadRaster#setUp}</td><td>{@link QuadRaster#rows}</td></tr>
  * </table>
  *
  * <p>Order: within every band the commands are drawn in the order they were added, whatever their
@@ -37,6 +39,8 @@ public final class Commands {
     public static final int TREE = 1;
     /** A screen segment: an OpenGL line, depth-tested. */
     public static final int LINE = 2;
+    /** A screen-aligned textured rectangle at one depth: a billboard, a glyph, a backdrop. */
+    public static final int QUAD = 3;
     /** A command's kind sits in its bits from this one up, its reference below. */
     private static final int KIND_SHIFT = 28;
     /** The largest reference a command holds. */
@@ -45,6 +49,7 @@ public final class Commands {
     private ScreenTriangles triangles;
     private SplitTrees trees;
     private Segments segments;
+    private QuadRaster quads;
     private int[] commands = new int[1024];
     /** Per command, the first row it may light and the row after its last (unclipped). */
     private int[] rows = new int[2 * 1024];
@@ -60,6 +65,12 @@ public final class Commands {
     /** Sets the store of {@link #TREE} commands; returns this list. */
     public Commands trees(SplitTrees store) {
         trees = store;
+        return this;
+    }
+
+    /** Sets the store of {@link #QUAD} commands; returns this list. */
+    public Commands quads(QuadRaster store) {
+        quads = store;
         return this;
     }
 
@@ -101,7 +112,7 @@ public final class Commands {
         return commands[i];
     }
 
-    /** The kind of {@code command}: {@link #TRIANGLE}, {@link #TREE} or {@link #LINE}. */
+    /** The kind of {@code command}: {@link #TRIANGLE}, {@link #TREE}, {@link #LINE} or {@link #QUAD}. */
     public static int kind(int command) {
         return command >>> KIND_SHIFT;
     }
@@ -142,6 +153,11 @@ public final class Commands {
     /** The store of {@link #TREE} commands (null for a list without). */
     public SplitTrees trees() {
         return trees;
+    }
+
+    /** The store of {@link #QUAD} commands (null for a list without). */
+    public QuadRaster quads() {
+        return quads;
     }
 
     /** The store of {@link #LINE} commands (null for a list without). */

@@ -3,9 +3,10 @@ package dev.trisect.raster;
 import java.util.Arrays;
 
 /**
- * Screen-aligned textured rectangles — billboards, the glyphs of labels and of screen text, the
- * backdrops behind them — set up once per frame ({@link #add}) and drawn band by band
- * ({@link #drawBand}) over what the frame holds, in the order added.
+ * The {@link Commands#QUAD QUAD} commands' store, setup and loop: screen-aligned textured rectangles —
+ * billboards, the glyphs of labels and of screen text, the backdrops behind them — added once per
+ * frame ({@link #add}), set up for the frame ({@link #setUp}: the columns and rows each covers), listed
+ * as commands in the order added and drawn band by band ({@link #rows}) over what the frame holds.
  *
  * <p>A quad is a rectangle of screen space (pixels, y down) at one depth: a surface parallel to the
  * image plane has the same 1/w at every point, so its texture maps affinely onto the rectangle and
@@ -29,7 +30,7 @@ import java.util.Arrays;
  * With {@link #TINT} the texel gives only alpha and the quad's tint the colour (glyphs: one atlas, any
  * colour). The frame's alpha stays 255.
  *
- * <p>Not thread-safe to set up; {@link #drawBand} may run on many threads at once over distinct bands.
+ * <p>Not thread-safe to set up; {@link #rows} may run on many threads at once over distinct rows.
  */
 public final class QuadRaster {
     /** Mode: alpha-tested, depth-tested and depth-writing. */
@@ -57,14 +58,11 @@ public final class QuadRaster {
     private int[][] textures = new int[64][];
     private int count;
     private final int[] kinds = new int[3];
-    /** Per quad, the frame columns and rows it covers, set by {@link #bin}. */
+    /** Per quad, the frame columns and rows it covers (first and last), set by {@link #setUp}. */
     private int[] bounds = new int[4 * 64];
-    /** Per quad, set by {@link #bin}: the texel column at its first column's centre and per pixel, 32.32. */
+    /** Per quad, set by {@link #setUp}: the texel column at its first column's centre and per pixel, 32.32. */
     private long[] steps = new long[2 * 64];
-    private final BandBins bins = new BandBins();
-    private int binRows = 1;
     private int width;
-    private int height;
 
     /** Forgets every quad. */
     public void clear() {
@@ -134,20 +132,17 @@ public final class QuadRaster {
     }
 
     /**
-     * Sorts the quads into bands of {@code bandRows} rows of a {@code width x height} frame (keeping
-     * their order), for {@link #drawBand}.
+     * Sets the quads up for a {@code width x height} frame: the columns and rows whose pixel centres
+     * each covers, within the frame (see {@link #firstRow}, {@link #lastRow}).
      *
      * @return quads that cover a pixel of the frame
      */
-    public int bin(int width, int height, int bandRows) {
+    public int setUp(int width, int height) {
         this.width = width;
-        this.height = height;
-        this.binRows = bandRows;
         if (bounds.length < 4 * count) {
             bounds = new int[4 * Math.max(count, bounds.length)];
             steps = new long[bounds.length / 2];
         }
-        bins.prepare(count);
         int shown = 0;
         for (int s = 0; s < count; s++) {
             int d = DSTRIDE * s;
@@ -157,7 +152,9 @@ public final class QuadRaster {
             double y0 = Math.max(0, Math.ceil(doubles[d + 1] - 0.5));
             double y1 = Math.min(height - 1, Math.ceil(doubles[d + 3] - 0.5) - 1);
             if (x0 > x1 || y0 > y1) {
-                bins.none(s);
+                // Covers nothing: an empty range of rows.
+                bounds[4 * s + 2] = 1;
+                bounds[4 * s + 3] = 0;
                 continue;
             }
             bounds[4 * s] = (int) x0;
@@ -169,34 +166,41 @@ public final class QuadRaster {
             double sPerPixel = ints[ISTRIDE * s + 2] / (doubles[d + 2] - doubles[d]);
             steps[2 * s] = (long) Math.floor((x0 + 0.5 - doubles[d]) * sPerPixel * 0x1p32);
             steps[2 * s + 1] = (long) Math.floor(sPerPixel * 0x1p32);
-            bins.rows(s, (int) y0, (int) y1, bandRows);
             shown++;
         }
-        bins.build(count, BandBins.bandCount(height, bandRows));
         return shown;
     }
 
+    /** Quad {@code s}'s first frame row, as {@link #setUp} found it (above {@link #lastRow} when it covers none). */
+    public int firstRow(int s) {
+        return bounds[4 * s + 2];
+    }
+
+    /** Quad {@code s}'s last frame row, inclusive. */
+    public int lastRow(int s) {
+        return bounds[4 * s + 3];
+    }
+
     /**
-     * Draws the quads of band {@code b} (as {@link #bin} sorted them), in order, into its rows.
+     * Draws quad {@code s} (set up) into its rows within {@code [y0, y1)}: the loop of a
+     * {@link Commands#QUAD} command.
      *
      * @param colour the frame's colours, ARGB, row 0 at the top
      * @param depths the frame's 1/w
-     * @return pixels written
+     * @return pixels written (or blended)
      */
-    public long drawBand(int[] colour, float[] depths, int b) {
-        int y0 = b * binRows;
-        int y1 = Math.min(height, y0 + binRows) - 1;
-        int[] items = bins.items();
+    public long rows(int s, int[] colour, float[] depths, int y0, int y1) {
+        int from = Math.max(y0, bounds[4 * s + 2]);
+        int to = Math.min(y1 - 1, bounds[4 * s + 3]);
         long written = 0;
-        for (int k = bins.start(b), end = bins.start(b + 1); k < end; k++) {
-            int s = items[k];
-            written += rows(s, Math.max(y0, bounds[4 * s + 2]), Math.min(y1, bounds[4 * s + 3]), colour, depths);
+        if (from <= to) {
+            written += span(s, from, to, colour, depths);
         }
         return written;
     }
 
     /** Rows {@code from..to} of quad s. */
-    private int rows(int s, int from, int to, int[] colour, float[] depths) {
+    private int span(int s, int from, int to, int[] colour, float[] depths) {
         int i = ISTRIDE * s;
         int d = DSTRIDE * s;
         int mode = ints[i];

@@ -7,8 +7,8 @@ import dev.trisect.base.internal.JsonObject;
  * What one frame did. Times are wall-clock nanoseconds. The transform and the whole frame are
  * measured; clipping and tessellation run interleaved on all threads, so the geometry stage's wall
  * time is shared between them in proportion to the time the threads spent on each. With the borders
- * on or lines drawn, filling, outlining and drawing lines also run interleaved (each band is outlined
- * and its lines drawn right after it is filled), so {@code rasterNanos} and {@code overlayNanos} are
+ * on or lines or quads drawn, filling, outlining and drawing lines and quads also run interleaved
+ * (each band is outlined and its lines and quads drawn right after it is filled), so {@code rasterNanos} and {@code overlayNanos} are
  * then an estimate of the same kind, flagged by {@code bandTimesEstimated} and named
  * {@code ..._estimate} in {@link #toJson()}; without borders and lines the raster time is the measured
  * wall time of the fill and the overlay's is 0. (The developer tools
@@ -56,7 +56,8 @@ import dev.trisect.base.internal.JsonObject;
  * @param glyphs           glyphs of labels and screen text in the frame, likewise
  * @param quadPixels       pixels the billboards, glyphs and text backdrops wrote (or blended); not in
  *                         {@code pixelsWritten}
- * @param quadNanos        the quad pass (after the fill), measured; 0 without quads
+ * @param quadNanos        the quads: their set-up before the fill, measured, and their share of the
+ *                         band pass's wall time (an estimate, as the lines'); 0 without quads
  */
 public record FrameStats(long trianglesIn, long culledBackFace, long culledFrustum, long culledDegenerate,
                          long skippedInvalid, long clipped, long pieces, long piecesOffScreen, long splits,

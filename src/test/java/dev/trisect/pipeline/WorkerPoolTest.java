@@ -30,7 +30,7 @@ import org.junit.jupiter.api.Timeout;
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
 class WorkerPoolTest {
     /** A frame without lines. */
-    private static final Commands NO_LINES = new Commands();
+    private static final Commands[] NO_LINES = {};
     /** The pool's helper threads, found by name. */
     private static List<Thread> helpers(String name) {
         List<Thread> found = new ArrayList<>();

@@ -10,10 +10,18 @@ class QuadRasterTest {
     private static final int W = 8;
     private static final int H = 4;
 
+    /** Draws the quads as the frame does: QUAD commands in the order added, band by band. */
     private static int[] draw(QuadRaster quads, int[] colour, float[] depth) {
-        quads.bin(W, H, 2);
+        quads.setUp(W, H);
+        Commands list = new Commands().quads(quads);
+        for (int s = 0; s < quads.count(); s++) {
+            list.add(Commands.QUAD, s, quads.firstRow(s), quads.lastRow(s) + 1);
+        }
+        list.bin(H, 2);
         for (int b = 0; b < 2; b++) {
-            quads.drawBand(colour, depth, b);
+            for (int k = list.bins().start(b); k < list.bins().start(b + 1); k++) {
+                quads.rows(Commands.ref(list.command(list.bins().items()[k])), colour, depth, 2 * b, 2 * b + 2);
+            }
         }
         return colour;
     }
