@@ -72,68 +72,111 @@ public final class LineRaster {
      * @return pixels written
      */
     public static long rows(Segments segments, int s, int[] color, float[] depths, int y0, int y1) {
-        long written = 0;
-        int i = ISTRIDE * s;
-        int from = Math.max(y0, segments.ints[i + 2]);
-        int to = Math.min(y1 - 1, segments.ints[i + 3]);
-        for (int y = from; y <= to; y++) {
-            written += row(segments, s, y, color, depths);
-        }
-        return written;
-    }
-
-
-    /** One row of segment s: its columns solved exactly from its slanted edges, then the depth test. */
-    private static int row(Segments segments, int s, int y, int[] color, float[] depths) {
         int[] ints = segments.ints;
         long[] planes = segments.planes;
-        double[] depth = segments.depth;
-        int width = segments.width();
-        int height = segments.height();
         int i = ISTRIDE * s;
-        long lo = ints[i];
-        long hi = ints[i + 1];
-        long gy = (long) (height - 1 - y) * FIXED_ONE;
-        int l = LSTRIDE * s;
-        int varying = ints[i + 5] >> 1;
-        for (int e = 0; e < varying; e++) {
-            long a = planes[l + 3 * e + 1] * FIXED_ONE;
-            long c = planes[l + 3 * e] + planes[l + 3 * e + 2] * gy;
-            // Inside: c - a * col >= 1 (a is not 0 for a slanted edge).
-            if (a > 0) {
-                hi = Math.min(hi, floorDiv(c - 1, a));
-            } else {
-                lo = Math.max(lo, -floorDiv(1 - c, a));
-            }
-        }
-        if (lo > hi) {
+        int from = Math.max(y0, ints[i + 2]);
+        int to = Math.min(y1 - 1, ints[i + 3]);
+        if (from > to) {
             return 0;
         }
+        int width = segments.width();
+        int height = segments.height();
+        int l = LSTRIDE * s;
+        int slanted = ints[i + 5] >> 1;
+        // Each slanted edge bounds the columns by Q = floor((c - 1) / |a|) (a > 0: col <= Q; a < 0:
+        // col >= -Q), c = c0 + dcdy * gy falling by dcdy * 256 a row: Q is stepped exactly from row to
+        // row (quotient and remainder, as a DDA), one division per edge for the first row.
+        long q0 = 0;
+        long r0 = 0;
+        long a0 = 1;
+        long bq0 = 0;
+        long br0 = 0;
+        long q1 = 0;
+        long r1 = 0;
+        long a1 = 1;
+        long bq1 = 0;
+        long br1 = 0;
+        long gy = (long) (height - 1 - from) * FIXED_ONE;
+        if (slanted > 0) {
+            a0 = Math.abs(planes[l + 1] * FIXED_ONE);
+            long n = planes[l] + planes[l + 2] * gy - 1;
+            q0 = floorDiv(n, a0);
+            r0 = n - q0 * a0;
+            long b = planes[l + 2] * FIXED_ONE;
+            bq0 = floorDiv(b, a0);
+            br0 = b - bq0 * a0;
+        }
+        if (slanted > 1) {
+            a1 = Math.abs(planes[l + 4] * FIXED_ONE);
+            long n = planes[l + 3] + planes[l + 5] * gy - 1;
+            q1 = floorDiv(n, a1);
+            r1 = n - q1 * a1;
+            long b = planes[l + 5] * FIXED_ONE;
+            bq1 = floorDiv(b, a1);
+            br1 = b - bq1 * a1;
+        }
+        boolean right0 = slanted > 0 && planes[l + 1] > 0;
+        boolean right1 = slanted > 1 && planes[l + 4] > 0;
         int d = DSTRIDE * s;
+        double[] depth = segments.depth;
         double origin = depth[d];
-        double q0 = depth[d + 1];
+        double qStart = depth[d + 1];
         double step = depth[d + 2];
         int rgb = ints[i + 4];
-        int base = y * width;
-        int written = 0;
-        if ((ints[i + 5] & 1) == 1) {
-            for (int x = (int) lo; x <= hi; x++) {
-                float q = (float) (q0 + (x + 0.5 - origin) * step);
-                int at = base + x;
-                if (q >= depths[at]) {
-                    depths[at] = q;
-                    color[at] = rgb;
-                    written++;
+        boolean xMajor = (ints[i + 5] & 1) == 1;
+        long written = 0;
+        for (int y = from; y <= to; y++) {
+            long lo = ints[i];
+            long hi = ints[i + 1];
+            if (slanted > 0) {
+                if (right0) {
+                    hi = Math.min(hi, q0);
+                } else {
+                    lo = Math.max(lo, -q0);
+                }
+                q0 -= bq0;
+                r0 -= br0;
+                if (r0 < 0) {
+                    r0 += a0;
+                    q0--;
                 }
             }
-        } else {
-            float q = (float) (q0 + (height - y - 0.5 - origin) * step);
-            for (int x = (int) lo; x <= hi; x++) {
-                int at = base + x;
-                if (q >= depths[at]) {
-                    depths[at] = q;
-                    color[at] = rgb;
-                    written++;
+            if (slanted > 1) {
+                if (right1) {
+                    hi = Math.min(hi, q1);
+                } else {
+                    lo = Math.max(lo, -q1);
+                }
+                q1 -= bq1;
+                r1 -= br1;
+                if (r1 < 0) {
+                    r1 += a1;
+                    q1--;
+                }
+            }
+            if (lo > hi) {
+                continue;
+            }
+            int base = y * width;
+            if (xMajor) {
+                for (int x = (int) lo; x <= hi; x++) {
+                    float q = (float) (qStart + (x + 0.5 - origin) * step);
+                    int at = base + x;
+                    if (q >= depths[at]) {
+                        depths[at] = q;
+                        color[at] = rgb;
+                        written++;
+                    }
+                }
+            } else {
+                float q = (float) (qStart + (height - y - 0.5 - origin) * step);
+                for (int at = base + (int) lo, end = base + (int) hi; at <= end; at++) {
+                    if (q >= depths[at]) {
+                        depths[at] = q;
+                        color[at] = rgb;
+                        written++;
+                    }
                 }
             }
         }
