@@ -84,18 +84,7 @@ public final class Billboard {
             throw new IllegalArgumentException("billboard size must be positive and finite, got " + width + " x "
                     + height);
         }
-        return new Billboard(texture, at, width, height, pixels, false, partialAlpha(texture.argb()));
-    }
-
-    /** Whether any texel's alpha is neither 0 nor 255. */
-    static boolean partialAlpha(int[] argb) {
-        for (int texel : argb) {
-            int a = texel >>> 24;
-            if (a != 0 && a != 255) {
-                return true;
-            }
-        }
-        return false;
+        return new Billboard(texture, at, width, height, pixels, false, texture.alpha() == Texture.Alpha.PARTIAL);
     }
 
     /**

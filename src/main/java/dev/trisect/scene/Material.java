@@ -65,6 +65,63 @@ public final class Material {
         return rgb;
     }
 
+    /**
+     * How a surface of this material is written, from its texture's alpha ({@link Texture#alpha()}):
+     * {@link AlphaMode#OPAQUE} when every alpha is 255, {@link AlphaMode#ALPHA_TEST} when every alpha is 0
+     * or 255 (a cut-out), {@link AlphaMode#BLEND} otherwise (see {@link #withOpacity}).
+     *
+     * @return the mode
+     */
+    public AlphaMode alphaMode() {
+        return switch (texture.alpha()) {
+            case OPAQUE -> AlphaMode.OPAQUE;
+            case BINARY -> AlphaMode.ALPHA_TEST;
+            case PARTIAL -> AlphaMode.BLEND;
+        };
+    }
+
+    /**
+     * How a surface is written, as OpenGL's fixed function writes it (docs/conventions.md, "Transparency").
+     */
+    public enum AlphaMode {
+        /** Depth and colour written wherever the surface is nearest; alpha ignored. */
+        OPAQUE,
+        /**
+         * Drawn only where the texel's alpha is at least 0.5 ({@code GL_ALPHA_TEST}, {@code GL_GEQUAL 0.5}),
+         * then as opaque: cut-outs such as leaves and fences, in any order.
+         */
+        ALPHA_TEST,
+        /**
+         * Blended over what is behind it, {@code src·a + dst·(1 − a)} by the texel's alpha, depth-tested but
+         * not writing depth; objects with such a material are drawn after the others, farthest first.
+         */
+        BLEND
+    }
+
+    /**
+     * This material seen through: its texture's alpha multiplied by {@code opacity} (rounded to the
+     * nearest of 0..255), so that below 1 it is blended ({@link AlphaMode#BLEND}).
+     *
+     * @param opacity 0 (invisible) to 1 (as it is)
+     * @return a material of the scaled texture
+     * @throws IllegalArgumentException when {@code opacity} is outside 0..1
+     */
+    public Material withOpacity(double opacity) {
+        if (!(opacity >= 0 && opacity <= 1)) {
+            throw new IllegalArgumentException("opacity must be between 0 and 1, got " + opacity);
+        }
+        if (opacity == 1) {
+            return this;
+        }
+        int[] argb = texture.argb().clone();
+        for (int i = 0; i < argb.length; i++) {
+            int a = (int) Math.round((argb[i] >>> 24) * opacity);
+            argb[i] = a << 24 | (argb[i] & 0xFFFFFF);
+        }
+        String name = texture.name() + String.format(java.util.Locale.ROOT, " at opacity %.3f", opacity);
+        return new Material(new Texture(name, texture.width(), texture.height(), argb), rgb);
+    }
+
     @Override
     public String toString() {
         return "Material(" + texture.name() + ")";

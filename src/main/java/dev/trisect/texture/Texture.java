@@ -26,6 +26,18 @@ public final class Texture {
     private final int height;
     private final int[] argb;
     private final MipChain mipChain;
+    /** {@link #alpha()}, found on first use; null before. */
+    private volatile Alpha alpha;
+
+    /** What a texture's alpha holds, which decides how a surface showing it is written. */
+    public enum Alpha {
+        /** Every texel's alpha is 255. */
+        OPAQUE,
+        /** Every texel's alpha is 0 or 255, not all 255: a cut-out, drawn where alpha is at least 0.5. */
+        BINARY,
+        /** Some texel's alpha is neither 0 nor 255: blended by alpha. */
+        PARTIAL
+    }
 
     /**
      * @param name   where the texture came from (a file name or a procedural name), for messages
@@ -120,6 +132,31 @@ public final class Texture {
      */
     public int[] argb() {
         return argb;
+    }
+
+    /**
+     * What the texels' alpha holds: all opaque, only 0 or 255, or partial. Found by one look at every
+     * texel on the first call, then kept (the texels must not change: see the constructor).
+     *
+     * @return the texture's kind of alpha
+     */
+    public Alpha alpha() {
+        Alpha a = alpha;
+        if (a == null) {
+            a = Alpha.OPAQUE;
+            for (int texel : argb) {
+                int v = texel >>> 24;
+                if (v != 255) {
+                    if (v != 0) {
+                        a = Alpha.PARTIAL;
+                        break;
+                    }
+                    a = Alpha.BINARY;
+                }
+            }
+            alpha = a;
+        }
+        return a;
     }
 
     /**

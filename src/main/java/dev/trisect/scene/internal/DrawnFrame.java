@@ -48,14 +48,15 @@ public final class DrawnFrame {
      * As {@link #DrawnFrame(List, Camera, int, int, Draws)}, fogged by {@code fog} (null for none).
      */
     public DrawnFrame(List<Scene.Placed> placed, Fog fog, Camera camera, int width, int height, Draws draws) {
-        this.placed = placed;
         this.camera = camera;
         this.width = width;
         this.height = height;
         this.draws = draws;
         Mat4 viewProjection = camera.viewProjection(new Viewport(width, height));
+        // Draw k is object k of this order: blended objects last, farthest first.
+        this.placed = BlendOrder.order(placed, viewProjection);
         draws.clear();
-        for (Scene.Placed o : placed) {
+        for (Scene.Placed o : this.placed) {
             List<Material> materials = o.materials();
             Texture[] textures = new Texture[materials.size()];
             for (int i = 0; i < textures.length; i++) {
@@ -63,7 +64,11 @@ public final class DrawnFrame {
             }
             Mat4 mvp = viewProjection.mul(o.world());
             // One draw per object, so that draw k is object k: an object drawn as wire alone draws no triangles.
-            draws.add(o.filled() ? o.mesh() : NO_TRIANGLES, o.filled() ? textures : NO_TEXTURES, mvp);
+            if (o.filled()) {
+                draws.add(o.mesh(), textures, BlendOrder.states(materials), mvp);
+            } else {
+                draws.add(NO_TRIANGLES, NO_TEXTURES, mvp);
+            }
             if (!o.lines().isEmpty()) {
                 draws.addLines(o.lines(), mvp, o.lineWidth());
             }
@@ -72,7 +77,7 @@ public final class DrawnFrame {
             }
         }
         draws.setFog(fog);
-        sprites = new Sprites(placed, viewProjection, camera, width, height, draws.quads());
+        sprites = new Sprites(this.placed, viewProjection, camera, width, height, draws.quads());
     }
 
     /**
