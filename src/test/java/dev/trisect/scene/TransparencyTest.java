@@ -11,6 +11,7 @@ import dev.trisect.render.Framebuffer;
 import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.texture.Texture;
+import dev.trisect.texture.TextureFilter;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 
@@ -45,12 +46,16 @@ class TransparencyTest {
                 scene.add(o);
             }
             for (RenderMode mode : RenderMode.values()) {
-                Framebuffer f = new Framebuffer(W, H);
-                try (SceneRenderer r = new SceneRenderer(1)) {
-                    r.render(scene, Camera.looking(new Vec3(0, 0, 6), Vec3.ZERO), RenderSettings.defaults().withMode(mode), f);
+                for (TextureFilter filter : TextureFilter.values()) {
+                    Framebuffer f = new Framebuffer(W, H);
+                    try (SceneRenderer r = new SceneRenderer(1)) {
+                        r.render(scene, Camera.looking(new Vec3(0, 0, 6), Vec3.ZERO),
+                                RenderSettings.defaults().withMode(mode).withFilter(filter), f);
+                    }
+                    // Blue over black: 128/255 of 255 = 128; then red over that: 128 red, blue 127/255 of 128 = 64.
+                    assertEquals(0xFF800040, f.colour()[H / 2 * W + W / 2], mode + ", " + filter
+                            + ", near object first: " + nearFirst);
                 }
-                // Blue over black: 128/255 of 255 = 128; then red over that: 128 red, blue 127/255 of 128 = 64.
-                assertEquals(0xFF800040, f.colour()[H / 2 * W + W / 2], mode + ", near object first: " + nearFirst);
             }
         }
     }
