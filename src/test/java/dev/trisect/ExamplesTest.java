@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.examples.HeadlessRender;
 import dev.trisect.examples.PickPixels;
+import dev.trisect.examples.TransparentPane;
 import dev.trisect.examples.WireframeAxes;
 import dev.trisect.render.RenderSettings;
 import java.awt.image.BufferedImage;
@@ -44,7 +45,9 @@ class ExamplesTest {
         Path png = dir.resolve("wire.png");
         WireframeAxes.main(new String[] {png.toString()});
         BufferedImage image = ImageIO.read(png.toFile());
-        int[] wanted = {0xFF0000, 0x00FF00, 0x0000FF, 0x606060, 0xFF40FF, 0xFFC040, 0x40C0FF};
+        // The axes, grid, ball's wire, box's wire and wire box; then the axes' labels.
+        int[] wanted = {0xFF0000, 0x00FF00, 0x0000FF, 0x606060, 0xFF40FF, 0xFFC040, 0x40C0FF, 0xFF4040, 0x40FF40,
+            0x4080FF};
         int[] found = new int[wanted.length];
         for (int y = 0; y < image.getHeight(); y++) {
             for (int x = 0; x < image.getWidth(); x++) {
@@ -56,6 +59,14 @@ class ExamplesTest {
         for (int i = 0; i < wanted.length; i++) {
             assertTrue(found[i] > 20, Integer.toHexString(wanted[i]) + ": " + found[i] + " pixels");
         }
+    }
+
+    @Test
+    void transparentPaneWritesItsImage(@TempDir Path dir) throws Exception {
+        Path png = dir.resolve("pane.png");
+        TransparentPane.main(new String[] {png.toString()});
+        BufferedImage image = ImageIO.read(png.toFile());
+        assertTrue(image.getWidth() == 640 && image.getHeight() == 400, image.toString());
     }
 
     @Test
