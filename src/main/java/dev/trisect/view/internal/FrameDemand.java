@@ -72,9 +72,20 @@ public final class FrameDemand {
         return !drawn.equals(seen(state, size));
     }
 
+    /**
+     * The cap in force, frames per second (0 for none): the view's, raised under a frame-time target to
+     * the target's rate, so that a 10 ms target can show 100 fps where the screen's 60 Hz cap held it
+     * at 60 and Auto could never meet it.
+     */
+    static double cap(ViewState state) {
+        double cap = state.maxFrameRate();
+        ViewState.Budget b = state.budget();
+        return cap > 0 && b.on() ? Math.max(cap, 1000 / b.targetMs()) : cap;
+    }
+
     /** Render thread: waits until the cap allows the next frame to start (at once when it is off). */
     void pace(ViewState state, RenderLoop loop) {
-        double cap = state.maxFrameRate();
+        double cap = cap(state);
         if (!started || cap <= 0) {
             return;
         }

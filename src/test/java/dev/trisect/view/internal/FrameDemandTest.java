@@ -136,4 +136,18 @@ class FrameDemandTest {
             t.join(5000);
         }
     }
+
+    @Test
+    void aFrameTimeTargetRaisesTheCapToItsRate() {
+        ViewState state = new ViewState(dev.trisect.content.DemoScenes.floor());
+        state.maxFrameRate(60);
+        assertEquals(60, FrameDemand.cap(state), 0.0);
+        // Auto at 10 ms under the screen's 60 Hz cap could never show the 100 fps it aims for.
+        state.budget(new ViewState.Budget(true, 10));
+        assertEquals(100, FrameDemand.cap(state), 1e-9);
+        state.budget(new ViewState.Budget(true, 40));
+        assertEquals(60, FrameDemand.cap(state), 0.0, "a slower target keeps the cap");
+        state.maxFrameRate(0);
+        assertEquals(0, FrameDemand.cap(state), 0.0, "no cap stays none");
+    }
 }
