@@ -15,7 +15,10 @@ final class PaceText {
     private PaceText() {
     }
 
-    /** How long without a new frame before the status bar says the view idles, nanoseconds. */
+    /**
+     * How long without a new frame before the status bar says the view idles, nanoseconds; at least three
+     * times the last frame's time, so that frames slower than this (a loaded machine) are not "idle".
+     */
     static final long IDLE_NANOS = 700_000_000L;
 
     /**
@@ -36,7 +39,8 @@ final class PaceText {
         String rate;
         if (frozen) {
             rate = "FROZEN at frame " + latest.number();
-        } else if (sinceNanos >= IDLE_NANOS) {
+        } else if (sinceNanos >= Math.max(IDLE_NANOS, 3e6 * latest.frameMillis())) {
+            // No frame for a while, and longer than slow frames take to come: nothing is being drawn.
             rate = String.format(Locale.ROOT, "idle, last frame %.1f ms", latest.frameMillis());
         } else if (latest.framesPerSecond() <= 0) {
             // Frames are coming, but not yet for a whole second: their time, not a rate of 0.
