@@ -239,10 +239,7 @@ final class BenchCommand extends SceneCommand {
             try (InterruptNotice notice = new InterruptNotice(common.err(), progress,
                     modes.size() + (glref == null ? 0 : 1), "path")) {
                 Results.print(common.out(), lines);
-                Draws draws = light.draws(scene.mesh(), textures, vp);
-                if (!scene.lines().isEmpty()) {
-                    draws.addLines(scene.lines(), vp, lineWidth);
-                }
+                Draws draws = light.draws(scene, textures, vp, lineWidth);
                 FrameBench bench = new FrameBench(renderer, draws, Frames.allocate(frame.size));
                 // With lines, every path is also timed without them, frame by frame in turn: the
                 // difference of the medians is what the lines cost, measured alike for glref below.

@@ -1,24 +1,69 @@
 package dev.trisect.cli;
 
+import dev.trisect.base.InputException;
+import dev.trisect.content.SceneAsset;
+import dev.trisect.light.Lights;
+import dev.trisect.light.Surface;
 import dev.trisect.math.Mat4;
+import dev.trisect.math.Vec3;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.pipeline.Draws;
 import dev.trisect.render.Colour;
 import dev.trisect.render.Fog;
+import dev.trisect.render.Shading;
 import dev.trisect.texture.Texture;
+import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
 import picocli.CommandLine.ITypeConverter;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 import picocli.CommandLine.TypeConversionException;
 
 /**
- * Fog, as the OpenGL reference takes it (glref's {@code GLREF_FOG*} variables). Shared by render,
- * compare, bench and export.
+ * Light and fog, as the OpenGL reference takes them (glref's {@code GLREF_*} variables): one
+ * directional light, one point light, the scene's ambient colour, the shading of every material, and
+ * fog. Shared by render, compare, bench and export.
  */
 final class LightOptions {
+    /** OpenGL's default scene ambient ({@code GL_LIGHT_MODEL_AMBIENT}), and glref's. */
+    static final double DEFAULT_AMBIENT = 0.2;
+
+    @Spec(Spec.Target.MIXEE)
+    CommandSpec spec;
+
+    @Option(names = "--light", paramLabel = "dx,dy,dz", converter = Converters.Vec3Converter.class,
+            description = "A directional light shining from this world-space direction (lights every material; "
+                    + "see --shade).")
+    Vec3 light;
+
+    @Option(names = "--light-colour", paramLabel = "r,g,b", converter = ColourTriple.class,
+            description = "The directional light's colour, 0..1 per channel (default: 1,1,1).")
+    Colour lightColour;
+
+    @Option(names = "--point", paramLabel = "x,y,z", converter = Converters.Vec3Converter.class,
+            description = "A point light at this world-space position.")
+    Vec3 point;
+
+    @Option(names = "--point-colour", paramLabel = "r,g,b", converter = ColourTriple.class,
+            description = "The point light's colour, 0..1 per channel (default: 1,1,1).")
+    Colour pointColour;
+
+    @Option(names = "--attenuation", paramLabel = "kc,kl,kq", converter = Converters.Vec3Converter.class,
+            description = "The point light's attenuation 1/(kc + kl d + kq d^2) (default: 1,0,0).")
+    Vec3 attenuation;
+
+    @Option(names = "--ambient", paramLabel = "r,g,b", converter = ColourTriple.class,
+            description = "The scene's ambient light, a grey level or r,g,b (default with a light: 0.2).")
+    Colour ambient;
+
+    @Option(names = "--shade", paramLabel = "none|flat|smooth", converter = ShadeConverter.class,
+            description = "How every material is lit (default: smooth with a light, none without).")
+    Shading shade;
+
     @Option(names = "--fog", paramLabel = "linear,S,E|exp,D|exp2,D", converter = FogConverter.class,
             description = "OpenGL's fog by eye-space depth: linear from S to E, or exp/exp2 with density D.")
     Fog fog;
@@ -27,24 +72,91 @@ final class LightOptions {
             description = "The fog's colour, 0..1 per channel (default: 0,0,0).")
     Colour fogColour;
 
+    /** Whether any light is given. */
+    private boolean anyLight() {
+        return light != null || point != null || ambient != null;
+    }
+
     /** Checks the combinations; every message names the option. */
     void check() {
+        if (lightColour != null && light == null) {
+            throw InputException.usage("--light-colour applies to --light, which is not given");
+        }
+        if ((pointColour != null || attenuation != null) && point == null) {
+            throw InputException.usage((pointColour != null ? "--point-colour" : "--attenuation")
+                    + " applies to --point, which is not given");
+        }
+        if (attenuation != null) {
+            double kc = attenuation.x();
+            double kl = attenuation.y();
+            double kq = attenuation.z();
+            if (!(kc >= 0 && kl >= 0 && kq >= 0) || kc + kl + kq == 0) {
+                throw InputException.usage("--attenuation needs kc,kl,kq at least 0 and not all 0, got "
+                        + kc + "," + kl + "," + kq);
+            }
+        }
+        if (light != null && light.length() == 0) {
+            throw InputException.usage("--light needs a direction, not 0,0,0");
+        }
+        if (shade != null && shade != Shading.NONE && !anyLight()) {
+            throw InputException.usage("--shade " + shade.name().toLowerCase(Locale.ROOT)
+                    + " needs a light: give --light, --point or --ambient");
+        }
         if (fogColour != null && fog == null) {
-            throw dev.trisect.base.InputException.usage("--fog-colour applies to --fog, which is not given");
+            throw InputException.usage("--fog-colour applies to --fog, which is not given");
         }
     }
 
-    /** One draw of {@code mesh}, with the fog: what compare and bench draw. */
+    /**
+     * One draw of {@code mesh}, world space = object space, every material lit as the options say,
+     * with the lights and the fog: what compare and bench draw.
+     */
     Draws draws(Mesh mesh, Texture[] textures, Mat4 viewProjection) {
         Draws d = new Draws();
-        d.add(mesh, textures, viewProjection);
-        return apply(d);
+        Surface[] surfaces = new Surface[mesh.materialCount()];
+        Arrays.fill(surfaces, new Surface(shading(), Colour.WHITE, Colour.WHITE));
+        d.add(mesh, textures, viewProjection, Mat4.identity(), surfaces);
+        d.setLights(lights());
+        d.setFog(fog().orElse(null));
+        return d;
     }
 
-    /** {@code draws} with the fog. */
-    Draws apply(Draws draws) {
-        draws.setFog(fog().orElse(null));
-        return draws;
+    /**
+     * As {@link #draws(Mesh, Texture[], Mat4)} for {@code scene}'s mesh drawn with {@code textures},
+     * then its lines (if any) {@code lineWidth} pixels wide: what render and bench draw.
+     */
+    Draws draws(SceneAsset scene, Texture[] textures, Mat4 viewProjection, int lineWidth) {
+        Draws d = draws(scene.mesh(), textures, viewProjection);
+        if (!scene.lines().isEmpty()) {
+            d.addLines(scene.lines(), viewProjection, lineWidth);
+        }
+        return d;
+    }
+
+    /** How every material is lit. */
+    Shading shading() {
+        check();
+        return shade != null ? shade : anyLight() ? Shading.SMOOTH : Shading.NONE;
+    }
+
+    /** The lights, world space; {@link Lights#NONE} without any. */
+    Lights lights() {
+        check();
+        if (!anyLight()) {
+            return Lights.NONE;
+        }
+        Lights.Builder b = Lights.builder();
+        Colour a = ambient != null ? ambient : Colour.grey(DEFAULT_AMBIENT);
+        b.ambient(a.r(), a.g(), a.b());
+        double[] black = new double[3];
+        if (light != null) {
+            b.directional(light.x(), light.y(), light.z(), black, rgb(lightColour));
+        }
+        if (point != null) {
+            Vec3 k = attenuation != null ? attenuation : new Vec3(1, 0, 0);
+            b.point(point.x(), point.y(), point.z(), black, rgb(pointColour), k.x(), k.y(), k.z());
+        }
+        return b.build();
     }
 
     /** The fog, with its colour. */
@@ -58,12 +170,31 @@ final class LightOptions {
     }
 
     /**
-     * The same fog for glref, as the {@code GLREF_*} environment variables its README lists (in
-     * order; empty without fog).
+     * The same light and fog for glref, as the {@code GLREF_*} environment variables its README lists
+     * (in order; empty without light and fog). glref lights only with a directional or point light.
      */
     Map<String, String> glrefEnvironment() {
         check();
         Map<String, String> env = new LinkedHashMap<>();
+        if ((light != null || point != null) && shading() != Shading.NONE) {
+            if (light != null) {
+                env.put("GLREF_LIGHT", triple(light.x(), light.y(), light.z()));
+                if (lightColour != null) {
+                    env.put("GLREF_LIGHT_COLOUR", triple(lightColour));
+                }
+            }
+            if (point != null) {
+                env.put("GLREF_POINT", triple(point.x(), point.y(), point.z()));
+                if (pointColour != null) {
+                    env.put("GLREF_POINT_COLOUR", triple(pointColour));
+                }
+                if (attenuation != null) {
+                    env.put("GLREF_ATTEN", triple(attenuation.x(), attenuation.y(), attenuation.z()));
+                }
+            }
+            env.put("GLREF_AMBIENT", triple(ambient != null ? ambient : Colour.grey(DEFAULT_AMBIENT)));
+            env.put("GLREF_SHADE", shading() == Shading.FLAT ? "flat" : "smooth");
+        }
         fog().ifPresent(f -> {
             env.put("GLREF_FOG", switch (f.mode()) {
                 case LINEAR -> "linear," + f.start() + "," + f.end();
@@ -76,7 +207,16 @@ final class LightOptions {
     }
 
     private static String triple(Colour c) {
-        return c.r() + "," + c.g() + "," + c.b();
+        return triple(c.r(), c.g(), c.b());
+    }
+
+    private static String triple(double x, double y, double z) {
+        return x + "," + y + "," + z;
+    }
+
+    private static double[] rgb(Colour c) {
+        Colour k = c != null ? c : Colour.WHITE;
+        return new double[] {k.r(), k.g(), k.b()};
     }
 
     /** {@code r,g,b}, or one grey level: finite and at least 0. */
@@ -97,6 +237,13 @@ final class LightOptions {
             }
             throw new TypeConversionException(Converters.quote(value) + " is not a colour: use r,g,b (or one grey "
                     + "level), finite numbers at least 0, e.g. 1,0.8,0.5");
+        }
+    }
+
+    /** {@code none}, {@code flat} or {@code smooth}. */
+    static final class ShadeConverter extends Converters.NamedConverter<Shading> {
+        ShadeConverter() {
+            super(Shading.values(), "shading");
         }
     }
 

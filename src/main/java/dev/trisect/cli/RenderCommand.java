@@ -4,7 +4,7 @@ import dev.trisect.content.SceneAsset;
 import dev.trisect.io.ImageFiles;
 import dev.trisect.io.OutputBatch;
 import dev.trisect.io.Pfm;
-import dev.trisect.pipeline.Draws;
+import dev.trisect.math.Mat4;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.render.FrameStats;
 import dev.trisect.render.Framebuffer;
@@ -56,8 +56,8 @@ final class RenderCommand extends SceneCommand {
         fb.recordUv(uvOut != null);
         FrameStats s;
         try (FrameRenderer renderer = common.renderer()) {
-            s = renderer.render(light.apply(scene.draws(new Draws(), camera.viewProjection(frame.size.viewport()),
-                    frame.lineWidth())), settings, fb);
+            Mat4 vp = camera.viewProjection(frame.size.viewport());
+            s = renderer.render(light.draws(scene, scene.textureArray(), vp, frame.lineWidth()), settings, fb);
         }
         Frames.noteSkipped(common, s);
         // The image and its UV output belong together: both are written, or neither is changed.

@@ -2,6 +2,7 @@ package dev.trisect.pipeline;
 
 import dev.trisect.render.CullMode;
 import dev.trisect.render.RenderSettings;
+import dev.trisect.render.Shading;
 import static dev.trisect.tessellate.VertexLayout.S;
 import static dev.trisect.tessellate.VertexLayout.T;
 import static dev.trisect.tessellate.VertexLayout.W;
@@ -9,6 +10,7 @@ import static dev.trisect.tessellate.VertexLayout.X;
 import static dev.trisect.tessellate.VertexLayout.Y;
 import static dev.trisect.tessellate.VertexLayout.Z;
 
+import dev.trisect.light.Surface;
 import dev.trisect.math.Viewport;
 import dev.trisect.raster.Commands;
 import dev.trisect.raster.ScreenTriangles;
@@ -45,6 +47,8 @@ final class ChunkGeometry {
     static final double LARGE = 0x1p26;
     /** Doubles between the corners of the triangle being culled: room for the largest layout's clip vertex. */
     private static final int CORNER = VertexLayout.FIRST_VARYING + VertexLayout.MAX_VARYINGS;
+    /** The varying slot of a lit frame's red; green and blue follow it. */
+    static final int COLOUR_SLOT = 2;
     /** Triangles per timing batch inside a chunk. */
     private static final int BATCH = 1024;
 
@@ -59,10 +63,12 @@ final class ChunkGeometry {
      * @param split           tessellate (else pass triangles whole)
      * @param budget          the frame's piece budget, shared by all threads' tessellators
      * @param layout          the vertices' varyings (s, t first), carried on to the pixel loops
+     * @param colours         the lit vertices' colours when a material is lit, else null; a layout with
+     *                        more than two varyings carries r, g, b in varyings 2..4 (white where unlit)
      */
     record Input(Draws draws, double[] clip, boolean[] invalidPosition, RenderSettings settings,
                  Viewport viewport, double guardX, double guardY, boolean split, PieceBudget budget,
-                 VertexLayout layout) {
+                 VertexLayout layout, VertexColours colours) {
     }
 
     /** Per-thread scratch. */
@@ -191,6 +197,9 @@ final class ChunkGeometry {
         float[] uvs = mesh.uvs();
         Clipper clipper = w.clipper;
         double[] corner = w.corners;
+        VertexColours colours = in.colours();
+        boolean carriesColour = in.layout().varyings() > COLOUR_SLOT;
+        Surface[] surfaces = draws.surfaces();
         int c1 = CORNER;
         int c2 = 2 * CORNER;
         for (int t = from; t < to; t++) {
@@ -207,6 +216,9 @@ final class ChunkGeometry {
                     || !loadCorner(corner, c2, clip, p2, uvs, cornerUvs[c + 2], tex)) {
                 chunk.invalid++;
                 continue;
+            }
+            if (carriesColour) {
+                loadColours(corner, colours, d, c, surfaces[material]);
             }
             int f0 = Clipper.frustumCode(corner[X], corner[Y], corner[Z], corner[W]);
             int f1 = Clipper.frustumCode(corner[c1 + X], corner[c1 + Y], corner[c1 + Z], corner[c1 + W]);
@@ -280,6 +292,32 @@ final class ChunkGeometry {
         dst[o + S] = u * tex.width();
         dst[o + T] = v * tex.height();
         return Double.isFinite(dst[o + S]) && Double.isFinite(dst[o + T]);
+    }
+
+    /**
+     * Writes the lit colour r, g, b of mesh corners {@code c .. c+2} of draw {@code d} into varyings 2..4
+     * of the three loaded corners: each corner's own with {@link Shading#SMOOTH}, the triangle's last
+     * corner's in all three with {@link Shading#FLAT} (OpenGL's provoking vertex, so the loops need no
+     * flat case), and white for an unlit material ({@code colours} is null in a frame without a lit
+     * one), whose texel then shows unchanged.
+     */
+    private static void loadColours(double[] dst, VertexColours colours, int d, int c, Surface surface) {
+        boolean lit = colours != null && surface.lit();
+        float[] rgb = lit ? colours.colours() : null;
+        boolean flat = surface.shading() == Shading.FLAT;
+        for (int k = 0; k < 3; k++) {
+            int o = k * CORNER + VertexLayout.varying(COLOUR_SLOT);
+            if (lit) {
+                int i = colours.index(d, c + k, flat);
+                dst[o] = rgb[i];
+                dst[o + 1] = rgb[i + 1];
+                dst[o + 2] = rgb[i + 2];
+            } else {
+                dst[o] = 1;
+                dst[o + 1] = 1;
+                dst[o + 2] = 1;
+            }
+        }
     }
 
     /** The determinant of the three corners' clip-space (x, y, w). */

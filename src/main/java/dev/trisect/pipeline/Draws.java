@@ -1,6 +1,8 @@
 package dev.trisect.pipeline;
 
 import dev.trisect.light.FogPass;
+import dev.trisect.light.Lights;
+import dev.trisect.light.Surface;
 import dev.trisect.math.Mat4;
 import dev.trisect.mesh.Lines;
 import dev.trisect.mesh.Mesh;
@@ -27,6 +29,7 @@ import java.util.Objects;
  * {@link QuadGeometry}).
  */
 public final class Draws {
+    private static final Mat4 IDENTITY = Mat4.identity();
     private Mesh[] meshes = new Mesh[4];
     private Mat4[] transforms = new Mat4[4];
     /** Per draw and one past the last: the first frame triangle, position and material of the draw. */
@@ -37,6 +40,10 @@ public final class Draws {
     private Texture[] textures = new Texture[4];
     /** The {@link PixelState} of every draw's materials, beside {@link #textures}. */
     private int[] states = new int[4];
+    /** How light falls on every draw's materials, concatenated: indexed by frame material. */
+    private Surface[] surfaces = new Surface[4];
+    /** Object space to world space per draw, for lighting; the identity unless given. */
+    private Mat4[] worlds = new Mat4[4];
     private int count;
     private Lines[] lines = new Lines[2];
     private Mat4[] lineTransforms = new Mat4[2];
@@ -44,13 +51,17 @@ public final class Draws {
     private double[] lineNearer = new double[2];
     private int lineCount;
     private long segmentCount;
+    private Lights lights = Lights.NONE;
+    private boolean anyLit;
+    /** Whether any material's pixel state modulates its texel by the colour varyings. */
+    private boolean anyModulate;
     private Fog fog;
     /** The frame's screen-aligned quads: billboards, glyphs, text backdrops, in drawing order. */
     private final QuadRaster quads = new QuadRaster();
     /** The pass of the last fog set, kept across {@link #clear} for the next frame's same fog. */
     private FogPass fogPass;
 
-    /** Removes every draw, every quad and the fog, keeping the storage. */
+    /** Removes every draw, every quad, the lights and the fog, keeping the storage. */
     public void clear() {
         quads.clear();
         Arrays.fill(lines, 0, lineCount, null);
@@ -59,9 +70,77 @@ public final class Draws {
         segmentCount = 0;
         Arrays.fill(meshes, 0, count, null);
         Arrays.fill(transforms, 0, count, null);
+        Arrays.fill(worlds, 0, count, null);
         Arrays.fill(textures, 0, firstMaterial[count], null);
+        Arrays.fill(surfaces, 0, firstMaterial[count], null);
         count = 0;
+        lights = Lights.NONE;
+        anyLit = false;
+        anyModulate = false;
         fog = null;
+    }
+
+    /**
+     * The frame's lights, world space, until {@link #clear}.
+     *
+     * @param lights the lights; {@link Lights#NONE} for none
+     */
+    public void setLights(Lights lights) {
+        this.lights = Objects.requireNonNull(lights, "lights is null: use Lights.NONE");
+    }
+
+    /** The frame's lights, world space. */
+    public Lights lights() {
+        return lights;
+    }
+
+    /**
+     * Whether the frame's vertices carry a colour in varyings 2..4: some material is lit or modulates
+     * its texel by the colour ({@link PixelState#MODULATE}).
+     */
+    public boolean carriesColour() {
+        return anyModulate;
+    }
+
+    /** Whether any draw has a lit material. */
+    public boolean anyLit() {
+        return anyLit;
+    }
+
+    /**
+     * Adds a mesh to draw after those added before, lit: as {@link #add(Mesh, Texture[], int[], Mat4)},
+     * with its model matrix (for its normals and world-space positions) and how light falls on each
+     * material. A lit material's pixel state takes {@link PixelState#MODULATE}: its texel is multiplied
+     * by the lit colour the frame carries in varyings 2..4.
+     *
+     * @param states   the {@link PixelState} of each material, or null for state 0 everywhere
+     * @param world    object space to world space
+     * @param surfaces per material of the mesh, by material index
+     */
+    public void add(Mesh mesh, Texture[] textures, int[] states, Mat4 modelViewProjection, Mat4 world,
+                    Surface[] surfaces) {
+        Objects.requireNonNull(world, "world matrix is null");
+        Objects.requireNonNull(surfaces, "surfaces array is null");
+        if (surfaces.length < mesh.materialCount()) {
+            throw new IllegalArgumentException("mesh has " + mesh.materialCount() + " materials but "
+                    + surfaces.length + " surfaces were given");
+        }
+        add(mesh, textures, states, modelViewProjection);
+        int m0 = firstMaterial[count - 1];
+        for (int i = 0; i < mesh.materialCount(); i++) {
+            this.surfaces[m0 + i] = Objects.requireNonNull(surfaces[i], "surface " + i + " is null");
+            if (surfaces[i].lit()) {
+                anyLit = true;
+                this.states[m0 + i] |= PixelState.MODULATE;
+                anyModulate = true;
+            }
+        }
+        worlds[count - 1] = world;
+    }
+
+    /** As {@link #add(Mesh, Texture[], int[], Mat4, Mat4, Surface[])} with state 0 for every material. */
+    public void add(Mesh mesh, Texture[] textures, Mat4 modelViewProjection, Mat4 world, Surface[] surfaces) {
+        add(mesh, textures, null, modelViewProjection, world, surfaces);
     }
 
     /**
@@ -145,6 +224,7 @@ public final class Draws {
         if (count == meshes.length) {
             meshes = Arrays.copyOf(meshes, 2 * count);
             transforms = Arrays.copyOf(transforms, 2 * count);
+            worlds = Arrays.copyOf(worlds, 2 * count);
             firstTriangle = Arrays.copyOf(firstTriangle, 2 * count + 1);
             firstPosition = Arrays.copyOf(firstPosition, 2 * count + 1);
             firstMaterial = Arrays.copyOf(firstMaterial, 2 * count + 1);
@@ -153,12 +233,17 @@ public final class Draws {
         if (m0 + materials > this.textures.length) {
             this.textures = Arrays.copyOf(this.textures, Math.max(2 * this.textures.length, m0 + materials));
             this.states = Arrays.copyOf(this.states, this.textures.length);
+            this.surfaces = Arrays.copyOf(this.surfaces, this.textures.length);
         }
         System.arraycopy(textures, 0, this.textures, m0, materials);
+        Arrays.fill(this.surfaces, m0, m0 + materials, Surface.UNLIT);
         if (states == null) {
             Arrays.fill(this.states, m0, m0 + materials, 0);
         } else {
             System.arraycopy(states, 0, this.states, m0, materials);
+            for (int i = 0; i < materials; i++) {
+                anyModulate |= PixelState.colour(states[i]) == PixelState.MODULATE;
+            }
         }
         meshes[count] = mesh;
         transforms[count] = modelViewProjection;
@@ -278,6 +363,16 @@ public final class Draws {
     /** The model-view-projection of draw {@code d}. */
     public Mat4 transform(int d) {
         return transforms[d];
+    }
+
+    /** Object space to world space of draw {@code d}; the identity for a draw added unlit. */
+    public Mat4 world(int d) {
+        return worlds[d] != null ? worlds[d] : IDENTITY;
+    }
+
+    /** How light falls on each frame material; read-only, may be longer than needed. */
+    public Surface[] surfaces() {
+        return surfaces;
     }
 
     /** Frame triangle of draw {@code d}'s first triangle; {@code d == size()} gives the total. */

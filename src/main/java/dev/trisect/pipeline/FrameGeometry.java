@@ -8,7 +8,7 @@ import dev.trisect.tessellate.VertexLayout;
 
 /**
  * The geometry half of a frame, up to what the fill reads: transform the positions
- * ({@link ClipSpace}), cull, clip and tessellate or project every chunk of triangles on all threads
+ * ({@link ClipSpace}), light the vertices when a draw is lit ({@link VertexColours}), cull, clip and tessellate or project every chunk of triangles on all threads
  * ({@link ChunkGeometry}) within the frame's piece budget ({@link DepthCapSearch}), and bin each
  * chunk's commands ({@link Chunk#commands}) into bands of {@link FrameRenderer#BAND_ROWS} rows. The chunks
  * ({@link #chunks()}) hold the result until the next frame. Not thread-safe: one frame at a time.
@@ -25,7 +25,11 @@ final class FrameGeometry {
     record Result(int chunkCount, long transformNanos, long pieceBudget, int budgetDepth) {
     }
 
+    /** The layout of a lit frame: s, t, then the lit colour r, g, b (0..1) in varyings 2..4. */
+    static final VertexLayout LIT_LAYOUT = VertexLayout.of(5);
+
     private final ClipSpace clipSpace = new ClipSpace();
+    private final VertexColours vertexColours = new VertexColours();
     private final Chunks chunks = new Chunks();
     private final ChunkGeometry chunkGeometry;
     /** Shared by the threads' tessellators for one attempt. */
@@ -61,6 +65,11 @@ final class FrameGeometry {
         long start = System.nanoTime();
         Viewport viewport = new Viewport(width, height);
         clipSpace.transform(draws, pool);
+        vertexColours.compute(draws, pool);
+        // Frames with a lit (or otherwise modulated) material carry each corner's colour r, g, b as
+        // varyings 2..4; the others keep the textured layout.
+        VertexLayout layout = draws.carriesColour() ? LIT_LAYOUT : VertexLayout.TEXTURED;
+        VertexColours colours = vertexColours.lit() ? vertexColours : null;
         long transformNanos = System.nanoTime() - start;
         int triangles = draws.triangleCount();
         int chunkCount = Chunks.count(triangles);
@@ -75,7 +84,7 @@ final class FrameGeometry {
             pieceBudget.reset(pieces);
             RenderSettings s = depth == t.maxDepth() ? settings : settings.withTessellation(t.withMaxDepth(depth));
             ChunkGeometry.Input in = new ChunkGeometry.Input(draws, clipSpace.positions(),
-                    clipSpace.invalid(), s, viewport, gx, gy, split, pieceBudget, VertexLayout.TEXTURED);
+                    clipSpace.invalid(), s, viewport, gx, gy, split, pieceBudget, layout, colours);
             pool.run(chunkCount, (thread, c) -> {
                 int from = Math.min(triangles, c * perChunk);
                 int to = Math.min(triangles, from + perChunk);

@@ -1,25 +1,43 @@
 package dev.trisect.scene;
 
+import dev.trisect.render.Colour;
+import dev.trisect.render.Shading;
 import dev.trisect.texture.Texture;
 import java.util.Objects;
 import java.util.OptionalInt;
 
 /**
- * What a surface shows: a texture, or one colour where there is no texture. Immutable; share it
- * between objects freely.
+ * What a surface shows: a texture, or one colour where there is no texture; and how light falls on
+ * it. Immutable; share it between objects freely.
  *
  * <pre>{@code
  * Material crate = Material.of(TextureReader.read(Path.of("crate.png")));
- * Material grass = Material.colour(0x3A7D2C);
+ * Material grass = Material.colour(0x3A7D2C).withShading(Shading.SMOOTH);
  * }</pre>
+ *
+ * <p>A material is unlit by default ({@link Shading#NONE}): it shows its texture or colour as it is,
+ * whatever the scene's {@link Light}s. Lit ({@link Shading#FLAT}, {@link Shading#SMOOTH}), each
+ * vertex gets OpenGL's fixed-function colour from the lights and the material's {@link #ambient()} and
+ * {@link #diffuse()} colours (both white unless set), and the texture or colour is multiplied by it
+ * ({@code GL_MODULATE}; docs/conventions.md, "Light and fog").
  */
 public final class Material {
     private final Texture texture;
     private final OptionalInt rgb;
+    private final Colour ambient;
+    private final Colour diffuse;
+    private final Shading shading;
 
-    private Material(Texture texture, OptionalInt rgb) {
+    private Material(Texture texture, OptionalInt rgb, Colour ambient, Colour diffuse, Shading shading) {
         this.texture = texture;
         this.rgb = rgb;
+        this.ambient = ambient;
+        this.diffuse = diffuse;
+        this.shading = shading;
+    }
+
+    private Material(Texture texture, OptionalInt rgb) {
+        this(texture, rgb, Colour.WHITE, Colour.WHITE, Shading.NONE);
     }
 
     /**
@@ -119,11 +137,70 @@ public final class Material {
             argb[i] = a << 24 | (argb[i] & 0xFFFFFF);
         }
         String name = texture.name() + String.format(java.util.Locale.ROOT, " at opacity %.3f", opacity);
-        return new Material(new Texture(name, texture.width(), texture.height(), argb), rgb);
+        return new Material(new Texture(name, texture.width(), texture.height(), argb), rgb, ambient, diffuse, shading);
+    }
+
+    /**
+     * How the material is lit.
+     *
+     * @return the shading, {@link Shading#NONE} unless set
+     */
+    public Shading shading() {
+        return shading;
+    }
+
+    /**
+     * The material's ambient colour: the factor of the ambient light it reflects (OpenGL's
+     * {@code GL_AMBIENT}).
+     *
+     * @return the ambient colour, white unless set
+     */
+    public Colour ambient() {
+        return ambient;
+    }
+
+    /**
+     * The material's diffuse colour: the factor of the directional and point lights it reflects
+     * (OpenGL's {@code GL_DIFFUSE}; an MTL file's {@code Kd}).
+     *
+     * @return the diffuse colour, white unless set
+     */
+    public Colour diffuse() {
+        return diffuse;
+    }
+
+    /**
+     * This material with another shading.
+     *
+     * @param shading how it is lit
+     * @return the new material
+     */
+    public Material withShading(Shading shading) {
+        return new Material(texture, rgb, ambient, diffuse, Objects.requireNonNull(shading, "shading is null"));
+    }
+
+    /**
+     * This material with another ambient colour.
+     *
+     * @param ambient the factor of the ambient light it reflects
+     * @return the new material
+     */
+    public Material withAmbient(Colour ambient) {
+        return new Material(texture, rgb, Objects.requireNonNull(ambient, "ambient colour is null"), diffuse, shading);
+    }
+
+    /**
+     * This material with another diffuse colour.
+     *
+     * @param diffuse the factor of the directional and point light it reflects
+     * @return the new material
+     */
+    public Material withDiffuse(Colour diffuse) {
+        return new Material(texture, rgb, ambient, Objects.requireNonNull(diffuse, "diffuse colour is null"), shading);
     }
 
     @Override
     public String toString() {
-        return "Material(" + texture.name() + ")";
+        return "Material(" + texture.name() + (shading == Shading.NONE ? "" : ", " + shading) + ")";
     }
 }

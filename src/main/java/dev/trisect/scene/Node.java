@@ -10,14 +10,14 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.locks.ReentrantLock;
 
 /**
- * Something in a {@link Scene}: a {@link Group} or a {@link SceneObject}. A node has a
+ * Something in a {@link Scene}: a {@link Group}, a {@link SceneObject} or a {@link Light}. A node has a
  * {@link Transform} (its place in its parent's space), can be hidden, and belongs to at most one
  * group at a time.
  *
  * <p>Every method may be called from any thread, also while a renderer draws the scene: see
  * {@link Scene} for what a frame sees.
  */
-public abstract sealed class Node permits Group, SceneObject {
+public abstract sealed class Node permits Group, SceneObject, Light {
     /**
      * Guards every change to a scene graph and every {@link Scene#snapshot()}. One lock for all scenes:
      * a change holds it for microseconds, a snapshot for a walk over the visible nodes, and a node can

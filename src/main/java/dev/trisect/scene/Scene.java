@@ -2,8 +2,10 @@ package dev.trisect.scene;
 
 import dev.trisect.base.internal.ChangeSignal;
 import dev.trisect.math.Mat4;
+import dev.trisect.math.Vec3;
 import dev.trisect.mesh.Lines;
 import dev.trisect.mesh.Mesh;
+import dev.trisect.render.Colour;
 import dev.trisect.render.Fog;
 import java.util.ArrayList;
 import java.util.Collections;
@@ -50,6 +52,44 @@ public final class Scene extends Group {
      */
     public record Placed(SceneObject object, Mesh mesh, List<Material> materials, Mat4 world, boolean filled,
                          Lines lines, Lines wire, int lineWidth, List<Billboard> billboards, List<Label> labels) {
+    }
+
+    /**
+     * One shining light as a frame sees it.
+     *
+     * @param light  the light
+     * @param kind   its kind
+     * @param vector world space: a point light's position, the unit direction towards a directional
+     *               light, zero for an ambient light
+     * @param colour its colour
+     * @param kc     constant attenuation (1 for lights that are not point lights)
+     * @param kl     linear attenuation (0 for lights that are not point lights)
+     * @param kq     quadratic attenuation (0 for lights that are not point lights)
+     */
+    public record PlacedLight(Light light, Light.Kind kind, Vec3 vector, Colour colour, double kc, double kl,
+                              double kq) {
+    }
+
+    /**
+     * The scene at one instant, as a frame draws it.
+     *
+     * @param objects the visible objects in drawing order, as {@link #snapshot()}
+     * @param lights  the visible lights, depth-first
+     * @param fog     the fog, if any
+     */
+    public record Snapshot(List<Placed> objects, List<PlacedLight> lights, Optional<Fog> fog) {
+        /**
+         * Keeps unmodifiable copies.
+         *
+         * @param objects the objects
+         * @param lights  the lights
+         * @param fog     the fog
+         */
+        public Snapshot {
+            objects = List.copyOf(objects);
+            lights = List.copyOf(lights);
+            Objects.requireNonNull(fog, "fog is null: use Optional.empty()");
+        }
     }
 
     /** Changes counted by {@link #version()}; written under {@link Node#LOCK}. */
@@ -107,19 +147,31 @@ public final class Scene extends Group {
      * @return the visible objects as of now, in drawing order: an unmodifiable list
      */
     public List<Placed> snapshot() {
+        return capture().objects();
+    }
+
+    /**
+     * The visible objects and lights and the fog as of now, at one instant (see "Threads" above).
+     *
+     * @return the scene as a frame draws it
+     */
+    public Snapshot capture() {
         List<Placed> out = new ArrayList<>();
+        List<PlacedLight> lights = new ArrayList<>();
+        Fog f;
         LOCK.lock();
         try {
             if (isVisible()) {
-                collect(this, matrix(), out);
+                collect(this, matrix(), out, lights);
             }
+            f = fog;
         } finally {
             LOCK.unlock();
         }
-        return Collections.unmodifiableList(out);
+        return new Snapshot(out, lights, Optional.ofNullable(f));
     }
 
-    private static void collect(Group group, Mat4 world, List<Placed> out) {
+    private static void collect(Group group, Mat4 world, List<Placed> out, List<PlacedLight> lights) {
         for (Node n : group.children()) {
             if (!n.isVisible()) {
                 continue;
@@ -127,8 +179,10 @@ public final class Scene extends Group {
             Mat4 m = world.mul(n.matrix());
             if (n instanceof SceneObject o) {
                 out.add(o.placed(m));
+            } else if (n instanceof Light l) {
+                lights.add(l.placed(m));
             } else {
-                collect((Group) n, m, out);
+                collect((Group) n, m, out, lights);
             }
         }
     }
@@ -205,8 +259,8 @@ public final class Scene extends Group {
         for (Node n : group.children()) {
             if (n instanceof SceneObject o) {
                 out.add(o);
-            } else {
-                gather((Group) n, out);
+            } else if (n instanceof Group g) {
+                gather(g, out);
             }
         }
     }

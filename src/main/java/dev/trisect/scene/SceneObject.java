@@ -9,6 +9,7 @@ import dev.trisect.mesh.Mesh;
 import dev.trisect.mesh.MeshBuilder;
 import dev.trisect.mesh.ObjModel;
 import dev.trisect.mesh.ObjReader;
+import dev.trisect.render.Colour;
 import dev.trisect.texture.ProceduralTextures;
 import dev.trisect.texture.Texture;
 import dev.trisect.texture.TextureReader;
@@ -423,7 +424,7 @@ public final class SceneObject extends Node {
                 }
             } else {
                 String source = model.textureSources().get(i);
-                materials.add(loaded.computeIfAbsent(map, file -> {
+                Material textured = loaded.computeIfAbsent(map, file -> {
                     try {
                         return Material.of(readMapKd(file, source));
                     } catch (InputException e) {
@@ -433,7 +434,9 @@ public final class SceneObject extends Node {
                         notes.accept(e.getMessage() + "; drawn with a magenta checkerboard instead");
                         return Material.of(ProceduralTextures.checker(64, 8, 0xFFFF00FF, 0xFF000000));
                     }
-                }));
+                });
+                // With a map_Kd, Kd is the diffuse colour under light (the texture shows unchanged unlit).
+                materials.add(kd == null ? textured : textured.withDiffuse(Colour.of(kd)));
             }
         }
         if (!untextured.isEmpty()) {

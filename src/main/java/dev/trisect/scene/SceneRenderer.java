@@ -3,7 +3,6 @@ package dev.trisect.scene;
 import dev.trisect.math.Viewport;
 import dev.trisect.pipeline.Draws;
 import dev.trisect.pipeline.FrameRenderer;
-import dev.trisect.render.Fog;
 import dev.trisect.render.FrameStats;
 import dev.trisect.render.Framebuffer;
 import dev.trisect.render.RenderSettings;
@@ -62,8 +61,8 @@ public final class SceneRenderer implements AutoCloseable {
     }
 
     /**
-     * Draws every visible object of {@code scene}, as one {@link Scene#snapshot()}, fogged by its
-     * {@linkplain Scene#fog() fog}, into {@code frame},
+     * Draws every visible object of {@code scene}, lit by its lights and fogged by its fog, as one
+     * {@link Scene#capture()}, into {@code frame},
      * which is cleared to the settings' background first.
      *
      * @param scene    what to draw, as of now
@@ -80,8 +79,7 @@ public final class SceneRenderer implements AutoCloseable {
         Objects.requireNonNull(camera, "camera is null");
         Objects.requireNonNull(settings, "render settings are null: use RenderSettings.display() or defaults()");
         Objects.requireNonNull(frame, "framebuffer is null");
-        Drawn d = new Drawn(scene.snapshot(), scene.fog().orElse(null), camera, settings, frame.width(),
-                frame.height(), draws);
+        Drawn d = new Drawn(scene.capture(), camera, settings, frame.width(), frame.height(), draws);
         d.frame.withScreenText(scene.screenText());
         FrameStats stats = renderer.render(draws, settings, frame);
         d.uvFrame = frame.uv() != null ? frame : null;
@@ -234,9 +232,9 @@ public final class SceneRenderer implements AutoCloseable {
         /** The UV output array this frame was drawn into. */
         double[] uvArray;
 
-        Drawn(List<Scene.Placed> placed, Fog fog, Camera camera, RenderSettings settings, int width, int height,
+        Drawn(Scene.Snapshot snapshot, Camera camera, RenderSettings settings, int width, int height,
               Draws draws) {
-            this.frame = new DrawnFrame(placed, fog, camera, width, height, draws);
+            this.frame = new DrawnFrame(snapshot, camera, width, height, draws);
             this.settings = settings;
             this.width = width;
             this.height = height;

@@ -1,10 +1,14 @@
 package dev.trisect.scene;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import dev.trisect.io.ImageFiles;
 import dev.trisect.mesh.ObjModel;
 import dev.trisect.mesh.ObjReader;
+import dev.trisect.render.Colour;
+import dev.trisect.render.Shading;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -14,7 +18,10 @@ import java.util.OptionalInt;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-/** MTL Kd: a material with a colour and no texture is that colour, not the UV grid. */
+/**
+ * MTL Kd: a material with a colour and no texture is that colour, not the UV grid; with a texture,
+ * Kd is its diffuse colour under light and the texture shows unchanged.
+ */
 class MtlColourTest {
     @TempDir
     Path dir;
@@ -33,5 +40,20 @@ class MtlColourTest {
         assertTrue(o.materials().get(2).rgb().isEmpty(), "no Kd, no map_Kd: the UV grid");
         assertEquals(1, notes.size());
         assertTrue(notes.get(0).contains("bare") && !notes.get(0).contains("red"), notes.get(0));
+    }
+
+    @Test
+    void kdWithMapKdIsTheDiffuseColourUnderLight() throws Exception {
+        ImageFiles.write(dir.resolve("t.png"), 2, 2, new int[] {0xFF102030, 0xFF405060, 0xFF708090, 0xFFA0B0C0});
+        Files.writeString(dir.resolve("m.mtl"), "newmtl lit\nKd 1 0.5 0\nmap_Kd t.png\nnewmtl plain\nmap_Kd t.png\n");
+        Files.writeString(dir.resolve("m.obj"), "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\n"
+                + "usemtl lit\nf 1 2 3\nusemtl plain\nf 1 3 2\n");
+        SceneObject o = SceneObject.load(ObjReader.read(dir.resolve("m.obj"), true), "m.obj", note -> { }, false);
+        Material lit = o.materials().get(0);
+        Material plain = o.materials().get(1);
+        assertEquals(Colour.of(0xFF8000), lit.diffuse());
+        assertEquals(Colour.WHITE, plain.diffuse());
+        assertSame(lit.texture(), plain.texture(), "one texture, read once");
+        assertEquals(Shading.NONE, lit.shading(), "unlit unless asked: the texture shows as it is");
     }
 }

@@ -1,12 +1,14 @@
 package dev.trisect.scene.internal;
 
+import dev.trisect.light.Lights;
+import dev.trisect.light.Surface;
 import dev.trisect.math.Mat4;
 import dev.trisect.math.Vec3;
 import dev.trisect.math.Viewport;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.mesh.MeshBuilder;
 import dev.trisect.pipeline.Draws;
-import dev.trisect.render.Fog;
+import dev.trisect.render.Colour;
 import dev.trisect.scene.Camera;
 import dev.trisect.scene.Material;
 import dev.trisect.scene.Pick;
@@ -14,6 +16,7 @@ import dev.trisect.scene.Scene;
 import dev.trisect.scene.ScreenText;
 import dev.trisect.texture.Texture;
 import java.util.List;
+import java.util.Optional;
 
 /**
  * One frame's objects as the pipeline draws them: a draw per visible object, with its own
@@ -41,13 +44,16 @@ public final class DrawnFrame {
      * model-view-projection for {@code camera} and a {@code width x height} frame.
      */
     public DrawnFrame(List<Scene.Placed> placed, Camera camera, int width, int height, Draws draws) {
-        this(placed, null, camera, width, height, draws);
+        this(new Scene.Snapshot(placed, List.of(), Optional.empty()), camera, width, height, draws);
     }
 
     /**
-     * As {@link #DrawnFrame(List, Camera, int, int, Draws)}, fogged by {@code fog} (null for none).
+     * Fills {@code draws} (cleared first) with a draw per object of {@code snapshot}, each with its own
+     * model-view-projection for {@code camera} and a {@code width x height} frame, its world matrix and
+     * how light falls on each of its materials, and the snapshot's lights and fog.
      */
-    public DrawnFrame(List<Scene.Placed> placed, Fog fog, Camera camera, int width, int height, Draws draws) {
+    public DrawnFrame(Scene.Snapshot snapshot, Camera camera, int width, int height, Draws draws) {
+        List<Scene.Placed> placed = snapshot.objects();
         this.camera = camera;
         this.width = width;
         this.height = height;
@@ -59,13 +65,16 @@ public final class DrawnFrame {
         for (Scene.Placed o : this.placed) {
             List<Material> materials = o.materials();
             Texture[] textures = new Texture[materials.size()];
+            Surface[] surfaces = new Surface[materials.size()];
             for (int i = 0; i < textures.length; i++) {
-                textures[i] = materials.get(i).texture();
+                Material m = materials.get(i);
+                textures[i] = m.texture();
+                surfaces[i] = new Surface(m.shading(), m.ambient(), m.diffuse());
             }
             Mat4 mvp = viewProjection.mul(o.world());
             // One draw per object, so that draw k is object k: an object drawn as wire alone draws no triangles.
             if (o.filled()) {
-                draws.add(o.mesh(), textures, BlendOrder.states(materials), mvp);
+                draws.add(o.mesh(), textures, BlendOrder.states(materials), mvp, o.world(), surfaces);
             } else {
                 draws.add(NO_TRIANGLES, NO_TEXTURES, mvp);
             }
@@ -76,7 +85,8 @@ public final class DrawnFrame {
                 draws.addLines(o.wire(), mvp, o.lineWidth(), o.filled() ? Draws.WIRE_NEARER : 0);
             }
         }
-        draws.setFog(fog);
+        draws.setLights(lights(snapshot.lights()));
+        draws.setFog(snapshot.fog().orElse(null));
         sprites = new Sprites(this.placed, viewProjection, camera, width, height, draws.quads());
     }
 
@@ -107,6 +117,23 @@ public final class DrawnFrame {
             }
         }
         return null;
+    }
+
+    /** The shining lights as the frame's {@link Lights}, world space. */
+    static Lights lights(List<Scene.PlacedLight> shining) {
+        Lights.Builder b = Lights.builder();
+        double[] none = new double[3];
+        for (Scene.PlacedLight l : shining) {
+            Colour c = l.colour();
+            double[] rgb = {c.r(), c.g(), c.b()};
+            Vec3 v = l.vector();
+            switch (l.kind()) {
+                case AMBIENT -> b.ambient(c.r(), c.g(), c.b());
+                case DIRECTIONAL -> b.directional(v.x(), v.y(), v.z(), none, rgb);
+                case POINT -> b.point(v.x(), v.y(), v.z(), none, rgb, l.kc(), l.kl(), l.kq());
+            }
+        }
+        return b.build();
     }
 
     /** The draws, as filled. */

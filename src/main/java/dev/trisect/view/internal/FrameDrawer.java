@@ -110,7 +110,7 @@ final class FrameDrawer {
             settleFrames = drawnScene == null ? 0 : 2;
             drawnScene = scene;
         }
-        DrawnFrame drawn = new DrawnFrame(scene.snapshot(), scene.fog().orElse(null), camera, fw, fh, back.draws)
+        DrawnFrame drawn = new DrawnFrame(scene.capture(), camera, fw, fh, back.draws)
                 .withScreenText(scene.screenText());
         Draws draws = back.draws;
         if (!state.toolsOpen() && settings.view() != ViewKind.IMAGE) {
