@@ -49,7 +49,7 @@ public final class DevToolsPanel extends JPanel {
         super(new BorderLayout());
         this.owner = owner;
         sections = List.of(new OverlaySection(owner), new ModeSection(owner), new SplitPolicySection(owner),
-                new BudgetSection(owner), new CompareSection(owner), new StatisticsSection(owner),
+                new BudgetSection(owner), new CompareSection(owner), new StatisticsSection(owner), new LightSection(owner),
                 new TimingSection(owner), new CameraSection(owner), new RenderSection(owner));
         // Laid out at the viewport's width, so that the value column never hides under the scroll bar.
         JPanel content = new TrackingPanel();
@@ -122,7 +122,7 @@ public final class DevToolsPanel extends JPanel {
      * Sections folded first when the tools do not fit their window's height, least used first; the
      * overlay, compare and statistics sections are never folded for room.
      */
-    private static final List<Class<? extends ToolSection>> FOLD_FIRST = List.of(RenderSection.class,
+    private static final List<Class<? extends ToolSection>> FOLD_FIRST = List.of(RenderSection.class, LightSection.class,
             CameraSection.class, BudgetSection.class, TimingSection.class, ModeSection.class, SplitPolicySection.class);
 
     /** Folds sections, least used first, until the content is at most {@code height} pixels tall (or none is left). */

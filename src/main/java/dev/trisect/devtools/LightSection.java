@@ -1,0 +1,167 @@
+package dev.trisect.devtools;
+
+import dev.trisect.content.SceneLighting;
+import dev.trisect.render.Colour;
+import dev.trisect.render.Fog;
+import dev.trisect.render.Shading;
+import dev.trisect.scene.Light;
+import dev.trisect.scene.Scene;
+import dev.trisect.view.internal.FrameSlot;
+import dev.trisect.view.internal.ViewController;
+import dev.trisect.view.internal.ViewSettings;
+import dev.trisect.view.internal.ViewState;
+import java.util.List;
+import java.util.Locale;
+import javax.swing.JCheckBox;
+import javax.swing.JComboBox;
+import javax.swing.JComponent;
+
+/**
+ * Developer tools: how the scene is lit and fogged (docs/conventions.md, "Light" and "Fog"). Shows the
+ * shading of its materials and its lights, and changes them: one shading for every material, every
+ * light on or off, and OpenGL's fog (linear from a start to an end depth, or exp and exp2 by a
+ * density) towards the background's colour. The controls act on the scene itself, so they show what
+ * the demo's keys set too.
+ */
+final class LightSection implements ToolSection {
+    /** The fog choices, in the combo's order. */
+    static final String[] FOGS = {"off", "linear", "exp", "exp2"};
+
+    private final ToolsForm form = new ToolsForm("Light and fog");
+    private final ViewController owner;
+    private final JComboBox<Shading> shading = new JComboBox<>(Shading.values());
+    private final JCheckBox lightsOn = new JCheckBox("Lights on");
+    private final JComboBox<String> fog = new JComboBox<>(FOGS);
+    /** The fog's values in force: start and end depths, density. */
+    private final double[] values = {5, 60, 0.05};
+    private int background;
+    private boolean syncing;
+
+    LightSection(ViewController owner) {
+        this.owner = owner;
+        shading.setToolTipText("How every material is lit: none (the texture as it is), flat (one colour per "
+                + "triangle, its last corner's, as GL_FLAT) or smooth (corner colours interpolated)");
+        shading.addActionListener(e -> {
+            if (!syncing) {
+                SceneLighting.setShading(scene(), (Shading) shading.getSelectedItem());
+            }
+        });
+        form.row(ToolsForm.label("Shading", shading.getToolTipText()), shading);
+        form.note("Lights", "The scene's visible lights: the ambient colour they sum to, and each directional "
+                + "and point light's colour");
+        lightsOn.setToolTipText("Show or hide every light of the scene (a hidden light does not shine)");
+        lightsOn.addActionListener(e -> {
+            boolean on = lightsOn.isSelected();
+            Scene s = scene();
+            s.update(() -> lights(s).forEach(l -> l.setVisible(on)));
+        });
+        form.row(lightsOn);
+        fog.setToolTipText("OpenGL's fog by eye-space depth towards the background's colour: linear from Start "
+                + "to End, exp or exp2 by Density");
+        fog.addActionListener(e -> applyFog());
+        form.row(ToolsForm.label("Fog", fog.getToolTipText()), fog);
+        NumberField start = field("Fog start", 1e6, 0);
+        NumberField end = field("Fog end", 1e6, 1);
+        NumberField density = field("Fog density", 100, 2);
+        form.row(ToolsForm.label("Fog start", "Linear fog: the depth where it begins, world units"), start);
+        form.row(ToolsForm.label("Fog end", "Linear fog: the depth where only the fog shows, world units"), end);
+        form.row(ToolsForm.label("Fog density", "Exp and exp2 fog: the density, per world unit"), density);
+    }
+
+    /** A field for {@code values[index]}: a number typed applies the fog again. */
+    private NumberField field(String name, double max, int index) {
+        NumberField[] f = new NumberField[1];
+        f[0] = new NumberField(name, "", 0, max, v -> {
+            values[index] = v;
+            f[0].show(v);
+            applyFog();
+        }, owner::message);
+        f[0].show(values[index]);
+        return f[0];
+    }
+
+    private Scene scene() {
+        return owner.state().scene();
+    }
+
+    /** Every light node of {@code scene}, hidden ones too. */
+    static List<Light> lights(Scene scene) {
+        return SceneLighting.lights(scene);
+    }
+
+    /** Sets the scene's fog from the controls. */
+    private void applyFog() {
+        if (syncing) {
+            return;
+        }
+        Colour c = Colour.of(background);
+        String kind = (String) fog.getSelectedItem();
+        Fog f;
+        try {
+            f = switch (kind) {
+                case "linear" -> Fog.linear(values[0], values[1], c);
+                case "exp" -> Fog.exp(values[2], c);
+                case "exp2" -> Fog.exp2(values[2], c);
+                default -> null;
+            };
+        } catch (IllegalArgumentException e) {
+            owner.message("Fog: " + e.getMessage());
+            return;
+        }
+        scene().setFog(f);
+    }
+
+    @Override
+    public void sync(ViewSettings settings) {
+        background = settings.render().background();
+    }
+
+    @Override
+    public void refresh(ViewState.Progress progress, FrameSlot front, ViewState.Measurement measurement) {
+        Scene s = scene();
+        syncing = true;
+        try {
+            shading.setSelectedItem(SceneLighting.shading(s));
+            List<Light> all = lights(s);
+            lightsOn.setEnabled(!all.isEmpty());
+            lightsOn.setSelected(all.stream().anyMatch(Light::isVisible));
+            fog.setSelectedItem(s.fog().map(f -> f.mode().name().toLowerCase(Locale.ROOT)).orElse("off"));
+        } finally {
+            syncing = false;
+        }
+        form.set("Lights", describe(s));
+    }
+
+    /** The scene's shining lights in a line or two: "ambient 0.20 0.20 0.20; directional 1 1 1; point ...". */
+    static String describe(Scene scene) {
+        double[] ambient = new double[3];
+        StringBuilder sources = new StringBuilder();
+        for (Scene.PlacedLight l : scene.capture().lights()) {
+            Colour c = l.colour();
+            switch (l.kind()) {
+                case AMBIENT -> {
+                    ambient[0] += c.r();
+                    ambient[1] += c.g();
+                    ambient[2] += c.b();
+                }
+                case DIRECTIONAL -> sources.append("; directional ").append(rgb(c.r(), c.g(), c.b()));
+                case POINT -> sources.append("; point ").append(rgb(c.r(), c.g(), c.b()));
+            }
+        }
+        return "ambient " + rgb(ambient[0], ambient[1], ambient[2]) + sources;
+    }
+
+    private static String rgb(double r, double g, double b) {
+        return String.format(Locale.ROOT, "%.2f %.2f %.2f", r, g, b);
+    }
+
+    @Override
+    public JComponent component() {
+        return form.panel();
+    }
+
+    @Override
+    public String readout(String name) {
+        return form.get(name);
+    }
+}
