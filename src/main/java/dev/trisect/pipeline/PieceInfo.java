@@ -12,8 +12,47 @@ import dev.trisect.tessellate.Slivers;
  * @param fallback filled per pixel (perspective-correct): a sliver, or a cap stopped its splitting short
  * @param screen   corners x0, y0, x1, y1, x2, y2, screen pixels
  * @param attributes per corner 1/w, s, t (view-space units^-1, level-0 texels)
+ * @param colours  per corner the lit colour r, g, b (0..1) of a frame that carries one, else null
  */
-public record PieceInfo(int index, int triangle, int level, boolean fallback, double[] screen, double[] attributes) {
+public record PieceInfo(int index, int triangle, int level, boolean fallback, double[] screen, double[] attributes,
+                        double[] colours) {
+
+    /** A piece of a frame without colours. */
+    public PieceInfo(int index, int triangle, int level, boolean fallback, double[] screen, double[] attributes) {
+        this(index, triangle, level, fallback, screen, attributes, null);
+    }
+
+    /**
+     * The colour r, g, b at screen point (x, y) as the fill interpolates it: perspective-correctly
+     * (weighted by each corner's 1/w), or screen-linearly; null without colours.
+     */
+    public double[] colourAt(double x, double y, boolean perspective) {
+        if (colours == null) {
+            return null;
+        }
+        double[] p = screen;
+        double det = (p[2] - p[0]) * (p[5] - p[1]) - (p[4] - p[0]) * (p[3] - p[1]);
+        double b1 = ((x - p[0]) * (p[5] - p[1]) - (p[4] - p[0]) * (y - p[1])) / det;
+        double b2 = ((p[2] - p[0]) * (y - p[1]) - (x - p[0]) * (p[3] - p[1])) / det;
+        double[] w = {1 - b1 - b2, b1, b2};
+        if (perspective) {
+            double sum = 0;
+            for (int k = 0; k < 3; k++) {
+                w[k] *= attributes[3 * k];
+                sum += w[k];
+            }
+            for (int k = 0; k < 3; k++) {
+                w[k] /= sum;
+            }
+        }
+        double[] c = new double[3];
+        for (int k = 0; k < 3; k++) {
+            for (int ch = 0; ch < 3; ch++) {
+                c[ch] += w[k] * colours[3 * k + ch];
+            }
+        }
+        return c;
+    }
 
     /** Whether it is a sliver by the tessellator's rule ({@link Slivers#sliver}): thinner than 1/16 px. */
     public boolean sliver() {

@@ -45,8 +45,16 @@ final class PieceLookup {
         for (int k = 0; k < 3; k++) {
             System.arraycopy(t.attributes(), a + k * cs, qst, 3 * k, 3);
         }
+        // A frame carrying colours holds r, g, b in varyings 2..4: corner slots 3..5 after 1/w, s, t.
+        double[] rgb = null;
+        if (t.layout().varyings() > ChunkGeometry.COLOUR_SLOT) {
+            rgb = new double[9];
+            for (int k = 0; k < 3; k++) {
+                System.arraycopy(t.attributes(), a + k * cs + 1 + ChunkGeometry.COLOUR_SLOT, rgb, 3 * k, 3);
+            }
+        }
         return new PieceInfo(index, t.ids()[i], t.levels()[i], t.perPixel()[i],
-                Arrays.copyOfRange(t.screen(), s, s + ScreenTriangles.SCREEN_STRIDE), qst);
+                Arrays.copyOfRange(t.screen(), s, s + ScreenTriangles.SCREEN_STRIDE), qst, rgb);
     }
 
     /**

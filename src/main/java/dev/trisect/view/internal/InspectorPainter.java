@@ -77,8 +77,10 @@ public final class InspectorPainter {
                     knots.bounds().length, knots.columns()[k], knots.columns()[k + 1],
                     knots.columns()[k + 1] - knots.columns()[k], knots.bounds()[k]));
         }
+        double[] light = in.light();
         l.add(String.format(Locale.ROOT, "mip level %d (lambda %.2f%s), texel %d,%d", in.mipLevel(), in.lambda(),
-                in.segment() >= 0 ? " of the segment" : "", in.texelX(), in.texelY()));
+                in.segment() >= 0 ? " of the segment" : "", in.texelX(), in.texelY())
+                + (light == null ? "" : String.format(Locale.ROOT, ", light %.3f %.3f %.3f", light[0], light[1], light[2])));
         return l;
     }
 

@@ -55,11 +55,13 @@ public final class PixelInspector {
      * @param triangle2d   the input triangle on screen, frame pixels {x0, y0, x1, y1, ...}: its corners, or
      *                     where it crosses the near plane the part in front of it (four corners); null
      *                     where nothing was drawn
+     * @param light        the lit colour r, g, b (0..1) the pixel's texel was multiplied by, as its path
+     *                     interpolates it; null where the frame carries no colour or nothing was drawn
      */
     public record Inspection(int x, int y, int argb, int triangle, DrawnFrame.Owner owner, double w, double s, double t,
                       double refS, double refT, double displacement, PieceInfo piece, double lambda, int mipLevel,
                       int texelX, int texelY, RowKnots knots, PieceInfo outline, DrawnFrame.Owner outlineOwner,
-                      int refArgb, double[] triangle2d) {
+                      int refArgb, double[] triangle2d, double[] light) {
         /** The span segment holding the pixel (the index of its first knot), or -1 (not the span path, or a lone knot). */
         public int segment() {
             return knots == null ? -1 : knots.segmentOf(x);
@@ -88,7 +90,7 @@ public final class PixelInspector {
         int refArgb = reference == null ? 0 : reference.colour()[i];
         if (id < 0) {
             return new Inspection(x, y, argb, -1, null, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN,
-                    Double.NaN, null, Double.NaN, 0, 0, 0, null, outline, outlineOwner, refArgb, null);
+                    Double.NaN, null, Double.NaN, 0, 0, 0, null, outline, outlineOwner, refArgb, null, null);
         }
         double q = frame.depth()[i];
         double s = uv[3 * i];
@@ -123,7 +125,29 @@ public final class PixelInspector {
         int ty = Math.floorMod((int) Math.floor(t * chain.scaleT(level)), chain.height(level));
         return new Inspection(x, y, argb, id, drawn.ownerOf(id), 1 / q, s, t, refS, refT, displacement, piece, lambda,
                 level, tx, ty, knots, outline, outlineOwner, refArgb, onScreen(drawn.draws(), id, frame.width(),
-                frame.height()));
+                frame.height()), lightAt(piece, perspective, knots, x, y));
+    }
+
+    /**
+     * The colour the pixel's texel was multiplied by, as its path interpolates it over {@code piece}: per
+     * pixel perspective-correctly (the per-pixel path, a fallback piece), exactly at the knots and
+     * linearly between them (the span path), screen-linearly (the affine and tessellated paths); null
+     * without a piece or a colour.
+     */
+    static double[] lightAt(PieceInfo piece, boolean perspective, RowKnots knots, int x, int y) {
+        if (piece == null || piece.colours() == null) {
+            return null;
+        }
+        int k = knots == null ? -1 : knots.segmentOf(x);
+        if (k < 0 || piece.fallback()) {
+            return piece.colourAt(x + 0.5, y + 0.5, perspective || piece.fallback());
+        }
+        int a = knots.columns()[k];
+        int b = knots.columns()[k + 1];
+        double[] ca = piece.colourAt(a + 0.5, y + 0.5, true);
+        double[] cb = piece.colourAt(b + 0.5, y + 0.5, true);
+        double f = (double) (x - a) / (b - a);
+        return new double[] {ca[0] + f * (cb[0] - ca[0]), ca[1] + f * (cb[1] - ca[1]), ca[2] + f * (cb[2] - ca[2])};
     }
 
     /**

@@ -19,7 +19,7 @@ class InspectorPainterTest {
         // A full readout: a triangle, its piece, both paths' texel coordinates, the displacement, the mip level.
         PieceInfo piece = new PieceInfo(8, 3, 2, false, new double[] {10, 10, 60, 10, 35, 40}, new double[9]);
         f.inspection = new PixelInspector.Inspection(x, y, 0xFF808080, 3, null, 2.5, 10.25, 3.5, 10.25, 3.5, 0.125,
-                piece, 1.5, 1, 12, 4, null, null, null, 0xFF404040, new double[] {5, 5, 90, 5, 5, 90});
+                piece, 1.5, 1, 12, 4, null, null, null, 0xFF404040, new double[] {5, 5, 90, 5, 5, 90}, null);
         BufferedImage view = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = view.createGraphics();
         g.drawImage(f.image, 0, 0, null);
@@ -74,7 +74,7 @@ class InspectorPainterTest {
         FrameSlot f = new FrameSlot(8, 8);
         PieceInfo piece = new PieceInfo(8, 3, 2, false, new double[] {10, 10, 60, 10, 35, 40}, new double[9]);
         var in = new PixelInspector.Inspection(1, 2, 0xFF808080, 3, null, 2.5, 10.25, 3.5, 10.25, 3.5, 0.125, piece,
-                1.5, 1, 12, 4, null, null, null, 0xFF404040, new double[] {5, 5, 90, 5, 5, 90});
+                1.5, 1, 12, 4, null, null, null, 0xFF404040, new double[] {5, 5, 90, 5, 5, 90}, null);
         String text = InspectorPainter.text(in);
         assertTrue(text.startsWith("pixel 1,2 #808080, per-pixel #404040" + System.lineSeparator()), text);
         assertTrue(text.contains("in the view: piece outlined cyan, input triangle dashed"), text);
@@ -87,7 +87,7 @@ class InspectorPainterTest {
         FrameSlot f = new FrameSlot(64, 48);
         Arrays.fill(f.frame.colour(), 0xFF808080);
         f.inspection = new PixelInspector.Inspection(10, 10, 0xFF808080, 3, null, 2.5, 10.25, 3.5, 10.25, 3.5, 0.125,
-                null, 1.5, 1, 12, 4, null, null, null, 0, null);
+                null, 1.5, 1, 12, 4, null, null, null, 0, null, null);
         f.underMarks = InspectorPainter.patch(f.frame.colour(), 64, 48, 10, 10);
         assertEquals(null, InspectorPainter.marksNote(f), "nothing drawn over the image");
         for (int x = 8; x <= 10; x++) {
@@ -159,5 +159,23 @@ class InspectorPainterTest {
         });
         assertTrue(next.pins[0].argb() != firstPin.argb() || next.pins[0].w() != firstPin.w(),
                 "read from the new frame");
+    }
+
+    @Test
+    void aLitPixelShowsItsLightColourBesideItsTexel() {
+        // Corners lit 0.2, 0.6 and 1.0 in red at 1/w 1, 1 and 0.5: at the centroid (35.5, 20.5) of a piece
+        // with corners (10.5, 10.5), (60.5, 10.5), (35.5, 40.5), pixel 35,20's centre, the screen weights
+        // are 1/3 each.
+        double[] corners = {10.5, 10.5, 60.5, 10.5, 35.5, 40.5};
+        PieceInfo piece = new PieceInfo(8, 3, 0, false, corners, new double[] {1, 0, 0, 1, 0, 0, 0.5, 0, 0},
+                new double[] {0.2, 0, 0, 0.6, 0, 0, 1.0, 0, 0});
+        assertEquals(0.6, piece.colourAt(35.5, 20.5, false)[0], 1e-12, "screen-linear: the mean");
+        assertEquals((0.2 + 0.6 + 0.5) / 2.5, piece.colourAt(35.5, 20.5, true)[0], 1e-12, "weighted by 1/w");
+        double[] light = PixelInspector.lightAt(piece, false, null, 35, 20);
+        var in = new PixelInspector.Inspection(35, 20, 0xFF808080, 3, null, 2.5, 10.25, 3.5, 10.25, 3.5, 0.125, piece,
+                1.5, 1, 12, 4, null, null, null, 0xFF404040, null, light);
+        String texel = InspectorPainter.lines(in, false).stream().filter(l -> l.contains("texel 12,4")).findFirst()
+                .orElseThrow();
+        assertTrue(texel.endsWith(", light 0.600 0.000 0.000"), texel);
     }
 }
