@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.examples.HeadlessRender;
+import dev.trisect.examples.LitCrates;
 import dev.trisect.examples.PickPixels;
 import dev.trisect.examples.TransparentPane;
 import dev.trisect.examples.WireframeAxes;
@@ -38,6 +39,36 @@ class ExamplesTest {
         assertTrue(r > g && g > b && r > 60, "the crate's wood at the centre: " + Integer.toHexString(crate));
         int ground = image.getRGB(20, 390);
         assertTrue((ground & 0xFFFFFF) != 0, "the ground at the bottom");
+    }
+
+    @Test
+    void litCratesShowEachFaceOfACrateInItsOwnLight(@TempDir Path dir) throws Exception {
+        Path png = dir.resolve("lit.png");
+        LitCrates.main(new String[] {png.toString()});
+        BufferedImage image = ImageIO.read(png.toFile());
+        // The middle crate's top, front (+z) and right (+x) faces: the sun from (2, 3, 1) gives them
+        // N·L = 0.80, 0.27 and 0.53, so the top is the brightest and the front the darkest; the blue
+        // lamp in front of the crates tints the front more than the top.
+        double[] top = mean(image, 312, 156, 8, 6);
+        double[] front = mean(image, 295, 205, 8, 8);
+        double[] side = mean(image, 345, 195, 8, 8);
+        assertTrue(top[0] > side[0] + 15 && side[0] > front[0] + 15, "top " + top[0] + ", side " + side[0]
+                + ", front " + front[0] + ": each face its own brightness");
+        assertTrue(front[2] / front[0] > top[2] / top[0] + 0.1, "the lamp's blue on the front face");
+    }
+
+    /** Mean r, g, b of a w x h block at (x, y). */
+    private static double[] mean(BufferedImage image, int x, int y, int w, int h) {
+        double[] m = new double[3];
+        for (int j = y; j < y + h; j++) {
+            for (int i = x; i < x + w; i++) {
+                int c = image.getRGB(i, j);
+                m[0] += (c >> 16 & 0xFF) / (double) (w * h);
+                m[1] += (c >> 8 & 0xFF) / (double) (w * h);
+                m[2] += (c & 0xFF) / (double) (w * h);
+            }
+        }
+        return m;
     }
 
     @Test
