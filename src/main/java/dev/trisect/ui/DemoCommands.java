@@ -52,6 +52,12 @@ final class DemoCommands {
                         + "can, with no cap: the status bar's rate is then the uncapped one (a still scene otherwise "
                         + "draws no frames, an animated one at most the screen's rate)", KeyStroke.getKeyStroke(
                         KeyEvent.VK_M, 0), w::measureUncapped), true),
+                new Entry(Menu.SCENE, command("Lighting: off, flat, smooth", "Light the scene (a lamp from the "
+                        + "camera, a warm light circling, a dim ambient) flat, then smooth, then not", KeyStroke.getKeyStroke(
+                        KeyEvent.VK_L, 0), () -> w.status("Lighting: " + w.lighting.cycle().name().toLowerCase(
+                        java.util.Locale.ROOT))), false),
+                new Entry(Menu.SCENE, toggle("Fog", "OpenGL's linear fog towards the sky's colour", KeyStroke.getKeyStroke(
+                        KeyEvent.VK_G, 0), w.lighting::setFog), true),
                 new Entry(Menu.HELP, command("Keys and mouse", "Show every key and mouse gesture of the demo in a "
                         + "panel", KeyStroke.getKeyStroke(KeyEvent.VK_F1, 0), w::toggleHelp), false));
     }

@@ -39,6 +39,8 @@ final class DemoHelp {
         {"F5 / F6 / F7", "view: Image / Difference (heat map) / Split; F6 and F7 open the developer tools"},
         {"1 / 2 / 3 / 4", "texturing path: perspective, affine, tessellated, spans"},
         {"P", "split policy: Edge or Error (Render menu: Split policy: …); the status bar says which"},
+        {"L", "lighting: off, flat, smooth (a lamp from the camera, a warm light circling the scene, a dim ambient)"},
+        {"G", "fog on/off: linear, towards the sky's colour"},
         {"F12", "developer tools"},
         {"F1", "this table of keys and mouse gestures, in a panel"},
         {"Ctrl+O", "open an OBJ model"},

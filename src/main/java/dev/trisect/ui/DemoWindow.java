@@ -54,6 +54,8 @@ final class DemoWindow {
     /** The F1 panel, made when first shown. */
     private javax.swing.JDialog help;
     final FileMenu fileMenu;
+    /** The demo's light and fog (keys L and G). */
+    final DemoLighting lighting;
 
     DemoWindow(SceneAsset scene, int threads) {
         this(scene, threads, new RecentFiles());
@@ -65,6 +67,8 @@ final class DemoWindow {
         frame.setDefaultCloseOperation(WindowConstants.DISPOSE_ON_CLOSE);
         view = new TrisectView(AssetScenes.scene(scene), threads);
         view.setCamera(scene.camera());
+        lighting = new DemoLighting(view);
+        lighting.sceneShown(view.getScene(), scene.camera());
         view.setPreferredSize(new Dimension(1280, 720));
         view.addFrameListener(f -> {
             latestAt = System.nanoTime();
@@ -244,6 +248,7 @@ final class DemoWindow {
     void show(SceneAsset s) {
         view.setScene(AssetScenes.scene(s));
         view.setCamera(s.camera());
+        lighting.sceneShown(view.getScene(), s.camera());
         frame.setTitle(title(s));
         // A new scene: the last one's note (a placeholder texture) no longer applies.
         sceneNote(null);
