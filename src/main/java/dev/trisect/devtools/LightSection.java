@@ -66,6 +66,8 @@ final class LightSection implements ToolSection {
         form.row(ToolsForm.label("Fog start", "Linear fog: the depth where it begins, world units"), start);
         form.row(ToolsForm.label("Fog end", "Linear fog: the depth where only the fog shows, world units"), end);
         form.row(ToolsForm.label("Fog density", "Exp and exp2 fog: the density, per world unit"), density);
+        // Folded until asked for: the tools keep fitting the screen with the sections used most open.
+        form.setOpen(false);
     }
 
     /** A field for {@code values[index]}: a number typed applies the fog again. */
