@@ -7,7 +7,7 @@
 # usage: scripts/alpha-references.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
-GLREF=${GLREF:-/work/jars/glref}
+GLREF=${GLREF:-/tmp/glref}
 OUT=src/test/resources/dev/trisect/alpha
 mkdir -p "$OUT"
 python3 scripts/alpha-scene.py "$OUT"

@@ -8,7 +8,7 @@
 # usage: scripts/light-references.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
-GLREF=${GLREF:-/work/jars/glref}
+GLREF=${GLREF:-/tmp/glref}
 JAR=${JAR:-target/trisect.jar}
 [[ -f $JAR ]] || mvn -B -q package -DskipTests
 OUT=src/test/resources/dev/trisect/light

@@ -7,7 +7,7 @@
 # usage: scripts/line-references.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
-GLREF=${GLREF:-/work/jars/glref}
+GLREF=${GLREF:-/tmp/glref}
 OUT=src/test/resources/dev/trisect/lines
 mkdir -p "$OUT"
 python3 scripts/line-scene.py "$OUT"

@@ -7,7 +7,7 @@
 # without taken from the same round) and its median.
 #
 #   scripts/overlay-cost.sh A.jar [B.jar]
-#   REPS=5 THREADS=2 SIZE=1920x1080 scripts/overlay-cost.sh /work/jars/base.jar target/trisect.jar
+#   REPS=5 THREADS=2 SIZE=1920x1080 scripts/overlay-cost.sh /tmp/old.jar target/trisect.jar
 #
 # Scenes (SCENES, default "demo floor boxes sphere2k"): built-in scenes, and sphere2k, a textured
 # UV sphere of 1,984 triangles (32 x 32 segments) written to a temporary OBJ with a checker texture,

@@ -11,7 +11,7 @@
 # ratio from either mode pairing. Many JVMs show the distribution of modes instead.
 #
 #   scripts/separate-jvms.sh OLD.jar NEW.jar [SCENE] [WxH] [RUNS] [PATH...]
-#   RUNS=8: scripts/separate-jvms.sh /work/jars/base-fc91f7a.jar target/trisect.jar floor 1920x1080 8 perspective affine edge error
+#   RUNS=8: scripts/separate-jvms.sh /tmp/old.jar target/trisect.jar floor 1920x1080 8 perspective affine edge error
 #
 # PATH as for side-by-side.sh (edge, error@trilinear, edge+borders, ...). Environment: WARMUP
 # (frames per path before timing, default 40), FRAMES (timed frames per path, default 25).

@@ -88,7 +88,7 @@ class ArchitectureTest {
         assertEquals(List.of(), violations);
     }
 
-    /** The packages of the public API (module-info exports these alone); see /work/notes/api-design.md. */
+    /** The packages of the public API (module-info exports these alone); see docs/view.md and the Javadoc overview. */
     static final List<String> API = List.of("base", "math", "mesh", "texture", "render", "scene", "view");
 
     /** The module exports exactly the API packages (ApiSignaturesTest checks what their signatures name). */
