@@ -174,21 +174,13 @@ public abstract sealed class Node permits Group, SceneObject, Light {
      * Hears the mouse over this node in a view: for an object, the pointer entering and leaving it,
      * presses, drags, releases and clicks on it; for a group, the same for every object in it (each
      * passed on from the object unless a listener nearer it consumed it), and entering and leaving the
-     * group as a whole. On the event thread (see {@link PointerEvent}). A view records which object
-     * each pixel shows while anything in its scene listens, which costs its frames time.
+     * group as a whole. On the event thread (see {@link PointerEvent}). A view reads which object
+     * each pixel shows from the triangle ids every frame of it records: listening costs no frame time.
      *
      * @param listener told of each event
      */
     public void addPointerListener(PointerListener listener) {
-        Objects.requireNonNull(listener, "listener is null");
-        LOCK.lock();
-        try {
-            pointerListeners.add(listener);
-            // A view starts recording which object each pixel shows from its next frame.
-            changed();
-        } finally {
-            LOCK.unlock();
-        }
+        pointerListeners.add(Objects.requireNonNull(listener, "listener is null"));
     }
 
     /**

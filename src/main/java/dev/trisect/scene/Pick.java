@@ -13,8 +13,10 @@ import dev.trisect.texture.Texture;
  * @param u        the texture coordinate u at {@code point} (exact; (0, 0) is the texture's bottom-left)
  * @param v        the texture coordinate v at {@code point}
  * @param texture  the texture the triangle was drawn with
- * @param texelX   the column of the texel the pixel shows (from the frame's UV output, so as the
- *                 frame's path drew it), 0 at the left
+ * @param texelX   the column of the texel at ({@code u}, {@code v}) — nearest, with repeat, on the full
+ *                 size level: the texel the per-pixel perspective path shows there with nearest
+ *                 sampling (the other paths may show one beside it, within their error bound; the
+ *                 developer tools' pixel inspector tells the one the path drew) — 0 at the left
  * @param texelY   its row, 0 at the top of the texture image
  * @param x        the pixel's column, 0 at the left
  * @param y        the pixel's row, 0 at the top

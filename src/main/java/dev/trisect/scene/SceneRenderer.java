@@ -82,30 +82,32 @@ public final class SceneRenderer implements AutoCloseable {
         Drawn d = new Drawn(scene.capture(), camera, settings, frame.width(), frame.height(), draws);
         d.frame.withScreenText(scene.screenText());
         FrameStats stats = renderer.render(draws, settings, frame);
-        d.uvFrame = frame.uv() != null ? frame : null;
-        d.uvArray = frame.uv();
-        d.uvClears = frame.clearCount();
+        d.idsFrame = frame.ids() != null ? frame : null;
+        d.idsArray = frame.ids();
+        d.idsClears = frame.clearCount();
         last = d;
         return stats;
     }
 
     /**
      * What pixel (x, y) of the last frame drawn shows: the object, its triangle, the 3D point and the
-     * texel. It describes the objects as they were drawn, not as they may have moved since. When that
-     * frame recorded UV output ({@link Framebuffer#recordUv}) and nothing has been drawn into its
-     * framebuffer since ({@link Framebuffer#clearCount()}), it is read from there; otherwise the
-     * frame is drawn once more, with UV output, into a framebuffer of its own (the same pixels: drawing
-     * is deterministic) — about the cost of one frame, and {@value #REDRAW_BYTES_PER_PIXEL} bytes a pixel
-     * of memory (colour, depth and the UV output), 8 GiB for a 16384x16384 frame. When that does not fit
-     * in Java's heap, pick refuses with a message before drawing; a frame drawn with UV output recorded
-     * needs nothing more.
+     * texel. It describes the objects as they were drawn, not as they may have moved since. Which
+     * triangle the pixel shows is read from the frame's triangle ids; the point, the texture
+     * coordinates and the texel then follow from that triangle and the camera alone (see {@link Pick}).
+     * When that frame recorded its ids ({@link Framebuffer#recordIds}, or the UV output, which brings
+     * them) and nothing has been drawn into its framebuffer since ({@link Framebuffer#clearCount()}),
+     * they are read from there; otherwise the frame is drawn once more, recording them, into a
+     * framebuffer of its own (the same pixels: drawing is deterministic) — about the cost of one frame,
+     * and {@value #REDRAW_BYTES_PER_PIXEL} bytes a pixel of memory (colour, depth and ids), 3 GiB for a
+     * 16384x16384 frame. When that does not fit in Java's heap, pick refuses with a message before
+     * drawing; a frame drawn with its ids recorded needs nothing more.
      *
      * @param x the pixel's column, 0 at the left
      * @param y the pixel's row, 0 at the top
      * @return the pick, or empty where the pixel shows the background, or before the first frame
      * @throws IllegalArgumentException when (x, y) is outside the last frame
      * @throws IllegalStateException    after {@link #close()}, or when the frame must be drawn again for the
-     *                                  pick and its framebuffer with UV output does not fit in the heap (the
+     *                                  pick and its framebuffer with ids does not fit in the heap (the
      *                                  message says so and what helps)
      */
     public synchronized Optional<Pick> pick(int x, int y) {
@@ -120,33 +122,29 @@ public final class SceneRenderer implements AutoCloseable {
         }
         // The caller's framebuffer is read only while it still holds that frame: drawn into since
         // (by another renderer, or cleared), it would describe another picture.
-        Framebuffer held = d.uvFrame;
+        Framebuffer held = d.idsFrame;
         // The same array too: recording switched off and on again gives the framebuffer a new, empty one.
-        double[] uv = held != null && held.uv() != null && held.uv() == d.uvArray && held.clearCount() == d.uvClears
-                ? held.uv() : null;
-        if (uv == null) {
+        int[] ids = held != null && held.ids() != null && held.ids() == d.idsArray && held.clearCount() == d.idsClears
+                ? held.ids() : null;
+        if (ids == null) {
             Framebuffer f = redrawFrame(d.width, d.height);
             renderer.render(d.draws, d.settings.withBorders(false), f);
-            d.uvFrame = f;
-            d.uvArray = f.uv();
-            d.uvClears = f.clearCount();
-            uv = f.uv();
+            d.idsFrame = f;
+            d.idsArray = f.ids();
+            d.idsClears = f.clearCount();
+            ids = f.ids();
         }
-        int i = 3 * (y * d.width + x);
-        int id = (int) uv[i + 2] - 1;
-        if (id < 0) {
-            return Optional.empty();
-        }
-        return Optional.of(d.pick(id, uv[i], uv[i + 1], x, y));
+        int id = ids[y * d.width + x] - 1;
+        return id < 0 ? Optional.empty() : Optional.of(d.frame.pick(id, x, y));
     }
 
-    /** Bytes a pixel of {@link #pick}'s redraw takes: colour and depth (4 bytes each), UV output (3 doubles). */
-    static final int REDRAW_BYTES_PER_PIXEL = 32;
+    /** Bytes a pixel of {@link #pick}'s redraw takes: colour, depth and the triangle id, 4 bytes each. */
+    static final int REDRAW_BYTES_PER_PIXEL = 12;
 
     /**
-     * A framebuffer recording UV output for {@link #pick}'s redraw, or a refusal naming what it needs when
-     * it cannot fit: refused before allocating when it exceeds the heap's maximum, and likewise when the
-     * allocation itself runs out (the arrays made are garbage at once).
+     * A framebuffer recording the triangle ids for {@link #pick}'s redraw, or a refusal naming what it
+     * needs when it cannot fit: refused before allocating when it exceeds the heap's maximum, and likewise
+     * when the allocation itself runs out (the arrays made are garbage at once).
      */
     private static Framebuffer redrawFrame(int width, int height) {
         long bytes = (long) width * height * REDRAW_BYTES_PER_PIXEL;
@@ -155,7 +153,7 @@ public final class SceneRenderer implements AutoCloseable {
         }
         try {
             Framebuffer f = new Framebuffer(width, height);
-            f.recordUv(true);
+            f.recordIds(true);
             return f;
         } catch (OutOfMemoryError e) {
             throw redrawTooLarge(width, height, bytes);
@@ -164,8 +162,8 @@ public final class SceneRenderer implements AutoCloseable {
 
     private static IllegalStateException redrawTooLarge(int width, int height, long bytes) {
         return new IllegalStateException(String.format(java.util.Locale.ROOT, "pick: the last frame (%dx%d) "
-                + "recorded no UV output, and drawing it again with UV output needs %.1f MiB (%d bytes a pixel), "
-                + "more than Java's heap has room for: record the UV output as you draw (Framebuffer.recordUv(true)), "
+                + "recorded no triangle ids, and drawing it again with them needs %.1f MiB (%d bytes a pixel), "
+                + "more than Java's heap has room for: record the ids as you draw (Framebuffer.recordIds(true)), "
                 + "draw a smaller frame, or give Java more with -Xmx", width, height, bytes / 1048576.0,
                 REDRAW_BYTES_PER_PIXEL));
     }
@@ -225,12 +223,12 @@ public final class SceneRenderer implements AutoCloseable {
         final int width;
         final int height;
         final Draws draws;
-        /** The framebuffer holding this frame's UV output, or null. */
-        Framebuffer uvFrame;
-        /** {@link Framebuffer#clearCount()} of {@link #uvFrame} right after this frame was drawn into it. */
-        long uvClears;
-        /** The UV output array this frame was drawn into. */
-        double[] uvArray;
+        /** The framebuffer holding this frame's triangle ids, or null. */
+        Framebuffer idsFrame;
+        /** {@link Framebuffer#clearCount()} of {@link #idsFrame} right after this frame was drawn into it. */
+        long idsClears;
+        /** The ids array this frame was drawn into. */
+        int[] idsArray;
 
         Drawn(Scene.Snapshot snapshot, Camera camera, RenderSettings settings, int width, int height,
               Draws draws) {
@@ -239,10 +237,6 @@ public final class SceneRenderer implements AutoCloseable {
             this.width = width;
             this.height = height;
             this.draws = draws;
-        }
-
-        Pick pick(int id, double s, double t, int x, int y) {
-            return frame.pick(id, s, t, x, y);
         }
     }
 }

@@ -5,7 +5,7 @@ import java.awt.event.MouseEvent;
 
 /**
  * Hears about clicks on objects in a {@link TrisectView}: which object, which triangle of its mesh, the
- * exact 3D point and the texel under the mouse, as the frame on screen drew them.
+ * exact 3D point and the texel under the mouse, in the frame on screen (see {@link TrisectView#pick}).
  *
  * <p>Called on the event thread, for a click (a press and release without a drag) on a pixel that
  * shows an object; clicks on the background are not reported. The pick's {@code x, y} are the

@@ -7,7 +7,6 @@ import dev.trisect.scene.Node;
 import dev.trisect.scene.Pick;
 import dev.trisect.scene.Scene;
 import dev.trisect.view.internal.FramePainter;
-import dev.trisect.view.internal.FrameIds;
 import dev.trisect.view.internal.FrameSlot;
 import dev.trisect.view.internal.KeyboardFocus;
 import dev.trisect.view.internal.ViewController;
@@ -17,8 +16,6 @@ import java.awt.event.MouseEvent;
 import java.awt.image.BufferedImage;
 import java.util.Objects;
 import java.util.Optional;
-import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import javax.swing.Action;
 import javax.swing.JComponent;
@@ -184,9 +181,7 @@ public class TrisectView extends ViewDrawing {
 
     /**
      * Hears about clicks on objects, on the event thread (see {@link PickListener}). A click is picked
-     * against the frame on screen; when that frame kept no per-pixel texel coordinates (it does only
-     * while the developer tools measure), the render thread draws it once more to read them, so a
-     * click costs about one frame and frames cost nothing extra.
+     * against the frame on screen, from its triangle ids, as {@link #pick} does: nothing is drawn again.
      *
      * @param listener told of each click on an object
      * @throws IllegalStateException after {@link #close()}
@@ -215,34 +210,19 @@ public class TrisectView extends ViewDrawing {
     /**
      * What the frame on screen shows at view point (x, y): the object, its triangle, the exact 3D point
      * and the texel — as {@code SceneRenderer.pick} answers for the same frame — read from the frame's
-     * triangle ids, without drawing anything. A frame keeps its ids while anything in the scene listens
-     * to the pointer ({@link Node#addPointerListener}, {@link Node#setHoverHighlight}) and, after the
-     * first call of this method, always; when the frame on screen kept none, this call waits for the
-     * render thread to draw it once more with them (about one frame). Event thread.
+     * triangle ids, which every frame records, and never drawing anything: the triangle from the ids,
+     * the point, texture coordinates and texel from that triangle and the frame's camera (see
+     * {@link Pick}). Event thread.
      *
      * @param x the point's column in the view, logical pixels (as mouse events give it)
      * @param y its row
      * @return the pick, or empty where the frame shows no object, outside the view, or before the first frame
      */
     public Optional<Pick> pick(int x, int y) {
-        FrameSlot f = controller.front();
-        if (f == null || f.drawn == null || x < 0 || y < 0 || x >= getWidth() || y >= getHeight()) {
+        if (x < 0 || y < 0 || x >= getWidth() || y >= getHeight()) {
             return Optional.empty();
         }
-        if (FrameIds.has(f)) {
-            return Optional.ofNullable(mouse.pickAt(x, y));
-        }
-        state.idsWanted(true);
-        CompletableFuture<Pick> answer = new CompletableFuture<>();
-        state.picks.request(f, mouse.frameX(f, x), mouse.frameY(f, y), answer::complete);
-        try {
-            return Optional.ofNullable(answer.get(10, TimeUnit.SECONDS));
-        } catch (java.util.concurrent.ExecutionException | java.util.concurrent.TimeoutException e) {
-            throw new IllegalStateException("the render thread did not answer the pick: " + e, e);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            return Optional.empty();
-        }
+        return Optional.ofNullable(mouse.pickAt(x, y));
     }
 
     /**

@@ -8,7 +8,7 @@ import dev.trisect.texture.ProceduralTextures;
 
 /**
  * Run in a JVM with a small heap by {@link PickMemoryTest}: draws a box into a frame of the given side
- * (which fits), then picks its centre, which must draw the frame again with UV output. Prints the
+ * (which fits), then picks its centre, which must draw the frame again with its triangle ids. Prints the
  * refusal's message on standard error and exits 0 when pick refuses with one, 1 when it runs out of
  * memory bare, 2 when it answers.
  */

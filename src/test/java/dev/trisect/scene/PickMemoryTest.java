@@ -10,7 +10,7 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 
 /**
- * pick() on a frame drawn without UV output draws it again with one (32 bytes a pixel): where that does
+ * pick() on a frame drawn without its triangle ids draws it again with them (12 bytes a pixel): where that does
  * not fit the heap, it refuses with a message saying what helps, never a bare OutOfMemoryError.
  */
 class PickMemoryTest {
@@ -27,9 +27,9 @@ class PickMemoryTest {
 
     @Test
     void aRedrawLargerThanTheHeapIsRefusedWithWhatHelps() throws Exception {
-        // 2048x2048 draws in 32 MiB (8 bytes a pixel); the redraw needs 128 MiB, more than the heap.
-        String err = run("-Xmx96m", 2048, 0);
-        assertTrue(err.contains("2048x2048") && err.contains("128.0 MiB") && err.contains("recordUv")
+        // 3000x3000 draws in 69 MiB (8 bytes a pixel); the redraw needs 103 MiB, more than the heap.
+        String err = run("-Xmx96m", 3000, 0);
+        assertTrue(err.contains("3000x3000") && err.contains("103.0 MiB") && err.contains("recordIds")
                 && err.contains("-Xmx"), err);
     }
 

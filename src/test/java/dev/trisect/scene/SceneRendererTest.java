@@ -169,6 +169,14 @@ class SceneRendererTest {
             f.recordUv(false);
             f.recordUv(true);
             assertEquals(p, r.pick(120, 100).orElseThrow());
+            // The ids alone (what a view records): read from the frame, with the same answer.
+            f.recordUv(false);
+            f.recordIds(true);
+            r.render(scene, CAMERA, PERSPECTIVE, f);
+            assertEquals(p, r.pick(120, 100).orElseThrow());
+            // Another path: the same triangle, point and texel (all from the triangle and the camera).
+            r.render(scene, CAMERA, RenderSettings.display(), f);
+            assertEquals(p, r.pick(120, 100).orElseThrow());
             assertThrows(IllegalArgumentException.class, () -> r.pick(200, 0));
         }
     }

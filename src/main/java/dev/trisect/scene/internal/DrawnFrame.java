@@ -175,10 +175,13 @@ public final class DrawnFrame {
     }
 
     /**
-     * The pick at pixel (x, y) showing frame triangle {@code id} (0-based: the UV output's id minus
-     * 1) with texel coordinates (s, t) (from the UV output).
+     * The pick at pixel (x, y) showing frame triangle {@code id} (0-based: the frame's triangle id
+     * minus 1, {@link dev.trisect.render.Framebuffer#ids()}): everything from the triangle and the
+     * frame's camera alone — the ray through the pixel centre met with the triangle's plane gives the
+     * point, its barycentric weights the texture coordinates, and those the texel — so no UV output and
+     * no redraw is needed.
      */
-    public Pick pick(int id, double s, double t, int x, int y) {
+    public Pick pick(int id, int x, int y) {
         int k = draws.drawOf(id);
         Scene.Placed o = placed.get(k);
         int tri = id - draws.firstTriangle(k);
@@ -217,7 +220,8 @@ public final class DrawnFrame {
         double b0 = 1 - b1 - b2;
         double u = b0 * cu[0] + b1 * cu[1] + b2 * cu[2];
         double v = b0 * cv[0] + b1 * cv[1] + b2 * cv[2];
-        int index = texture.texelIndex(s, t);
+        // The texel at (u, v), level 0, nearest with repeat: the one the per-pixel perspective path samples.
+        int index = texture.texelIndex(u * texture.width(), v * texture.height());
         return new Pick(o.object(), tri, point, u, v, texture, index % texture.width(), index / texture.width(),
                 x, y);
     }

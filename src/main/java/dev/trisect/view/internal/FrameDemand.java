@@ -31,7 +31,7 @@ public final class FrameDemand {
     /** Everything the last frame was drawn from that a host or user may change. */
     private record Seen(Scene scene, long version, ViewSettings settings, long size, long home,
                         ViewState.Controls controls, ViewState.Budget budget, long inspected, long[] pins,
-                        Object hovered, boolean ids) {
+                        Object hovered) {
     }
 
     private final Set<Object> reasons = ConcurrentHashMap.newKeySet();
@@ -116,6 +116,6 @@ public final class FrameDemand {
     private static Seen seen(ViewState state, long size) {
         Scene scene = state.scene();
         return new Seen(scene, scene.version(), state.settings(), size, state.home().serial(), state.controls(),
-                state.budget(), state.inspected(), state.pins(), state.hovered(), state.idsWanted());
+                state.budget(), state.inspected(), state.pins(), state.hovered());
     }
 }

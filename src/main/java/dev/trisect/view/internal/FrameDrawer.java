@@ -125,8 +125,10 @@ final class FrameDrawer {
         long inspected = state.inspected();
         boolean needReference = settings.view() != ViewKind.IMAGE || compareDue || inspected >= 0;
         Framebuffer fb = back.frame;
-        // The triangle ids come with the UV output: kept for the comparison, and while anything picks.
-        fb.recordUv(needReference || FrameIds.wanted(state, drawn.placed()));
+        // The triangle ids always (picking and the pointer read them: no pick draws again); the UV output
+        // only for the comparison and the inspector.
+        fb.recordIds(true);
+        fb.recordUv(needReference);
         Viewport viewport = new Viewport(fw, fh);
         long compareStart = System.nanoTime();
         double[] paths = null;

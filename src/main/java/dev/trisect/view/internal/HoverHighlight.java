@@ -24,8 +24,8 @@ final class HoverHighlight {
      */
     void apply(Framebuffer frame, Draws draws, List<Scene.Placed> placed, Node owner) {
         Highlight h = owner == null ? null : owner.hoverHighlight();
-        double[] uv = frame.uv();
-        if (h == null || uv == null) {
+        int[] ids = frame.ids();
+        if (h == null || ids == null) {
             return;
         }
         // The frame triangles of the marked objects: one range of ids per draw.
@@ -50,7 +50,7 @@ final class HoverHighlight {
             marks = new byte[w * hgt];
         }
         for (int i = 0; i < w * hgt; i++) {
-            marks[i] = marked((int) uv[3 * i + 2] - 1, n) ? (byte) 1 : 0;
+            marks[i] = marked(ids[i] - 1, n) ? (byte) 1 : 0;
         }
         int rgb = h.rgb();
         for (int y = 0; y < hgt; y++) {

@@ -122,7 +122,6 @@ public final class RenderLoop implements Runnable {
             while (running) {
                 // Read before looking for work: a change made while looking still wakes the wait below.
                 long seen = ChangeSignal.epoch();
-                servePicks();
                 int w = state.viewWidth();
                 int h = state.viewHeight();
                 if (w <= 0 || h <= 0) {
@@ -233,18 +232,6 @@ public final class RenderLoop implements Runnable {
     private boolean update(double seconds, long frame) {
         LoopListener l = listener;
         return l != null && l.update(seconds, frame);
-    }
-
-    /** Answers a click on the frame on screen, between frames (a failure is said once, as a frame's). */
-    private void servePicks() {
-        try {
-            state.picks.serve(renderer);
-        } catch (RuntimeException | OutOfMemoryError e) {
-            LoopListener l = listener;
-            if (l != null) {
-                l.problem(failure("pick", e));
-            }
-        }
     }
 
     private void awaitPaint(long serial) {

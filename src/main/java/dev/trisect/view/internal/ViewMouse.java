@@ -7,7 +7,6 @@ import java.awt.event.MouseEvent;
 import java.awt.event.MouseWheelEvent;
 import java.util.function.Consumer;
 import javax.swing.JComponent;
-import javax.swing.SwingUtilities;
 
 /**
  * A view's mouse: drags turn the camera (or move the split view's divider), the wheel moves it, the
@@ -169,24 +168,15 @@ public final class ViewMouse extends MouseAdapter {
     }
 
     /**
-     * Picks what the frame on screen shows under a click and gives it to {@code picked} on the event
-     * thread (at once when the frame kept its UV output, else after the render thread drew it again);
-     * nothing before the first frame, or where the pixel shows the background.
+     * What the frame on screen shows under a click, from its triangle ids (nothing is drawn): given to
+     * {@code picked}, on the event thread, unless the pixel shows the background or no frame is on
+     * screen yet.
      */
     public void pick(MouseEvent click, Consumer<Pick> picked) {
-        FrameSlot f = controller.front();
-        if (f == null || f.drawn == null) {
-            return;
+        Pick pick = pickAt(click.getX(), click.getY());
+        if (pick != null) {
+            picked.accept(pick);
         }
-        state().picks.request(f, frameX(f, click.getX()), frameY(f, click.getY()), pick -> {
-            if (pick != null) {
-                if (SwingUtilities.isEventDispatchThread()) {
-                    picked.accept(pick);
-                } else {
-                    SwingUtilities.invokeLater(() -> picked.accept(pick));
-                }
-            }
-        });
     }
 
     /** The frame column under view point x (logical pixels). */

@@ -34,15 +34,12 @@ public final class ViewState {
     public final InputState input = new InputState();
     /** Freeze and step: set by the event thread, obeyed by the render loop. */
     public final FreezeGate freeze = new FreezeGate();
-    /** Clicks to pick: asked by the event thread, answered by the render loop between frames. */
-    public final Picks picks = new Picks();
     /** Whether a frame is due, and the pace of animated ones. */
     public final FrameDemand demand = new FrameDemand();
     /** Frames per second at most, as the host set it: 0 for no cap, NaN for the screen's refresh rate. */
     private volatile double maxFrameRate = Double.NaN;
     /** The refresh rate of the view's screen, frames per second (60 when the screen does not say). */
     private volatile double screenRate = DEFAULT_FRAME_RATE;
-    private volatile boolean idsWanted;
     /** The node whose hover highlight the frames draw: the one under the pointer holding one; null for none. */
     private volatile dev.trisect.scene.Node hovered;
     private volatile ViewSettings settings = ViewSettings.defaults();
@@ -351,17 +348,6 @@ public final class ViewState {
 
     public void budgetChoice(BudgetChoice c) {
         budgetChoice = c;
-    }
-
-    /** Whether frames record their triangle ids whatever the scene holds (the view was asked for a pick). */
-    public boolean idsWanted() {
-        return idsWanted;
-    }
-
-    /** Makes every frame from the next on record its triangle ids (or stops asking for them). */
-    public void idsWanted(boolean on) {
-        idsWanted = on;
-        ChangeSignal.signal();
     }
 
     /** The node whose hover highlight the frames draw, or null. */
