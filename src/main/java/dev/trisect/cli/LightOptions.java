@@ -11,6 +11,7 @@ import dev.trisect.pipeline.Draws;
 import dev.trisect.render.Colour;
 import dev.trisect.render.Fog;
 import dev.trisect.render.Shading;
+import dev.trisect.scene.internal.BlendOrder;
 import dev.trisect.texture.Texture;
 import java.util.Arrays;
 import java.util.LinkedHashMap;
@@ -109,13 +110,15 @@ final class LightOptions {
 
     /**
      * One draw of {@code mesh}, world space = object space, every material lit as the options say,
-     * with the lights and the fog: what compare and bench draw.
+     * with the lights and the fog: what compare and bench draw. Each material is written as its
+     * texture's alpha says (opaque, alpha-tested, blended: {@link BlendOrder#states(Texture[])}), its
+     * triangles in file order, as the view draws the model as one object.
      */
     Draws draws(Mesh mesh, Texture[] textures, Mat4 viewProjection) {
         Draws d = new Draws();
         Surface[] surfaces = new Surface[mesh.materialCount()];
         Arrays.fill(surfaces, new Surface(shading(), Colour.WHITE, Colour.WHITE));
-        d.add(mesh, textures, viewProjection, Mat4.identity(), surfaces);
+        d.add(mesh, textures, BlendOrder.states(textures), viewProjection, Mat4.identity(), surfaces);
         d.setLights(lights());
         d.setFog(fog().orElse(null));
         return d;

@@ -5,6 +5,7 @@ import dev.trisect.mesh.Lines;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.pipeline.Draws;
 import dev.trisect.scene.Camera;
+import dev.trisect.scene.internal.BlendOrder;
 import dev.trisect.texture.Texture;
 import java.util.List;
 
@@ -52,8 +53,9 @@ public record SceneAsset(String name, String description, Mesh mesh, List<Textur
     }
 
     /**
-     * Sets {@code draws} to this scene seen through {@code viewProjection}: its mesh, then its lines (if
-     * any) {@code lineWidth} pixels wide.
+     * Sets {@code draws} to this scene seen through {@code viewProjection}: its mesh (each material
+     * written as its texture's alpha says, {@link BlendOrder#states(Texture[])}), then its lines (if any)
+     * {@code lineWidth} pixels wide.
      *
      * @param draws          cleared and filled
      * @param viewProjection world space to clip space
@@ -62,7 +64,8 @@ public record SceneAsset(String name, String description, Mesh mesh, List<Textur
      */
     public Draws draws(Draws draws, Mat4 viewProjection, int lineWidth) {
         draws.clear();
-        draws.add(mesh, textureArray(), viewProjection);
+        Texture[] textures = textureArray();
+        draws.add(mesh, textures, BlendOrder.states(textures), viewProjection);
         if (!lines.isEmpty()) {
             draws.addLines(lines, viewProjection, lineWidth);
         }

@@ -7,6 +7,7 @@ import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.render.FrameStats;
 import dev.trisect.render.Framebuffer;
 import dev.trisect.render.RenderSettings;
+import dev.trisect.scene.internal.BlendOrder;
 import dev.trisect.texture.Texture;
 
 /**
@@ -53,7 +54,7 @@ public final class FrameBench {
 
     private static Draws one(SceneAsset scene, Texture[] textures, Mat4 viewProjection) {
         Draws d = new Draws();
-        d.add(scene.mesh(), textures, viewProjection);
+        d.add(scene.mesh(), textures, BlendOrder.states(textures), viewProjection);
         if (!scene.lines().isEmpty()) {
             d.addLines(scene.lines(), viewProjection, 1);
         }

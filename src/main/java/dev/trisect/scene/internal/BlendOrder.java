@@ -4,6 +4,7 @@ import dev.trisect.math.Mat4;
 import dev.trisect.raster.PixelState;
 import dev.trisect.scene.Material;
 import dev.trisect.scene.Scene;
+import dev.trisect.texture.Texture;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
@@ -13,9 +14,10 @@ import java.util.List;
  * ({@link Material.AlphaMode#BLEND}) after all the others, farthest first by the eye depth (clip w) of
  * their mesh's centre (the middle of its bounding box), so that each blends over what is behind it; the
  * others in scene order. Triangles within one blended object are not sorted (docs/conventions.md,
- * "Transparency"); objects at one depth keep their scene order.
+ * "Transparency"); objects at one depth keep their scene order. The command line's one-object
+ * frames ({@code render --obj}) take their materials' writes from {@link #states(Texture[])}.
  */
-final class BlendOrder {
+public final class BlendOrder {
     private BlendOrder() {
     }
 
@@ -92,12 +94,33 @@ final class BlendOrder {
     static int[] states(List<Material> materials) {
         int[] states = new int[materials.size()];
         for (int i = 0; i < states.length; i++) {
-            states[i] = switch (materials.get(i).alphaMode()) {
-                case OPAQUE -> PixelState.TEXEL | PixelState.OPAQUE;
-                case ALPHA_TEST -> PixelState.TEXEL | PixelState.ALPHA_TEST;
-                case BLEND -> PixelState.TEXEL | PixelState.BLEND;
-            };
+            states[i] = state(materials.get(i).alphaMode());
         }
         return states;
+    }
+
+    /**
+     * The pixel state of a material showing each texture, as a scene object's: its write from the texture's
+     * alpha ({@link Material#alphaMode()}: opaque, alpha-tested or blended) with the texel as its colour.
+     * What the command line draws an OBJ's materials with, so that {@code render --obj} and the view
+     * write a model alike.
+     *
+     * @param textures one per material
+     * @return one state per material
+     */
+    public static int[] states(Texture[] textures) {
+        int[] states = new int[textures.length];
+        for (int i = 0; i < states.length; i++) {
+            states[i] = state(Material.of(textures[i]).alphaMode());
+        }
+        return states;
+    }
+
+    private static int state(Material.AlphaMode mode) {
+        return switch (mode) {
+            case OPAQUE -> PixelState.TEXEL | PixelState.OPAQUE;
+            case ALPHA_TEST -> PixelState.TEXEL | PixelState.ALPHA_TEST;
+            case BLEND -> PixelState.TEXEL | PixelState.BLEND;
+        };
     }
 }
