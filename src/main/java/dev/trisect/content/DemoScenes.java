@@ -148,10 +148,36 @@ public final class DemoScenes {
     private static void addCrates(MeshBuilder b, List<Texture> textures) {
         b.material("crate");
         textures.add(ProceduralTextures.crate(256));
-        Primitives.box(b, new Vec3(0, 1, -6), new Vec3(2, 2, 2));
-        Primitives.box(b, new Vec3(2.6, 0.6, -4), new Vec3(1.2, 1.2, 1.2));
-        Primitives.box(b, new Vec3(-2.2, 0.75, -3.5), new Vec3(1.5, 1.5, 1.5));
-        Primitives.box(b, new Vec3(1.2, 2.5, -6.3), new Vec3(1, 1, 1));
-        Primitives.box(b, new Vec3(-1, 1.5, -16), new Vec3(3, 3, 3));
+        for (double[] c : CRATES) {
+            Primitives.box(b, new Vec3(c[0], c[1], c[2]), new Vec3(c[3], c[3], c[3]));
+        }
+    }
+
+    /** The crates of the demo and boxes scenes: centre x, y, z and side, metres. */
+    private static final double[][] CRATES = {{0, 1, -6, 2}, {2.6, 0.6, -4, 1.2}, {-2.2, 0.75, -3.5, 1.5},
+        {1.2, 2.5, -6.3, 1}, {-1, 1.5, -16, 3}};
+
+    /**
+     * Where the things of a built-in scene stand, for labels: each thing's name and the middle of its top,
+     * world space, metres (the crates named by their size, the wall, the globe); empty for the floor, the
+     * globes and names that are not built in.
+     *
+     * @param name a built-in scene's name, case-insensitive
+     * @return name to point, in a fixed order
+     */
+    public static Map<String, Vec3> landmarks(String name) {
+        String n = name.toLowerCase(Locale.ROOT);
+        Map<String, Vec3> at = new LinkedHashMap<>();
+        if (n.equals("demo") || n.equals("boxes")) {
+            for (double[] c : CRATES) {
+                at.put("crate " + (c[3] == Math.rint(c[3]) ? Long.toString(Math.round(c[3])) : Double.toString(c[3]))
+                        + " m", new Vec3(c[0], c[1] + c[3] / 2, c[2]));
+            }
+        }
+        if (n.equals("demo")) {
+            at.put("brick wall, 80 m", new Vec3(6, 3, -12));
+            at.put("globe", new Vec3(-3.5, 3.2, -9));
+        }
+        return at;
     }
 }

@@ -58,6 +58,17 @@ final class DemoCommands {
                         java.util.Locale.ROOT))), false),
                 new Entry(Menu.SCENE, toggle("Fog", "OpenGL's linear fog towards the sky's colour", KeyStroke.getKeyStroke(
                         KeyEvent.VK_G, 0), w.lighting::setFog), true),
+                new Entry(Menu.SCENE, toggle("Labels, axes and glass pane", "Labels on the scene's things, an axes "
+                        + "gizmo at the origin and a blended glass pane: the engine's lines, text and transparency "
+                        + "(the command line draws the scene without them)", KeyStroke.getKeyStroke(KeyEvent.VK_X, 0),
+                        w.shapes::setExtras), true),
+                new Entry(Menu.SCENE, command("Wireframe: filled, filled and wire, wire", "Draw the scene's objects "
+                        + "filled, filled with their edges over them, then as wire alone", KeyStroke.getKeyStroke(
+                        KeyEvent.VK_Z, 0), () -> w.status("Wireframe: " + w.shapes.cycleStyle().name().toLowerCase(
+                        java.util.Locale.ROOT).replace('_', ' '))), false),
+                new Entry(Menu.SCENE, toggle("Frame-rate HUD", "A line in the frame's bottom-left corner, drawn by the "
+                        + "engine as screen text: frames per second and milliseconds a frame", KeyStroke.getKeyStroke(
+                        KeyEvent.VK_H, 0), w.shapes::setHud), true),
                 new Entry(Menu.HELP, command("Keys and mouse", "Show every key and mouse gesture of the demo in a "
                         + "panel", KeyStroke.getKeyStroke(KeyEvent.VK_F1, 0), w::toggleHelp), false));
     }
@@ -96,6 +107,16 @@ final class DemoCommands {
         a.putValue(Action.ACCELERATOR_KEY, key);
         a.putValue(Action.SELECTED_KEY, false);
         return a;
+    }
+
+    /** The value after {@code current} in a key's {@code cycle}, round to the first (the first when it is not in it). */
+    static <T> T next(T[] cycle, T current) {
+        for (int i = 0; i < cycle.length; i++) {
+            if (cycle[i] == current) {
+                return cycle[(i + 1) % cycle.length];
+            }
+        }
+        return cycle[0];
     }
 
     /** Ctrl and a key. */

@@ -41,6 +41,11 @@ final class DemoHelp {
         {"P", "split policy: Edge or Error (Render menu: Split policy: …); the status bar says which"},
         {"L", "lighting: off, flat, smooth (a lamp from the camera, a warm light circling the scene, a dim ambient)"},
         {"G", "fog on/off: linear, towards the sky's colour"},
+        {"X", "labels on the scene's things, an axes gizmo at the origin and a glass pane on/off (off at start, so "
+            + "that the frame is the command line's)"},
+        {"Z", "wireframe: filled, filled with the edges over it, wire alone"},
+        {"H", "frame-rate HUD on/off: frames per second and milliseconds a frame, drawn by the engine in the "
+            + "frame's bottom-left corner"},
         {"F12", "developer tools"},
         {"F1", "this table of keys and mouse gestures, in a panel"},
         {"Ctrl+O", "open an OBJ model"},

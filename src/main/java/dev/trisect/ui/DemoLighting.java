@@ -62,13 +62,7 @@ final class DemoLighting implements UpdateListener {
 
     /** Steps to the next lighting state (off, flat, smooth) and returns it. */
     Shading cycle() {
-        int next = 0;
-        for (int i = 0; i < CYCLE.length; i++) {
-            if (CYCLE[i] == shading) {
-                next = (i + 1) % CYCLE.length;
-            }
-        }
-        shading = CYCLE[next];
+        shading = DemoCommands.next(CYCLE, shading);
         apply();
         return shading;
     }

@@ -56,6 +56,8 @@ final class DemoWindow {
     final FileMenu fileMenu;
     /** The demo's light and fog (keys L and G). */
     final DemoLighting lighting;
+    /** The demo's labels, axes and glass pane, wireframe and heads-up line (keys X, Z and H). */
+    final DemoShapes shapes;
 
     DemoWindow(SceneAsset scene, int threads) {
         this(scene, threads, new RecentFiles());
@@ -69,6 +71,8 @@ final class DemoWindow {
         view.setCamera(scene.camera());
         lighting = new DemoLighting(view);
         lighting.sceneShown(view.getScene(), scene.camera());
+        shapes = new DemoShapes(view, () -> latest);
+        shapes.sceneShown(view.getScene(), scene.camera());
         view.setPreferredSize(new Dimension(1280, 720));
         view.addFrameListener(f -> {
             latestAt = System.nanoTime();
@@ -249,6 +253,7 @@ final class DemoWindow {
         view.setScene(AssetScenes.scene(s));
         view.setCamera(s.camera());
         lighting.sceneShown(view.getScene(), s.camera());
+        shapes.sceneShown(view.getScene(), s.camera());
         frame.setTitle(title(s));
         // A new scene: the last one's note (a placeholder texture) no longer applies.
         sceneNote(null);

@@ -13,7 +13,8 @@ import javax.swing.SwingUtilities;
  * The screenshots of docs/demo.md that show the developer tools' newer features, taken from the real
  * demo window on an X server with ImageMagick's {@code import}: the Difference view with its legend
  * (demo-heatmap.png), the inspector with pinned pixels and the magnifier's note (demo-pins.png), the
- * tools window docked beside the demo (demo-docked.png). Run by {@code scripts/demo-shots.sh}.
+ * tools window docked beside the demo (demo-docked.png), and the scene's labels, axes gizmo, glass pane,
+ * wireframe and frame-rate HUD (X, Z, H: demo-shapes.png). Run by {@code scripts/demo-shots.sh}.
  */
 public final class DemoShots {
     private DemoShots() {
@@ -26,6 +27,21 @@ public final class DemoShots {
         ViewState state = c.state();
         try {
             SwingUtilities.invokeAndWait(() -> w.frame().setBounds(0, 0, 1000, 640));
+            settle();
+            // Labels, the axes gizmo and the glass pane (X), the objects filled with their wire (Z), the HUD (H).
+            SwingUtilities.invokeAndWait(() -> {
+                w.shapes.setExtras(true);
+                w.shapes.cycleStyle();
+                w.shapes.setHud(true);
+            });
+            settle();
+            shoot(viewBounds(w), docs.resolve("demo-shapes.png"));
+            SwingUtilities.invokeAndWait(() -> {
+                w.shapes.setExtras(false);
+                w.shapes.cycleStyle();
+                w.shapes.cycleStyle();
+                w.shapes.setHud(false);
+            });
             settle();
             // The heat map of the tessellated path against the per-pixel one, its legend on its panel.
             SwingUtilities.invokeAndWait(() -> w.view().action(ViewAction.SHOW_DIFFERENCE).actionPerformed(null));
