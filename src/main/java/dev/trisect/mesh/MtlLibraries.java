@@ -12,7 +12,7 @@ import java.util.Set;
 
 /**
  * The MTL material libraries an OBJ file names with {@code mtllib}: finding each beside the OBJ file,
- * reading each once, and what their {@code newmtl} and {@code map_Kd} statements give each material —
+ * reading each once, and what their {@code newmtl}, {@code map_Kd}, {@code Kd} and {@code Ka} statements give each material —
  * its texture file (absolute, normalized, relative names resolved against the MTL's directory), where
  * that was given ({@code mtl-file:line}) and its texel-coordinate transform ({@code -s}, {@code -o}).
  * Its messages name the MTL file and line, or the OBJ line of the {@code mtllib} for a library that
@@ -30,6 +30,8 @@ final class MtlLibraries {
     private final Map<String, float[]> uvTransforms = new HashMap<>();
     /** Each material's {@code Kd} as 0xRRGGBB; absent for none. */
     private final Map<String, Integer> diffuse = new HashMap<>();
+    /** Each material's {@code Ka} as 0xRRGGBB; absent for none. */
+    private final Map<String, Integer> ambient = new HashMap<>();
     /** Absolute and normalized, in the order the OBJ names them. */
     private final Set<Path> librariesRead = new LinkedHashSet<>();
 
@@ -54,6 +56,11 @@ final class MtlLibraries {
      */
     int diffuse(String material) {
         return diffuse.getOrDefault(material, 0xFFFFFF);
+    }
+
+    /** The ambient colour ({@code Ka}) of {@code material} as {@link #diffuse} gives Kd, or null for none. */
+    Integer ambient(String material) {
+        return ambient.get(material);
     }
 
     /** Whether a library read gives {@code material} a {@code Kd}. */
@@ -118,6 +125,7 @@ final class MtlLibraries {
                 textureSources.remove(material);
                 uvTransforms.remove(material);
                 diffuse.remove(material);
+                ambient.remove(material);
             } else if (mtlLines.is(0, "map_Kd")) {
                 if (material == null) {
                     throw mtlLines.error("map_Kd before any newmtl");
@@ -127,19 +135,24 @@ final class MtlLibraries {
                 if (material == null) {
                     throw mtlLines.error("Kd before any newmtl");
                 }
-                diffuse.put(material, kd(mtlLines));
+                diffuse.put(material, colour(mtlLines, "Kd"));
+            } else if (mtlLines.is(0, "Ka")) {
+                if (material == null) {
+                    throw mtlLines.error("Ka before any newmtl");
+                }
+                ambient.put(material, colour(mtlLines, "Ka"));
             }
         }
     }
 
     /**
-     * {@code Kd r [g b]}: the MTL specification's RGB form (g and b default to r). The {@code spectral}
-     * and {@code xyz} forms are refused rather than misread.
+     * {@code Kd r [g b]} or {@code Ka r [g b]} ({@code what}): the MTL specification's RGB form (g and b
+     * default to r). The {@code spectral} and {@code xyz} forms are refused rather than misread.
      */
-    private static int kd(LineScanner mtlLines) {
+    private static int colour(LineScanner mtlLines, String what) {
         int n = mtlLines.count() - 1;
         if (n != 1 && n != 3) {
-            throw mtlLines.error("Kd needs r g b (or one grey level), got " + n + (n == 1 ? " value" : " values"));
+            throw mtlLines.error(what + " needs r g b (or one grey level), got " + n + (n == 1 ? " value" : " values"));
         }
         int rgb = 0;
         for (int i = 1; i <= 3; i++) {
@@ -148,11 +161,11 @@ final class MtlLibraries {
             try {
                 k = Float.parseFloat(text);
             } catch (NumberFormatException e) {
-                throw mtlLines.error("Kd: malformed number " + LineScanner.quote(text)
+                throw mtlLines.error(what + ": malformed number " + LineScanner.quote(text)
                         + " (only the r g b form is supported)");
             }
             if (!Float.isFinite(k)) {
-                throw mtlLines.error("Kd needs finite numbers");
+                throw mtlLines.error(what + " needs finite numbers");
             }
             rgb = rgb << 8 | Math.round(255 * Math.max(0f, Math.min(1f, k)));
         }

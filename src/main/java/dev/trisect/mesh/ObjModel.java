@@ -24,9 +24,13 @@ import java.util.Objects;
  * @param materialColours  one entry per material, same order: its {@code Kd} as 0xRRGGBB (each channel
  *                         {@code round(255 * clamp(k, 0, 1))}), or null where the material has none.
  *                         Unmodifiable; may contain nulls.
+ * @param materialAmbients one entry per material, same order: its {@code Ka} (the ambient colour: the
+ *                         factor of the ambient light it reflects) as 0xRRGGBB in the same form, or
+ *                         null where the material has none. Unmodifiable; may contain nulls.
  */
 public record ObjModel(Mesh mesh, List<Path> materialTextures, List<String> textureSources,
-                       List<Path> materialLibraries, Lines lines, List<Integer> materialColours) {
+                       List<Path> materialLibraries, Lines lines, List<Integer> materialColours,
+                       List<Integer> materialAmbients) {
 
     /**
      * Checks that there is one entry per material in each list and keeps unmodifiable copies.
@@ -37,15 +41,17 @@ public record ObjModel(Mesh mesh, List<Path> materialTextures, List<String> text
      * @param materialLibraries the MTL files read
      * @param lines             the {@code l} elements
      * @param materialColours   each material's {@code Kd}, or null
+     * @param materialAmbients  each material's {@code Ka}, or null
      * @throws IllegalArgumentException when a list's length is not the mesh's material count
      */
     public ObjModel {
         Objects.requireNonNull(mesh, "mesh");
         Objects.requireNonNull(lines, "lines");
         materialColours = Collections.unmodifiableList(new ArrayList<>(materialColours));
-        if (materialColours.size() != mesh.materialCount()) {
-            throw new IllegalArgumentException(materialColours.size() + " material colours for "
-                    + mesh.materialCount() + " materials");
+        materialAmbients = Collections.unmodifiableList(new ArrayList<>(materialAmbients));
+        if (materialColours.size() != mesh.materialCount() || materialAmbients.size() != mesh.materialCount()) {
+            throw new IllegalArgumentException(materialColours.size() + " material colours and "
+                    + materialAmbients.size() + " ambient colours for " + mesh.materialCount() + " materials");
         }
         materialLibraries = List.copyOf(materialLibraries);
         // List.copyOf rejects nulls, which mean "no texture" here.
@@ -55,6 +61,22 @@ public record ObjModel(Mesh mesh, List<Path> materialTextures, List<String> text
             throw new IllegalArgumentException(materialTextures.size() + " material textures and "
                     + textureSources.size() + " sources for " + mesh.materialCount() + " materials");
         }
+    }
+
+    /**
+     * A model whose materials have no {@code Ka}.
+     *
+     * @param mesh              the triangles
+     * @param materialTextures  each material's texture file, or null
+     * @param textureSources    where each material's texture was named, or null
+     * @param materialLibraries the MTL files read
+     * @param lines             the {@code l} elements
+     * @param materialColours   each material's {@code Kd}, or null
+     */
+    public ObjModel(Mesh mesh, List<Path> materialTextures, List<String> textureSources,
+                    List<Path> materialLibraries, Lines lines, List<Integer> materialColours) {
+        this(mesh, materialTextures, textureSources, materialLibraries, lines, materialColours,
+                Collections.nCopies(mesh.materialCount(), null));
     }
 
     /**

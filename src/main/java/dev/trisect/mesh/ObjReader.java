@@ -108,13 +108,15 @@ public final class ObjReader {
         List<Path> materialTextures = new ArrayList<>();
         List<String> sources = new ArrayList<>();
         List<Integer> colours = new ArrayList<>();
+        List<Integer> ambients = new ArrayList<>();
         for (String name : mesh.materialNames()) {
             materialTextures.add(libraries.texture(name));
             sources.add(libraries.source(name));
             colours.add(libraries.hasDiffuse(name) ? libraries.diffuse(name) : null);
+            ambients.add(libraries.ambient(name));
         }
         return new ObjModel(built, materialTextures, sources, libraries.files(),
-                mesh.toLines(built.positions(), libraries::diffuse), colours);
+                mesh.toLines(built.positions(), libraries::diffuse), colours, ambients);
     }
 
     /** A {@code v} ({@link ObjMeshArrays#V}) or {@code vn} ({@link ObjMeshArrays#VN}): x y z, then any numbers. */

@@ -17,7 +17,7 @@ import java.util.function.Consumer;
 /**
  * The materials of an OBJ model as {@link SceneObject#load(ObjModel, String, Consumer, boolean)} gives
  * them: each material's {@code map_Kd} texture (read once per file), else its {@code Kd} colour, else the
- * built-in UV grid.
+ * built-in UV grid; its {@code Ka}, where given, is its ambient colour under light.
  */
 final class ObjMaterials {
     private ObjMaterials() {
@@ -63,6 +63,12 @@ final class ObjMaterials {
                 });
                 // With a map_Kd, Kd is the diffuse colour under light (the texture shows unchanged unlit).
                 materials.add(kd == null ? textured : textured.withDiffuse(Colour.of(kd)));
+            }
+        }
+        for (int i = 0; i < mesh.materialCount(); i++) {
+            Integer ka = model.materialAmbients().get(i);
+            if (ka != null) {
+                materials.set(i, materials.get(i).withAmbient(Colour.of(ka)));
             }
         }
         if (!untextured.isEmpty()) {
