@@ -1,7 +1,10 @@
 import dev.trisect.content.DemoScenes;
 import dev.trisect.content.SceneAsset;
+import dev.trisect.light.Lights;
+import dev.trisect.light.Surface;
 import dev.trisect.math.Mat4;
 import dev.trisect.math.Viewport;
+import dev.trisect.mesh.Mesh;
 import dev.trisect.pipeline.Draws;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.render.Colour;
@@ -9,32 +12,43 @@ import dev.trisect.render.Fog;
 import dev.trisect.render.Framebuffer;
 import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
+import dev.trisect.render.Shading;
 import dev.trisect.render.SplitPolicy;
 import dev.trisect.render.TessellationSettings;
+import dev.trisect.texture.Texture;
+import java.lang.management.ManagementFactory;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
-import java.util.function.Consumer;
 
 /**
  * What light and fog cost, side by side in one JVM: per path, frames of the same scene alternate
- * between the plain frame and each variant (wall time, the renderer's threads), so that the shared
- * machine's load falls on both alike. Prints per path and variant the median ms of each and the
- * median, lowest and highest of the per-round ratios.
+ * between the plain frame and each variant (the renderer's threads), so that the shared machine's
+ * load falls on both alike. Each frame is timed twice: wall time, and CPU time (steadier than wall
+ * time on a loaded machine, as waiting for a core is not counted): with one thread the rendering
+ * thread's own (the frame is drawn on the calling thread), else the process's, all threads. Prints per
+ * path and variant the median wall ms of each and the median, lowest and highest of the per-round
+ * ratios of wall time and of CPU time (with more than one thread, the process's CPU clock ticks too
+ * coarsely for one frame: then the ratio of the CPU times summed over the rounds).
  *
  *   java -cp target/trisect.jar scripts/light/LightCost.java SCENE WxH THREADS ROUNDS [VARIANT...]
  *
- * VARIANT: fog-linear, fog-exp (the default: both).
+ * VARIANT: fog-linear, fog-exp, flat, smooth (the default: all four); flat and smooth light every
+ * material by a white directional light from (0.3, -1, -0.5) and an ambient grey of 0.2, as
+ * {@code bench --shade flat|smooth --light 0.3,-1,-0.5} does.
  */
 public final class LightCost {
+    private static final com.sun.management.OperatingSystemMXBean CPU =
+            (com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean();
+
     public static void main(String[] args) {
         String scene = args.length > 0 ? args[0] : "demo";
         String[] size = (args.length > 1 ? args[1] : "1920x1080").split("x");
         int threads = args.length > 2 ? Integer.parseInt(args[2]) : 2;
         int rounds = args.length > 3 ? Integer.parseInt(args[3]) : 15;
         List<String> variants = args.length > 4 ? Arrays.asList(args).subList(4, args.length)
-                : List.of("fog-linear", "fog-exp");
+                : List.of("fog-linear", "fog-exp", "flat", "smooth");
         int w = Integer.parseInt(size[0]);
         int h = Integer.parseInt(size[1]);
         SceneAsset s = DemoScenes.byName(scene).orElseThrow();
@@ -48,54 +62,94 @@ public final class LightCost {
         System.out.printf(Locale.ROOT, "scene %s %dx%d, %d threads, %d rounds%n", scene, w, h, threads, rounds);
         try (FrameRenderer r = new FrameRenderer(threads)) {
             for (RenderSettings path : paths) {
-                List<Consumer<Draws>> setups = new ArrayList<>();
-                setups.add(d -> { });
+                List<Setup> setups = new ArrayList<>();
+                setups.add((d, mesh, textures, m) -> d.add(mesh, textures, m));
                 for (String v : variants) {
                     setups.add(variant(v));
                 }
                 double[][] ms = new double[setups.size()][rounds];
-                for (int warm = 0; warm < 5; warm++) {
-                    for (Consumer<Draws> setup : setups) {
+                double[][] cpu = new double[setups.size()][rounds];
+                for (int warm = 0; warm < 10; warm++) {
+                    for (Setup setup : setups) {
                         frame(r, draws, s, vp, setup, path, fb);
                     }
                 }
                 for (int round = 0; round < rounds; round++) {
                     for (int k = 0; k < setups.size(); k++) {
+                        long c = cpuNanos(threads);
                         ms[k][round] = frame(r, draws, s, vp, setups.get(k), path, fb);
+                        cpu[k][round] = (cpuNanos(threads) - c) / 1e6;
                     }
                 }
                 for (int k = 1; k < setups.size(); k++) {
-                    double[] ratio = new double[rounds];
-                    for (int round = 0; round < rounds; round++) {
-                        ratio[round] = ms[k][round] / ms[0][round];
-                    }
-                    Arrays.sort(ratio);
+                    double[] ratio = ratios(ms[k], ms[0]);
+                    double[] cpuRatio = threads == 1 ? ratios(cpu[k], cpu[0])
+                            : new double[] {Arrays.stream(cpu[k]).sum() / Arrays.stream(cpu[0]).sum()};
                     System.out.printf(Locale.ROOT, "%-12s %-12s plain %7.2f ms  variant %7.2f ms  ratio median %.3f "
-                                    + "(min %.3f, max %.3f)%n", path.mode().name().toLowerCase(Locale.ROOT),
-                            variants.get(k - 1), median(ms[0]), median(ms[k]), ratio[rounds / 2], ratio[0],
-                            ratio[rounds - 1]);
+                                    + "(min %.3f, max %.3f)  cpu ratio %.3f (min %.3f, max %.3f)%n",
+                            path.mode().name().toLowerCase(Locale.ROOT), variants.get(k - 1), median(ms[0]),
+                            median(ms[k]), ratio[rounds / 2], ratio[0], ratio[rounds - 1], cpuRatio[cpuRatio.length / 2], cpuRatio[0],
+                            cpuRatio[cpuRatio.length - 1]);
                 }
             }
         }
     }
 
-    private static Consumer<Draws> variant(String name) {
+    /** How a frame's draws are made: the scene's mesh and textures, with light or fog or neither. */
+    private interface Setup {
+        void add(Draws d, Mesh mesh, Texture[] textures, Mat4 viewProjection);
+    }
+
+    private static Setup variant(String name) {
         Colour haze = new Colour(0.6, 0.7, 0.8);
         return switch (name) {
-            case "fog-linear" -> d -> d.setFog(Fog.linear(5, 60, haze));
-            case "fog-exp" -> d -> d.setFog(Fog.exp(0.05, haze));
+            case "fog-linear" -> (d, mesh, t, m) -> {
+                d.add(mesh, t, m);
+                d.setFog(Fog.linear(5, 60, haze));
+            };
+            case "fog-exp" -> (d, mesh, t, m) -> {
+                d.add(mesh, t, m);
+                d.setFog(Fog.exp(0.05, haze));
+            };
+            case "flat" -> lit(Shading.FLAT);
+            case "smooth" -> lit(Shading.SMOOTH);
             default -> throw new IllegalArgumentException("unknown variant " + name);
         };
     }
 
-    private static double frame(FrameRenderer r, Draws draws, SceneAsset s, Mat4 vp, Consumer<Draws> setup,
+    private static Setup lit(Shading shading) {
+        Lights lights = Lights.builder().ambient(0.2, 0.2, 0.2)
+                .directional(0.3, -1, -0.5, new double[3], new double[] {1, 1, 1}).build();
+        return (d, mesh, t, m) -> {
+            Surface[] surfaces = new Surface[mesh.materialCount()];
+            Arrays.fill(surfaces, new Surface(shading, Colour.WHITE, Colour.WHITE));
+            d.add(mesh, t, m, Mat4.identity(), surfaces);
+            d.setLights(lights);
+        };
+    }
+
+    private static double frame(FrameRenderer r, Draws draws, SceneAsset s, Mat4 vp, Setup setup,
                                 RenderSettings path, Framebuffer fb) {
         draws.clear();
-        draws.add(s.mesh(), s.textureArray(), vp);
-        setup.accept(draws);
+        setup.add(draws, s.mesh(), s.textureArray(), vp);
         long t = System.nanoTime();
         r.render(draws, path, fb);
         return (System.nanoTime() - t) / 1e6;
+    }
+
+    /** CPU time now, ns: the calling thread's with one rendering thread, else the process's. */
+    private static long cpuNanos(int threads) {
+        return threads == 1 ? ManagementFactory.getThreadMXBean().getCurrentThreadCpuTime() : CPU.getProcessCpuTime();
+    }
+
+    /** The per-round ratios a / b, sorted. */
+    private static double[] ratios(double[] a, double[] b) {
+        double[] r = new double[a.length];
+        for (int i = 0; i < a.length; i++) {
+            r[i] = a[i] / b[i];
+        }
+        Arrays.sort(r);
+        return r;
     }
 
     private static double median(double[] v) {

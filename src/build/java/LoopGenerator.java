@@ -46,7 +46,8 @@ import java.util.TreeSet;
  * {@code FAMILYPot} or {@code FAMILYAny} without a file is read from {@code FAMILY.source}, lines ending
  * in {@code //#pot} (blocks {@code //#pot} .. {@code //#end}) kept for Pot only, {@code //#!pot} for Any.
  * Colour ({@code colours/NAME.colour}): {@code //#varyings} (names, slots 2.. in order),
- * {@code //#combine} (of {@code $TEXEL$} and them). Write ({@code writes/NAME.write}): {@code //#uv}
+ * {@code //#combine} (of {@code $TEXEL$} and them), and hook sections as a source's, written after the
+ * source's. Write ({@code writes/NAME.write}): {@code //#uv}
  * ({@code yes} when it writes the UV output), {@code //#begin}, {@code //#end}. Adding one is its file
  * and its line in {@link #SOURCES}, {@link #COLOURS} or {@link #WRITES} (and for the last two its
  * {@code PixelState} constant).
@@ -63,7 +64,8 @@ public final class LoopGenerator {
     /** The colours ({@code colours/NAME.colour}), each also a {@code PixelState} constant (NAME in upper case). */
     static final List<String> COLOURS = List.of(
             "Texel",
-            "Modulate");
+            "Modulate",
+            "Constant");
     /** The writes ({@code writes/NAME.write}), likewise {@code PixelState} constants. */
     static final List<String> WRITES = List.of(
             "Opaque",
@@ -288,10 +290,13 @@ public final class LoopGenerator {
                         b.append(indent).append(line).append('\n');
                     }
                 } else if (hook.matches("\\$[A-Z]+\\$")) {
-                    // A hook line: the source's section of that name, indented as the line, or nothing.
+                    // A hook line: the source's section of that name, then the colour's, indented as the
+                    // line, or nothing.
                     String indent = kept.substring(0, kept.indexOf('$'));
-                    for (String line : k.source().lines(hook.substring(1, hook.length() - 1).toLowerCase(Locale.ROOT),
-                            templateName, k)) {
+                    String section = hook.substring(1, hook.length() - 1).toLowerCase(Locale.ROOT);
+                    List<String> lines = new ArrayList<>(k.source().lines(section, templateName, k));
+                    lines.addAll(k.colour().lines(section, templateName, k));
+                    for (String line : lines) {
                         b.append(indent).append(substitute(line, k, name)).append('\n');
                     }
                 } else {

@@ -39,19 +39,24 @@ final class VertexColours {
     private float[] colours = new float[0];
     private double[] factors = new double[0];
     private boolean lit;
+    /** Unlit frames in a row since the last lit one. */
+    private int unlitFrames;
 
     /**
      * Lights the vertices of every draw with a lit material; does nothing (and {@link #lit()} is
-     * false) when no draw has one.
+     * false) when no draw has one. The meshes' vertex tables are kept over up to
+     * {@link Retention#FRAMES} unlit frames in a row, as buffers are, so that a view drawing lit and
+     * unlit frames in turn does not find each mesh's vertices anew each time.
      */
     void compute(Draws draws, WorkerPool pool) {
         lit = draws.anyLit();
         if (!lit) {
-            if (!tables.isEmpty()) {
+            if (++unlitFrames >= Retention.FRAMES && !tables.isEmpty()) {
                 tables = new IdentityHashMap<>();
             }
             return;
         }
+        unlitFrames = 0;
         int n = draws.size();
         if (drawTables.length < n) {
             drawTables = new Vertices[n];

@@ -2,14 +2,22 @@ package dev.trisect.raster;
 
 /**
  * GL_MODULATE of an RGBA texel by a fragment colour whose alpha is 1 (OpenGL 1.x section 3.8.13,
- * table 3.22: C = Cf Ct, A = At): each colour channel {@code c} of the texel becomes
- * {@code (int) (c * f + 0.5)}, {@code f} the fragment's channel in [0, 1] — the texel's value
- * {@code c / 255} times {@code f}, converted back to 8 bits by rounding to nearest (section 2.14.9's
- * conversion of a colour component to fixed point). The interpolated colour is clamped into [0, 1]
- * by the result's clamp to [0, 255]: a pixel centre just beyond its triangle's exact edge (coverage is
- * decided on snapped corners) may see a varying a hair outside the corners' range.
+ * table 3.22: C = Cf Ct, A = At): each colour channel {@code c} of the texel becomes {@code c} times
+ * the fragment's channel {@code f} in [0, 1], converted back to 8 bits by rounding to nearest
+ * (section 2.14.9's conversion of a colour component to fixed point) — in integers: {@code f} is
+ * first taken to 16 fractional bits, {@code f16 = (int) (f * 65536 + 0.5)} kept within 0..65536, then
+ * the channel is {@code (c * f16 + 32768) >> 16}. That differs from {@code (int) (c * f + 0.5)} only
+ * where {@code c * f} lies within {@code c / 131072} (less than 0.002) of a tie, by one; a colour of
+ * exactly 0 or 1 gives 0 or {@code c} exactly. Integers, not a double product, because converting the
+ * int channel to a double (cvtsi2sd) writes only part of its register: the pixel loops then wait on
+ * the register's last writer, in the per-pixel path a division (docs/performance.md, "The per-pixel
+ * loop's false dependency"). The clamp keeps within range a varying a hair outside the corners' range:
+ * a pixel centre just beyond its triangle's exact edge (coverage is decided on snapped corners).
  */
 final class Modulate {
+    /** 1 in 16 fractional bits. */
+    static final int ONE = 1 << 16;
+
     private Modulate() {
     }
 
@@ -19,8 +27,19 @@ final class Modulate {
                 | channel(argb & 0xFF, b);
     }
 
+    /** The texel {@code argb} times the colour (r16, g16, b16) given by {@link #f16}, alpha kept. */
+    static int argb16(int argb, int r16, int g16, int b16) {
+        return argb & 0xFF000000 | ((argb >> 16 & 0xFF) * r16 + (ONE >> 1) >> 16) << 16
+                | ((argb >> 8 & 0xFF) * g16 + (ONE >> 1) >> 16) << 8 | (argb & 0xFF) * b16 + (ONE >> 1) >> 16;
+    }
+
     /** One channel, 0..255, times {@code f}, rounded to nearest and kept within 0..255. */
     static int channel(int c, double f) {
-        return Math.max(0, Math.min(255, (int) (c * f + 0.5)));
+        return c * f16(f) + (ONE >> 1) >> 16;
+    }
+
+    /** A colour channel {@code f} in [0, 1] in 16 fractional bits, rounded, kept within 0..{@link #ONE}. */
+    static int f16(double f) {
+        return Math.max(0, Math.min(ONE, (int) (f * ONE + 0.5)));
     }
 }

@@ -30,6 +30,14 @@ public final class PixelState {
     /** The first varying slot a {@link #MODULATE} colour reads (r; g and b follow). */
     public static final int COLOUR_SLOT = 2;
 
+    /**
+     * Colour: the texel times the triangle's one colour, the same at its three corners (flat shading,
+     * a face lit evenly) — {@link #MODULATE} with the colour taken once per triangle instead of
+     * interpolated per pixel. Not a material's state: {@link Rasterizer} chooses it per triangle for a
+     * modulating material.
+     */
+    static final int CONSTANT = 2;
+
     private static final int COLOUR_MASK = 3;
     private static final int WRITE_MASK = 3 << 2;
 

@@ -32,6 +32,11 @@ public final class Rasterizer {
     private TextureFilter filter = TextureFilter.NEAREST;
     /** The span path's largest displacement between knots, pixels; 0: perspective fills divide per pixel. */
     private double knotError;
+    /**
+     * Corner colours closer than this are one colour ({@link #constant}): 2^-24 of the [0, 1] range,
+     * far below the 2^-16 steps the modulation takes the colour in.
+     */
+    private static final double SAME_COLOUR = 0x1p-24;
     /** The {@link PixelState} of each material index, or null: state 0 for every material. */
     private int[] states;
 
@@ -128,7 +133,7 @@ public final class Rasterizer {
         boolean uv = frame.uv() != null;
         boolean ids = frame.ids() != null;
         int source = source(texture);
-        int state = state(triangles, material);
+        int state = constant(state(triangles, material), triangles, tri, t);
         if (knots) {
             return KnotLoops.fill(source, state, uv, ids, t, spans, frame, texture, uvId, knotError, x0, x1);
         } else if (!divide && t.fixedPointSafe) {
@@ -136,6 +141,31 @@ public final class Rasterizer {
         } else {
             return PerPixelLoops.fill(source, state, uv, ids, divide, t, spans, frame, texture, uvId);
         }
+    }
+
+    /**
+     * {@code state}, or for a modulating one whose triangle {@code tri} has the same colour at its three
+     * corners (within {@link #SAME_COLOUR}: flat shading, a face lit evenly, a colour carried through
+     * clipping and cuts), {@link PixelState#CONSTANT} with that colour in {@code t}: the loop then
+     * multiplies by the colour taken once instead of interpolating three varyings at every pixel.
+     */
+    private static int constant(int state, ScreenTriangles triangles, int tri, TriangleSetup t) {
+        if (PixelState.colour(state) != PixelState.MODULATE) {
+            return state;
+        }
+        double[] a = triangles.attributes();
+        int cs = triangles.cornerStride();
+        int at = tri * triangles.attributeStride() + 1 + PixelState.COLOUR_SLOT;
+        for (int c = at; c < at + 3; c++) {
+            double v = a[c];
+            if (Math.abs(a[c + cs] - v) > SAME_COLOUR || Math.abs(a[c + 2 * cs] - v) > SAME_COLOUR) {
+                return state;
+            }
+        }
+        t.red16 = Modulate.f16(a[at]);
+        t.green16 = Modulate.f16(a[at + 1]);
+        t.blue16 = Modulate.f16(a[at + 2]);
+        return state - PixelState.MODULATE + PixelState.CONSTANT;
     }
 
     /** The colour source of the filter sampling {@code texture}: masks wrap a power-of-two side. */
@@ -173,7 +203,8 @@ public final class Rasterizer {
         int[] spans = solver.spans();
         Texture texture = textures[inputs.materials()[g]];
         int uvId = inputs.ids()[g] + 1;
-        return TreeLoops.fill(source(texture), state(inputs, inputs.materials()[g]), frame.uv() != null,
+        return TreeLoops.fill(source(texture), constant(state(inputs, inputs.materials()[g]), inputs, g, t),
+                frame.uv() != null,
                 frame.ids() != null, this.trees, t, spans, trees, trees.roots()[g], trees.nodeCount(g), frame, texture,
                 uvId);
     }

@@ -165,6 +165,9 @@ final class TreeFill {
             }
         }
         one.planeCount = input.planeCount;
+        one.red16 = input.red16;
+        one.green16 = input.green16;
+        one.blue16 = input.blue16;
         one.firstColumn = trees.firstColumns()[piece];
         one.fixedPointSafe = false;
         one.rowStart = y;

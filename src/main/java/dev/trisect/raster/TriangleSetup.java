@@ -48,6 +48,14 @@ final class TriangleSetup {
     final Plane tPlane = planes[2];
     /** Whether the texel coordinates are small enough for 32.32 fixed point (|s|, |t| &lt; 2^30). */
     boolean fixedPointSafe;
+    /**
+     * The triangle's one colour r, g, b in 16 fractional bits ({@link Modulate#f16}), where its three
+     * corners have the same colour varyings and it is filled by a {@link PixelState#CONSTANT} loop;
+     * set by {@link Rasterizer}, not by a setup.
+     */
+    int red16;
+    int green16;
+    int blue16;
 
     /**
      * Sets up triangle {@code tri} of {@code triangles} for filling pixels {@code [x0, x1) x [y0, y1)}:

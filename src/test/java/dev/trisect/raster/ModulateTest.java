@@ -26,8 +26,9 @@ import org.junit.jupiter.api.Test;
  * rounded to nearest, where the colour at the pixel is computed here independently, as each path
  * promises (PIXEL_CONTRACT section 6, docs/conventions.md "Colour and writes"):
  * <ul>
- * <li>constant colours (the same at the three corners): exactly {@code round(c * f)}, on every path;
- * the colours are thirds and sevenths, so that no product lies near a tie;</li>
+ * <li>constant colours (the same at the three corners, so filled by the {@link PixelState#CONSTANT}
+ * loops, the colour taken once per triangle): exactly {@code round(c * f)}, on every path; the colours
+ * are thirds and sevenths, so that no product lies near a tie;</li>
  * <li>varying colours: per pixel, the perspective-correct interpolation of the corners' colours at
  * the pixel centre; affine, the screen-linear one; the span and tessellated paths interpolate the
  * colour exactly as they interpolate s and t, so with a colour that is an affine function of s and t
@@ -99,11 +100,12 @@ class ModulateTest {
                         int shift = 16 - 8 * c;
                         double exact = Math.max(0, Math.min(255, (frames[0].colour()[i] >> shift & 0xFF) * colour[c]));
                         int got = frames[1].colour()[i] >> shift & 0xFF;
-                        // The channel rounds the exact product to nearest: within half a unit, and a
-                        // hair more where the product is within rounding of a tie.
+                        // The channel rounds the product to nearest with the colour in 16 fractional
+                        // bits (Modulate): within half a unit of the exact product, and at most
+                        // 255 / 2^17 more.
                         double off = Math.abs(got - exact);
                         worst = Math.max(worst, off);
-                        assertTrue(off <= 0.5 + 1e-6, path + ", scene " + scene + ", pixel (" + x + ", " + y
+                        assertTrue(off <= 0.5 + 255.0 / (1 << 17) + 1e-6, path + ", scene " + scene + ", pixel (" + x + ", " + y
                                 + "), channel " + c + ": " + got + " for " + exact);
                     }
                     checked++;

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# How far the span path and the tessellated path (error policy) are from the per-pixel path when lit
+# smooth: PSNR (dB) of `compare` on demo, boxes, sphere (each exported to OBJ with its camera) and the
+# head of LightAgainstOpenGlTest (src/test/resources/dev/trisect/light/head.obj, its camera there),
+# lit by a directional light, a coloured point light with attenuation 1,0.2,0.05 and a coloured
+# ambient (the tests' "both-smooth"), nearest sampling. Each scene twice: with its textures, and with a
+# white texture on every material, so that only the light's interpolation differs between the paths
+# (no texel flips). Prints one line per scene, texture and path.
+#
+#   scripts/light/psnr.sh [WxH] [MAX_ERROR]     (default 1280x720, 0.5)
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+JAR=${JAR:-target/trisect.jar}
+size=${1:-1280x720}
+err=${2:-0.5}
+[[ -f $JAR ]] || mvn -B -q package -DskipTests
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+printf 'P3\n1 1\n255\n255 255 255\n' >"$tmp/white.ppm"
+light=(--light 1,2,3 --light-colour 0.8,0.9,1 --point-colour 1,0.7,0.4 --attenuation 1,0.2,0.05
+  --ambient 0.25,0.2,0.35 --shade smooth --size "$size" --max-error "$err")
+printf '%-7s %-8s %-12s %s\n' scene texture path psnr_db
+grep '^frame ' src/test/resources/dev/trisect/light/frames.txt | while read -r _ name scene eye target far point; do
+  if [[ $scene == head ]]; then
+    obj=src/test/resources/dev/trisect/light/head.obj
+    textured=(--texture src/test/resources/dev/trisect/lines/checker.ppm)
+  else
+    obj=$tmp/$scene/$scene.obj
+    java -jar "$JAR" export --scene "$scene" --to "$obj" >/dev/null
+    textured=()
+  fi
+  for texture in own white; do
+    if [[ $texture == white ]]; then tex=(--texture "$tmp/white.ppm"); else tex=("${textured[@]}"); fi
+    for mode in spans tessellated; do
+      extra=(); [[ $mode == tessellated ]] && extra=(--split error)
+      psnr=$(java -jar "$JAR" compare --obj "$obj" "${tex[@]}" --eye "$eye" --target "$target" --far "$far" \
+        --point "$point" "${light[@]}" --mode "$mode" "${extra[@]}" | sed -n 's/.*"psnr_db":\([^,}]*\).*/\1/p')
+      printf '%-7s %-8s %-12s %s\n' "$name" "$texture" "$mode" "$psnr"
+    done
+  done
+done
