@@ -17,25 +17,30 @@ package dev.trisect.raster;
 final class Modulate {
     /** 1 in 16 fractional bits. */
     static final int ONE = 1 << 16;
+    /** A half in 16 fractional bits: rounds the product to nearest. */
+    private static final int HALF = ONE >> 1;
 
     private Modulate() {
     }
 
     /** The texel {@code argb} times the colour (r, g, b), alpha kept. */
     static int argb(int argb, double r, double g, double b) {
-        return argb & 0xFF000000 | channel(argb >> 16 & 0xFF, r) << 16 | channel(argb >> 8 & 0xFF, g) << 8
-                | channel(argb & 0xFF, b);
+        return argb16(argb, f16(r), f16(g), f16(b));
     }
 
-    /** The texel {@code argb} times the colour (r16, g16, b16) given by {@link #f16}, alpha kept. */
+    /**
+     * The texel {@code argb} times the colour (r16, g16, b16) given by {@link #f16}, alpha kept. Each
+     * product plus a half, at most 255 * 2^16 + 2^15 &lt; 2^24, is masked into place rather than shifted
+     * down and back: fewer operations in the pixel loops.
+     */
     static int argb16(int argb, int r16, int g16, int b16) {
-        return argb & 0xFF000000 | ((argb >> 16 & 0xFF) * r16 + (ONE >> 1) >> 16) << 16
-                | ((argb >> 8 & 0xFF) * g16 + (ONE >> 1) >> 16) << 8 | (argb & 0xFF) * b16 + (ONE >> 1) >> 16;
+        return argb & 0xFF000000 | (argb >>> 16 & 0xFF) * r16 + HALF & 0xFF0000
+                | ((argb >>> 8 & 0xFF) * g16 + HALF) >>> 8 & 0xFF00 | ((argb & 0xFF) * b16 + HALF) >>> 16;
     }
 
     /** One channel, 0..255, times {@code f}, rounded to nearest and kept within 0..255. */
     static int channel(int c, double f) {
-        return c * f16(f) + (ONE >> 1) >> 16;
+        return c * f16(f) + HALF >> 16;
     }
 
     /** A colour channel {@code f} in [0, 1] in 16 fractional bits, rounded, kept within 0..{@link #ONE}. */

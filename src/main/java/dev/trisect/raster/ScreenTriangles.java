@@ -61,7 +61,11 @@ public final class ScreenTriangles {
         if (vertexLayout != layout) {
             layout = vertexLayout;
             cornerStride = 1 + vertexLayout.varyings();
-            attributes = new double[3 * cornerStride * ids.length];
+            // Storage is kept when it is large enough: a view switching between lit and unlit frames
+            // (5 and 2 varyings) does not reallocate it at every switch.
+            if (attributes.length < 3 * cornerStride * ids.length) {
+                attributes = new double[3 * cornerStride * ids.length];
+            }
         }
     }
 

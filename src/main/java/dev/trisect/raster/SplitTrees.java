@@ -84,7 +84,10 @@ public final class SplitTrees {
         int stride = PLANE * layout.varyings();
         if (stride != planeStride) {
             planeStride = stride;
-            planes = new double[stride * kinds.length];
+            // Kept when large enough, as ScreenTriangles keeps its attributes.
+            if (planes.length < stride * kinds.length) {
+                planes = new double[stride * kinds.length];
+            }
         }
     }
 
