@@ -64,7 +64,7 @@ public sealed class Group extends Node permits Scene {
             }
             Mat4 world = worldMatrix();
             for (Node n : nodes) {
-                checkWorld(n, world.mul(n.matrix()), "adding it to " + this);
+                checkWorld(n, world.mul(n.matrix()), () -> "adding it to " + this);
             }
             for (Node n : nodes) {
                 if (n.parent != null) {

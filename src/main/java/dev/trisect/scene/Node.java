@@ -66,7 +66,8 @@ public abstract sealed class Node permits Group, SceneObject, Light {
         LOCK.lock();
         try {
             Group p = parent;
-            checkWorld(this, p == null ? m : p.worldMatrix().mul(m), "its transform " + transform);
+            // Its cause is built only for a message: built on every move, it took most of the move's time.
+            checkWorld(this, p == null ? m : p.worldMatrix().mul(m), () -> "its transform " + transform);
             this.transform = transform;
             this.matrix = m;
             changed();
@@ -150,14 +151,14 @@ public abstract sealed class Node permits Group, SceneObject, Light {
      * be) and every node under it get finite world matrices: a product of valid transforms can overflow,
      * and an object whose matrix holds an infinity would vanish from every frame without a word.
      *
-     * @param cause what would place it so, for the message
+     * @param cause what would place it so, for the message (asked for only when there is one)
      * @throws IllegalArgumentException naming the node, its world matrix's largest entry and the cause
      */
-    static void checkWorld(Node node, Mat4 world, String cause) {
+    static void checkWorld(Node node, Mat4 world, java.util.function.Supplier<String> cause) {
         for (int r = 0; r < 4; r++) {
             for (int c = 0; c < 4; c++) {
                 if (!Double.isFinite(world.get(r, c))) {
-                    throw new IllegalArgumentException(cause + " would give " + node + " a world matrix that is not "
+                    throw new IllegalArgumentException(cause.get() + " would give " + node + " a world matrix that is not "
                             + "finite (" + world.get(r, c) + " in row " + r + ", column " + c + "): the enclosing "
                             + "groups' transforms and its own multiply beyond double range");
                 }
