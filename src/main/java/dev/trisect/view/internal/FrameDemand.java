@@ -69,7 +69,10 @@ public final class FrameDemand {
                 || state.budget().on() || CameraRig.moving(state.input) || state.input.pendingReset()) {
             return true;
         }
-        return !drawn.equals(seen(state, size));
+        // The scene first: the usual change, found without building and comparing the whole record (which
+        // runs in the interpreter, as a loop that idles runs this rarely: 0.1 ms a wake).
+        Scene scene = state.scene();
+        return drawn.scene() != scene || drawn.version() != scene.version() || !drawn.equals(seen(state, size));
     }
 
     /**
