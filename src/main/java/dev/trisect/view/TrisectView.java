@@ -142,8 +142,10 @@ public class TrisectView extends ViewDrawing {
      * view keeps drawing.
      *
      * @param hook moves things on before each frame
+     * @throws IllegalStateException after {@link #close()}
      */
     public void addUpdateListener(UpdateListener hook) {
+        life.checkOpen();
         listeners.addUpdateListener(hook);
         state.demand.request();
     }

@@ -203,6 +203,7 @@ class TrisectViewGuiTest {
                 () -> view.setRenderScale(1), () -> view.setFrameTimeTarget(0),
                 () -> view.setCameraControls(CameraControls.ORBIT),
                 () -> view.addFrameListener(frame -> { }), () -> view.addPickListener((pick, click) -> { }),
+                () -> view.addUpdateListener((seconds, frame) -> false),
                 () -> view.addMessageListener(message -> { }), () -> view.action(ViewAction.BORDERS));
         for (Executable call : refused) {
             assertEquals("this TrisectView is closed: make a new one",
