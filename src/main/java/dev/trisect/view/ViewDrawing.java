@@ -220,7 +220,8 @@ abstract class ViewDrawing extends JComponent implements AutoCloseable {
 
     /**
      * Draws animated frames at most this often: while an update hook animates, the camera moves or
-     * the developer tools show. A single change is drawn at once. Any thread.
+     * the developer tools show. A change to a view that idles is drawn at once, or, within one cap
+     * interval of the last frame's start, at the end of that interval. Any thread.
      *
      * @param framesPerSecond the cap, greater than 0; or 0 for none (as fast as the view can draw, to
      *                        measure its frame rate). A new view takes its screen's refresh rate, or 60
