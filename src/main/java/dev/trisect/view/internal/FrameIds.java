@@ -5,7 +5,8 @@ import dev.trisect.scene.Pick;
 /**
  * Which triangle, and so which object, each pixel of a view's frame shows: the frame's triangle ids
  * ({@link dev.trisect.render.Framebuffer#ids()}: the frame triangle's index + 1, 0 for the background),
- * which every frame of a view records — 4 bytes a pixel, and a few per cent of a frame's time — so that
+ * which every frame of a view records — 4 bytes a pixel, and up to 6 % of a frame's time with trilinear
+ * filtering, up to 17 % with nearest (scripts/uv-output-cost.sh, docs/view.md) — so that
  * picking, the pointer's events and the hover highlight read the frame on screen and never draw it
  * again. A pick's point and texel follow from the triangle and the frame's camera
  * ({@link dev.trisect.scene.internal.DrawnFrame#pick}).
