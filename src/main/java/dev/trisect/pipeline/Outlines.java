@@ -28,6 +28,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 final class Outlines {
     /** Per-thread scratch. */
     private static final class Lane {
+        /** Draws a plan's edges: LINE commands, by the line rasterizer with the overlay's write. */
         final BorderOverlay overlay = new BorderOverlay();
         final KnotTicks ticks = new KnotTicks();
         /** Keeps what {@link Framebuffer#touchRows} read. */
@@ -144,7 +145,7 @@ final class Outlines {
     void drawBand(int thread, Framebuffer frame, int band, int y0, int y1) {
         BorderOverlay overlay = lanes[thread].overlay;
         for (int c = 0; c < count; c++) {
-            overlay.draw(frame, plans[c], band, 0, y0, frame.width(), y1);
+            overlay.draw(frame, plans[c], band, y0, y1);
         }
         if (tickChunks != null) {
             KnotTicks ticks = lanes[thread].ticks;

@@ -4,8 +4,8 @@ import java.util.Arrays;
 
 /**
  * Items sorted into the bands of rows of a frame, each band's list in item order: the one binning of
- * a frame's screen triangles (per chunk, for the fill) and of the overlay's edges (per
- * {@link OutlinePlan}). An item is given the rows its pixels can fall on; it is listed in every band
+ * a frame's commands ({@link Commands}: per chunk for the fill, the frame's lines and quads, and per
+ * {@link OutlinePlan} the overlay's edges). An item is given the rows its pixels can fall on; it is listed in every band
  * of {@code bandRows} rows that holds one of them.
  *
  * <p>Use: {@link #prepare} for n items, {@link #rows} or {@link #none} for each, {@link #build};

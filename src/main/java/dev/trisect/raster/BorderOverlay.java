@@ -3,17 +3,19 @@ package dev.trisect.raster;
 import dev.trisect.render.Framebuffer;
 
 /**
- * Draws the outline of every filled triangle (every tessellated piece) over the frame, in yellow,
- * or in magenta for a piece filled per pixel by the fallback ({@link OverlayColours}), one band of
- * rows at a time from an {@link OutlinePlan}, so that it can run per band like the fill.
+ * The border overlay's write: what a pixel of an outline gets. The outline of every filled triangle
+ * (every tessellated piece) is drawn over the frame, in yellow, or in magenta for a piece filled per
+ * pixel by the fallback ({@link OverlayColours}); its edges are line segments of an
+ * {@link OutlinePlan}, whose pixels the line rasterizer's {@link Segments#CROSSING CROSSING} rule gives
+ * ({@link LineCrossing}); this class decides each of those pixels, for {@link LineRaster#band}.
  *
- * <p>An edge lights the pixel nearest to it in every column (mostly horizontal edges) or row
- * (mostly vertical ones) whose centre lies within the edge's extent. The pixel is a function of the
- * edge and that column alone, and edges are walked from a canonical end, so a shared edge drawn from
- * either triangle and in any band lights the same pixels. A line pixel is drawn where the outlined
- * triangle's own depth plane is not behind what the frame holds there (within a small relative
- * tolerance), so outlines of hidden pieces stay hidden while the visible ones show on silhouettes.
- * An edge two triangles share is walked once (see {@link OutlinePlan}).
+ * <p>A line pixel is drawn where the outlined triangle's own depth plane is not behind what the frame
+ * holds there (within a small relative tolerance), so outlines of hidden pieces stay hidden while the
+ * visible ones show on silhouettes; no depth is written. An edge two triangles share is walked once
+ * (see {@link OutlinePlan}): the earlier triangle's outline is applied first at each pixel, then the
+ * later one's, each with its own test, colour and opacity.
+ *
+ * <p>One instance per thread: it holds the edge being drawn.
  */
 public final class BorderOverlay {
     /** The colour of an ordinary piece's outline, #FFFF00. */
@@ -44,171 +46,70 @@ public final class BorderOverlay {
      * fallback piece): then a pixel is the later outline's colour where its test passes, else the
      * earlier's where its test passes, with no blending or clamping to do.
      */
-    private boolean simple;
+    boolean simple;
+    /** The triangle whose outline values are loaded, and its plan's looks. */
+    private int owner = -1;
+    private double[] ownerLooks;
+    private boolean ownerSimple;
     /** The frame being drawn: its colours, depths and width. */
     private int[] color;
     private float[] depth;
-    private int width;
+    int width;
 
     /**
-     * Outlines the edges of {@code plan}'s band {@code band} within pixels {@code [x0, x1) x [y0, y1)},
-     * which must hold that band's rows lighting (x0 &gt;= 0).
+     * Draws {@code plan}'s outlines within band {@code band}, rows {@code [y0, y1)} of {@code frame}:
+     * its edges, by the line rasterizer ({@link LineRaster#band}) with this write.
      *
      * @return number of outline pixels drawn (each once, whether one or both triangles sharing its edge drew it)
      */
-    public long draw(Framebuffer frame, OutlinePlan plan, int band, int x0, int y0, int x1, int y1) {
-        double[] looks = plan.looks;
-        int[] colours = plan.colours;
-        int[] items = plan.bins.items();
-        int[] walks = plan.walks;
-        double[] lines = plan.lines;
+    public long draw(Framebuffer frame, OutlinePlan plan, int band, int y0, int y1) {
+        return LineRaster.band(plan.segments(), plan.bins(), band, frame, this, y0, y1);
+    }
+
+    /**
+     * Makes the outlines drawn next go into {@code frame}; forgets the outline values loaded (a plan
+     * is prepared afresh for every frame).
+     */
+    void frame(Framebuffer frame) {
+        owner = -1;
+        ownerLooks = null;
         color = frame.colour();
         depth = frame.depth();
         width = frame.width();
-        long painted = 0;
-        int owner = -1;
-        boolean ownerSimple = false;
-        for (int n = plan.bins.start(band), end = plan.bins.start(band + 1); n < end; n++) {
-            int edge = items[n];
-            int w = OutlinePlan.WALK * edge;
-            int tri = walks[w];
-            // A triangle's edges follow one another: its outline's values stay.
-            if (tri != owner) {
-                owner = tri;
-                int l = OutlinePlan.LOOK * tri;
-                qBase = looks[l];
-                qDx = looks[l + 1];
-                qDy = looks[l + 2];
-                qMin = looks[l + 3];
-                qMax = looks[l + 4];
-                alpha = looks[l + 5];
-                colour = colours[tri];
-                ownerSimple = simple(alpha, qMin, qMax);
-            }
-            int earlier = walks[w + 1];
-            shared = earlier >= 0;
-            if (shared) {
-                int l = OutlinePlan.LOOK * earlier;
-                qBaseEarlier = looks[l];
-                qDxEarlier = looks[l + 1];
-                qDyEarlier = looks[l + 2];
-                qMinEarlier = looks[l + 3];
-                qMaxEarlier = looks[l + 4];
-                alphaEarlier = looks[l + 5];
-                colourEarlier = colours[earlier];
-            }
-            simple = ownerSimple && (!shared || simple(alphaEarlier, qMinEarlier, qMaxEarlier));
-            int first = walks[w + 2];
-            int last = walks[w + 3];
-            int crossFirst = walks[w + 4];
-            int crossLast = walks[w + 5];
-            int k = OutlinePlan.LINE * edge;
-            double xa = lines[k];
-            double ya = lines[k + 1];
-            double slope = lines[k + 2];
-            if (walks[w + 6] != 0) {
-                painted += crossFirst >= y0 && crossLast < y1 && first >= x0 && last < x1
-                        ? byColumnInside(frame, xa, ya, slope, first, last)
-                        : byColumn(frame, xa, ya, slope, lines[k + 3], first, last, x0, y0, x1, y1);
-            } else {
-                int from = Math.max(y0, first);
-                int to = Math.min(y1 - 1, last);
-                painted += crossFirst >= x0 && crossLast < x1 ? byRowInside(frame, xa, ya, slope, from, to)
-                        : byRow(frame, xa, ya, slope, from, to, x0, x1);
-            }
-        }
-        return painted;
     }
 
     /**
-     * Walks a mostly horizontal edge: in column c, the pixel on row floor(ya + (c + 0.5 - xa) * slope).
-     * Only the columns whose rows can fall within [y0, y1) are visited, solved with the slope's
-     * {@code inverse} and a column of margin; the exact test decides.
+     * Makes the edge about to be drawn triangle {@code tri}'s of {@code plan}, shared with its
+     * {@code earlier} triangle (or {@link OutlinePlan#ALONE}). A triangle's edges follow one another,
+     * so its outline's values are loaded only when the triangle changes.
      */
-    private int byColumn(Framebuffer frame, double xa, double ya, double slope, double inverse, int first, int last,
-                         int x0, int y0, int x1, int y1) {
-        double from = first;
-        double to = last;
-        if (slope != 0) {
-            double c0 = xa - 0.5 + (y0 - ya) * inverse;
-            double c1 = xa - 0.5 + (y1 - ya) * inverse;
-            from = Math.max(from, Math.floor(Math.min(c0, c1)) - 1);
-            to = Math.min(to, Math.ceil(Math.max(c0, c1)) + 1);
+    void edge(OutlinePlan plan, int tri, int earlier) {
+        double[] looks = plan.looks;
+        if (tri != owner || looks != ownerLooks) {
+            owner = tri;
+            ownerLooks = looks;
+            int l = OutlinePlan.LOOK * tri;
+            qBase = looks[l];
+            qDx = looks[l + 1];
+            qDy = looks[l + 2];
+            qMin = looks[l + 3];
+            qMax = looks[l + 4];
+            alpha = looks[l + 5];
+            colour = plan.colours[tri];
+            ownerSimple = simple(alpha, qMin, qMax);
         }
-        int c = (int) Math.max(from, x0);
-        int end = (int) Math.min(to, x1 - 1);
-        int painted = 0;
-        for (; c <= end; c++) {
-            double r = ya + (c + 0.5 - xa) * slope;
-            // r >= y0 >= 0, so the cast floors.
-            if (r >= y0 && r < y1) {
-                painted += plot(frame, c, (int) r);
-            }
+        shared = earlier >= 0;
+        if (shared) {
+            int l = OutlinePlan.LOOK * earlier;
+            qBaseEarlier = looks[l];
+            qDxEarlier = looks[l + 1];
+            qDyEarlier = looks[l + 2];
+            qMinEarlier = looks[l + 3];
+            qMaxEarlier = looks[l + 4];
+            alphaEarlier = looks[l + 5];
+            colourEarlier = plan.colours[earlier];
         }
-        return painted;
-    }
-
-    /** {@link #byColumn} for an edge whose pixels all lie within the band and the frame. */
-    private int byColumnInside(Framebuffer frame, double xa, double ya, double slope, int first, int last) {
-        if (simple) {
-            return byColumnSimple(xa, ya, slope, first, last);
-        }
-        int painted = 0;
-        for (int c = first; c <= last; c++) {
-            // At least the edge's first row, >= 0, so the cast floors.
-            painted += plot(frame, c, (int) (ya + (c + 0.5 - xa) * slope));
-        }
-        return painted;
-    }
-
-    /** {@link #byRow} for an edge whose pixels all lie within the frame's columns. */
-    private int byRowInside(Framebuffer frame, double xa, double ya, double slope, int first, int last) {
-        if (simple) {
-            return byRowSimple(xa, ya, slope, first, last);
-        }
-        int painted = 0;
-        for (int r = first; r <= last; r++) {
-            painted += plot(frame, (int) (xa + (r + 0.5 - ya) * slope), r);
-        }
-        return painted;
-    }
-
-    /** Walks a mostly vertical edge over rows first..last: in row r, the pixel in column floor(xa + (r + 0.5 - ya) * slope). */
-    private int byRow(Framebuffer frame, double xa, double ya, double slope, int first, int last, int x0, int x1) {
-        int painted = 0;
-        for (int r = first; r <= last; r++) {
-            double c = xa + (r + 0.5 - ya) * slope;
-            // c >= x0 >= 0, so the cast floors.
-            if (c >= x0 && c < x1) {
-                painted += plot(frame, (int) c, r);
-            }
-        }
-        return painted;
-    }
-
-    /**
-     * {@link #byColumnInside} of a {@link #simple} edge, {@link #plot} written into the loop. Each
-     * value is the same double as there: column c and c + 0.5 are counted up exactly in doubles.
-     */
-    private int byColumnSimple(double xa, double ya, double slope, int first, int last) {
-        int painted = 0;
-        double x = first;
-        for (int c = first; c <= last; c++, x++) {
-            double y = Math.floor(ya + (x + 0.5 - xa) * slope);
-            painted += plotSimple((int) y * width + c, x, y);
-        }
-        return painted;
-    }
-
-    /** {@link #byRowInside} of a {@link #simple} edge, as {@link #byColumnSimple}. */
-    private int byRowSimple(double xa, double ya, double slope, int first, int last) {
-        int painted = 0;
-        double y = first;
-        for (int r = first; r <= last; r++, y++) {
-            double x = Math.floor(xa + (y + 0.5 - ya) * slope);
-            painted += plotSimple(r * width + (int) x, x, y);
-        }
-        return painted;
+        simple = ownerSimple && (!shared || simple(alphaEarlier, qMinEarlier, qMaxEarlier));
     }
 
     /** Pieces whose inscribed circle has at least this radius, pixels, are outlined opaque when fading. */
@@ -237,7 +138,7 @@ public final class BorderOverlay {
      * {@link #plot} of a {@link #simple} edge at pixel index {@code i}, column x and row y: what the
      * general case does when both outlines are opaque and not held.
      */
-    private int plotSimple(int i, double x, double y) {
+    int plotSimple(int i, double x, double y) {
         double limit = depth[i] * (1 - DEPTH_TOLERANCE);
         if (!(qBase + qDx * x + qDy * y < limit)) {
             color[i] = colour;
@@ -261,7 +162,7 @@ public final class BorderOverlay {
      *
      * @return 1 when the pixel was drawn, else 0
      */
-    private int plot(Framebuffer frame, int x, int y) {
+    int plot(int x, int y) {
         int i = y * width + x;
         if (simple) {
             return plotSimple(i, x, y);

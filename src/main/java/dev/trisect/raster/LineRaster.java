@@ -1,12 +1,18 @@
 package dev.trisect.raster;
 
+import dev.trisect.render.Framebuffer;
+
 /**
  * The loop of {@link Commands#LINE LINE} commands: segments set up by {@link LineSetup} drawn into
  * rows of a frame, depth-tested against what the rows hold; and, for one frame's lines on their own,
  * a store with its setup ({@link #begin}, {@link #add}, {@link #draw}).
  *
- * <p>Which pixels: per row, the columns inside the segment's parallelogram, solved exactly from its
- * (at most two) slanted edge functions; see {@link LineSetup} for the rule (OpenGL 1.x, section 3.4).
+ * <p>Which pixels: a store's segments follow one of two coverage rules ({@link Segments#rule()}). A
+ * frame's lines follow OpenGL's ({@link Segments#DIAMOND DIAMOND}): per row, the columns inside the
+ * segment's parallelogram, solved exactly from its (at most two) slanted edge functions; see
+ * {@link LineSetup} for the rule (OpenGL 1.x, section 3.4). The border overlay's edges follow their
+ * own ({@link Segments#CROSSING CROSSING}, {@link LineCrossing}), which {@link #band} dispatches to;
+ * the rest of this comment is about the first.
  *
  * <p>Depth (OpenGL 1.x, section 3.4.1: attributes of a line fragment are interpolated along the
  * segment): a fragment's 1/w is the segment's at the pixel centre's column (x-major) or row (y-major),
@@ -65,13 +71,39 @@ public final class LineRaster {
     }
 
     /**
-     * Draws segment {@code s} of {@code segments} into its rows within {@code [y0, y1)}.
+     * Draws band {@code band}'s segments of {@code segments}, binned by {@code bins} (a list of line
+     * segments alone, with no command word each), into rows {@code [y0, y1)} of {@code frame}: as
+     * {@link #rows} for each, the store's rule read once for the band. A {@link Segments#CROSSING
+     * CROSSING} store is the border overlay's, drawn through its write {@code crossing}.
+     *
+     * @return pixels written
+     */
+    public static long band(Segments segments, BandBins bins, int band, Framebuffer frame, BorderOverlay crossing,
+                            int y0, int y1) {
+        if (segments.rule() == Segments.CROSSING) {
+            crossing.frame(frame);
+            return LineCrossing.band(segments, bins, band, crossing, frame.width(), y0, y1);
+        }
+        int[] items = bins.items();
+        long written = 0;
+        for (int k = bins.start(band), end = bins.start(band + 1); k < end; k++) {
+            written += rows(segments, items[k], frame.colour(), frame.depth(), y0, y1);
+        }
+        return written;
+    }
+
+    /**
+     * Draws {@link Segments#DIAMOND DIAMOND} segment {@code s} of {@code segments} into its rows within
+     * {@code [y0, y1)}.
      *
      * @param color  the frame's colours, ARGB, row 0 at the top
      * @param depths the frame's 1/w
      * @return pixels written
      */
     public static long rows(Segments segments, int s, int[] color, float[] depths, int y0, int y1) {
+        if (segments.rule() != Segments.DIAMOND) {
+            throw new IllegalArgumentException("a CROSSING segment is drawn with the overlay's write: LineRaster.band");
+        }
         int[] ints = segments.ints;
         long[] planes = segments.planes;
         int i = ISTRIDE * s;

@@ -5,9 +5,13 @@ import java.util.Arrays;
 
 /**
  * The border overlay's work for one list of screen triangles, prepared once per frame rather than
- * once per band: each outlined triangle's depth plane, colour and opacity, and the edges to walk,
- * each set up once (its canonical ends, slope and pixel range) and sorted into the bands of rows its
- * pixels can fall on.
+ * once per band: each outlined triangle's depth plane, colour and opacity, and the edges to walk as
+ * segments of the line rasterizer's {@link Segments#CROSSING CROSSING} rule ({@link #segments()}),
+ * each set up once by {@link LineCrossing} (its canonical ends, slope and pixel range) and binned into
+ * the bands of rows its pixels can fall on ({@link #bins()}). {@link LineRaster#band} draws a band of
+ * them, each pixel decided by the {@link BorderOverlay}'s write. They are a list of one kind, so they
+ * are binned as they are without a command word each: the overlay's memory traffic stays that of its
+ * edges.
  *
  * <p>An edge shared by two outlined triangles of the list (the same snapped corners, as the inner
  * edges of a tessellated triangle's pieces are) is walked once, in the later triangle's turn; at each
@@ -18,7 +22,7 @@ import java.util.Arrays;
  * <p>Not thread-safe: prepared by one thread, then read by any number.
  */
 public final class OutlinePlan {
-    /** {@link #edgeEarlier} of an edge no earlier triangle shares. */
+    /** The earlier sharer of an edge no earlier triangle shares. */
     static final int ALONE = -1;
     /** Per-corner-edge mark of an edge a later triangle shares and walks. */
     private static final int WALKED_LATER = -2;
@@ -48,29 +52,10 @@ public final class OutlinePlan {
     /** Per triangle corner edge (edge e from corner e to corner e + 1): the earlier sharer, ALONE or WALKED_LATER. */
     private int[] partner = new int[0];
 
-    /** Ints per edge to walk in {@link #walks}. */
-    static final int WALK = 8;
-    /** Doubles per edge to walk in {@link #lines}. */
-    static final int LINE = 4;
-    /**
-     * Per edge to walk, in drawing order, {@link #WALK} ints: the triangle whose turn it is, the
-     * earlier sharer (or {@link #ALONE}); the first and last column (mostly horizontal) or row (mostly
-     * vertical) it lights; the first and last row (mostly horizontal) or column (mostly vertical) its
-     * pixels can fall on, unclipped, so that an edge within the band and the frame is walked without
-     * per-pixel tests; 1 when it is mostly horizontal (walked by column), else 0; and a pad to 32
-     * bytes. One record, so that a band's walk reads one cache line per edge for them.
-     */
-    int[] walks = new int[0];
-    /**
-     * Per edge to walk, {@link #LINE} doubles, pixels: the canonical (smaller x, then y) end's x and
-     * y, the slope (dy/dx for a mostly horizontal edge, dx/dy for a mostly vertical one), and its
-     * reciprocal, with which a band finds the columns of an edge that crosses it without dividing.
-     */
-    double[] lines = new double[0];
-    private int edgeCount;
-
+    /** The edges to walk, in drawing order: {@link Segments#CROSSING CROSSING} segments. */
+    private final Segments edges = new Segments(Segments.CROSSING);
     /** The edges of each band, in drawing order. */
-    final BandBins bins = new BandBins();
+    private final BandBins bins = new BandBins();
     private int[] table = new int[0];
     /** Slots of {@link #table} in use this frame: a power of two. */
     private int slots;
@@ -92,7 +77,17 @@ public final class OutlinePlan {
         ensureTable(outerEdges(triangles.links(), n));
         matchEdges(triangles.fixed(), triangles.links(), n);
         edges(triangles.fixed(), n, height, bandRows);
-        bins.build(edgeCount, BandBins.bandCount(height, bandRows));
+        bins.build(edges.count(), BandBins.bandCount(height, bandRows));
+    }
+
+    /** The outlines' edges: {@link Segments#CROSSING CROSSING} segments, in drawing order. */
+    public Segments segments() {
+        return edges;
+    }
+
+    /** The edges of each band of rows, in drawing order: indices into {@link #segments()}. */
+    public BandBins bins() {
+        return bins;
     }
 
     private void setUp(ScreenTriangles triangles, BorderStyle style, int maxLevel, double maxError, int n,
@@ -214,15 +209,17 @@ public final class OutlinePlan {
     }
 
     /**
-     * Lists the edges to walk in drawing order, each with its line, its pixel span and the bands its
-     * pixels can fall on. A mostly horizontal edge lights, in each column whose centre lies within it,
-     * the row holding the edge's height there: rows from that of its upper end to that of its lower
-     * end (see {@link #cellBelow}). A mostly vertical edge lights one pixel in each row whose centre
-     * lies within it, likewise in the columns between its ends'.
+     * Lists the edges to walk in drawing order as line segments, each set up by the line
+     * rasterizer's {@link LineCrossing crossing rule} with the rows its pixels can fall on.
      */
     private void edges(int[] f, int n, int height, int bandRows) {
+        // Room for every edge, so that each is written in place (LineCrossing.add).
         ensureEdges(3 * n);
+        bins.prepare(3 * n);
         int count = 0;
+        // The crossing rule clips to the frame's columns when drawn (LineCrossing.rows): no width here.
+        edges.begin(0, height);
+        edges.plan = this;
         for (int tri = 0; tri < n; tri++) {
             if (colours[tri] == 0) {
                 continue;
@@ -235,114 +232,39 @@ public final class OutlinePlan {
                 }
                 int a = o + 2 * e;
                 int b = o + next(e);
-                int ax = f[a];
-                int ay = f[a + 1];
-                int bx = f[b];
-                int by = f[b + 1];
-                // Canonical direction: from the smaller (x, y) end, so both sharers would light the same pixels.
-                if (ax > bx || ax == bx && ay > by) {
-                    int t = ax;
-                    ax = bx;
-                    bx = t;
-                    t = ay;
-                    ay = by;
-                    by = t;
+                long rows = LineCrossing.add(edges, count, f[a], f[a + 1], f[b], f[b + 1], tri, earlier, height);
+                if (rows >= 0) {
+                    bins.rows(count, (int) (rows >>> 32), (int) rows, bandRows);
+                    count++;
                 }
-                // In sub-pixel units, exactly: a pixel centre's column c lies within [xa, xb] when
-                // ceil(xa - 0.5) <= c <= floor(xb - 0.5), that is (ax + HALF - 1) >> BITS <= c <= (bx - HALF) >> BITS.
-                int dx = bx - ax;
-                int dy = by - ay;
-                boolean byColumn = Math.abs(dx) >= Math.abs(dy);
-                int first;
-                int last;
-                int rowFirst;
-                int rowLast;
-                int crossFirst;
-                int crossLast;
-                double slope;
-                double inverse = 0;
-                if (byColumn) {
-                    if (dx == 0) {
-                        continue;
-                    }
-                    // The quotient of the two differences in pixels: both are exact, and scaling both by 2^-BITS keeps it.
-                    slope = dy / (double) dx;
-                    // Only to find the columns that may fall in a band, with a column of margin: no
-                    // pixel depends on its rounding.
-                    inverse = dy == 0 ? 0 : dx / (double) dy;
-                    first = (ax + FixedPoint.HALF - 1) >> FixedPoint.BITS;
-                    last = (bx - FixedPoint.HALF) >> FixedPoint.BITS;
-                    crossFirst = cellBelow(Math.min(ay, by));
-                    crossLast = Math.max(ay, by) >> FixedPoint.BITS;
-                    rowFirst = crossFirst;
-                    rowLast = crossLast;
-                } else {
-                    slope = dx / (double) dy;
-                    first = (Math.min(ay, by) + FixedPoint.HALF - 1) >> FixedPoint.BITS;
-                    last = (Math.max(ay, by) - FixedPoint.HALF) >> FixedPoint.BITS;
-                    crossFirst = cellBelow(ax);
-                    crossLast = bx >> FixedPoint.BITS;
-                    rowFirst = first;
-                    rowLast = last;
-                }
-                rowFirst = Math.max(0, rowFirst);
-                rowLast = Math.min(height - 1, rowLast);
-                if (first > last || rowFirst > rowLast) {
-                    continue;
-                }
-                int w = WALK * count;
-                walks[w] = tri;
-                walks[w + 1] = earlier;
-                walks[w + 2] = first;
-                walks[w + 3] = last;
-                walks[w + 4] = crossFirst;
-                walks[w + 5] = crossLast;
-                walks[w + 6] = byColumn ? 1 : 0;
-                int k = LINE * count;
-                lines[k] = ax / (double) FixedPoint.ONE;
-                lines[k + 1] = ay / (double) FixedPoint.ONE;
-                lines[k + 2] = slope;
-                lines[k + 3] = inverse;
-                bins.rows(count, rowFirst, rowLast, bandRows);
-                count++;
             }
         }
-        edgeCount = count;
+        edges.count(count);
     }
 
     /** The number of edges to walk (for tests). */
     int edgeCount() {
-        return edgeCount;
+        return edges.count();
     }
 
     /** Edge {@code k}'s walker: the triangle whose turn it is (for tests). */
     int owner(int k) {
-        return walks[WALK * k];
+        return edges.ints[LineCrossing.ISTRIDE * k];
     }
 
     /** The earlier triangle sharing edge {@code k}, or {@link #ALONE} (for tests). */
     int earlier(int k) {
-        return walks[WALK * k + 1];
+        return edges.ints[LineCrossing.ISTRIDE * k + 1];
     }
 
     /** Edge {@code k}'s line, i = 0, 1, 2: its canonical end's x and y, and its slope (for tests). */
     double line(int k, int i) {
-        return lines[LINE * k + i];
+        return edges.depth[LineCrossing.DSTRIDE * k + i];
     }
 
     /** Triangle {@code tri}'s outline opacity, 0..1. */
     double alpha(int tri) {
         return looks[LOOK * tri + 5];
-    }
-
-    /**
-     * The lowest pixel row (or column) a line pixel can fall on for an edge whose lower end lies at
-     * {@code low} sub-pixel units: that end's, or the one before when the end lies on a pixel
-     * boundary, where rounding of the line's height can reach just below it.
-     */
-    private static int cellBelow(int low) {
-        // floor(low / ONE), less one when low is a multiple of ONE.
-        return (low - 1) >> FixedPoint.BITS;
     }
 
     /** Makes room for {@code n} triangles; gives storage back when it has become far larger than needed. */
@@ -379,13 +301,12 @@ public final class OutlinePlan {
     }
 
     private void ensureEdges(int n) {
-        int capacity = walks.length / WALK;
-        if (capacity < n || capacity > 3 * TRIM_FLOOR && capacity > 4 * n) {
-            int size = capacity < n ? Math.max(n, 2 * capacity) : 2 * n;
-            walks = new int[WALK * size];
-            lines = new double[LINE * size];
-            bins.shrink(size, 4 * size);
-            bins.prepare(size);
+        int capacity = edges.capacity();
+        if (capacity < n) {
+            edges.reserve(Math.max(n, 2 * capacity));
+        } else if (capacity > 3 * TRIM_FLOOR && capacity > 4 * n) {
+            edges.shrink(2 * n);
+            bins.shrink(2 * n, 8 * n);
         }
     }
 }

@@ -1,11 +1,12 @@
 package dev.trisect.raster;
 
 /**
- * Whether one screen triangle's outline lights one pixel, by the overlay's own rules (the edge walk of
- * {@link OutlinePlan} and {@link BorderOverlay}, the same arithmetic, and its depth test), for the
- * pixel inspector: one pixel and one triangle at a time, never per frame. The overlay walks whole edges
- * band by band; this answers for one pixel, so it restates the rule rather than sharing the walk —
- * {@code FallbackOutlineLookupTest} holds the two to the same pixels on a real frame.
+ * Whether one screen triangle's outline lights one pixel, by the overlay's own rules (the line
+ * rasterizer's {@link LineCrossing crossing rule} its edges are drawn by, and {@link BorderOverlay}'s
+ * depth test), for the pixel inspector: one pixel and one triangle at a time, never per frame. The
+ * overlay walks whole edges band by band; this asks the rule for one pixel ({@link LineCrossing#lights})
+ * and restates the depth test — {@code FallbackOutlineLookupTest} holds the two to the same pixels on a
+ * real frame.
  */
 public final class OutlineProbe {
     private OutlineProbe() {
@@ -25,29 +26,13 @@ public final class OutlineProbe {
         return onEdge(t.fixed(), tri, x, y) && !(depthAt(t, tri, x, y) < depth * (1 - BorderOverlay.DEPTH_TOLERANCE));
     }
 
-    /** Whether an edge of {@code tri}, walked as {@link OutlinePlan} lists and {@link BorderOverlay} walks it, lights (x, y). */
+    /** Whether an edge of {@code tri} lights (x, y) by the overlay's line rule ({@link LineCrossing#lights}). */
     private static boolean onEdge(int[] f, int tri, int x, int y) {
         int o = tri * ScreenTriangles.FIXED_STRIDE;
         for (int e = 0; e < 3; e++) {
             int a = o + 2 * e;
             int b = o + (e == 2 ? 0 : 2 * e + 2);
-            // From the smaller (x, y) end, as the overlay walks every edge.
-            boolean flip = f[a] > f[b] || f[a] == f[b] && f[a + 1] > f[b + 1];
-            int from = flip ? b : a;
-            int to = flip ? a : b;
-            double xa = f[from] / (double) FixedPoint.ONE;
-            double ya = f[from + 1] / (double) FixedPoint.ONE;
-            double xb = f[to] / (double) FixedPoint.ONE;
-            double yb = f[to + 1] / (double) FixedPoint.ONE;
-            double dx = xb - xa;
-            double dy = yb - ya;
-            if (Math.abs(dx) >= Math.abs(dy)) {
-                if (dx != 0 && x >= Math.ceil(xa - 0.5) && x <= Math.floor(xb - 0.5)
-                        && Math.floor(ya + (x + 0.5 - xa) * (dy / dx)) == y) {
-                    return true;
-                }
-            } else if (y >= Math.ceil(Math.min(ya, yb) - 0.5) && y <= Math.floor(Math.max(ya, yb) - 0.5)
-                    && Math.floor(xa + (y + 0.5 - ya) * (dx / dy)) == x) {
+            if (LineCrossing.lights(f[a], f[a + 1], f[b], f[b + 1], x, y)) {
                 return true;
             }
         }

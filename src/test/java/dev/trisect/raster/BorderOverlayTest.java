@@ -4,6 +4,7 @@ import dev.trisect.render.BorderStyle;
 import dev.trisect.render.Framebuffer;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.texture.Texture;
@@ -37,7 +38,7 @@ class BorderOverlayTest {
         plan.prepare(t, BorderStyle.plain(), 0, 1, H, bandRows);
         BorderOverlay overlay = new BorderOverlay();
         for (int y = 0, band = 0; y < H; y += bandRows, band++) {
-            overlay.draw(fb, plan, band, 0, y, W, Math.min(H, y + bandRows));
+            overlay.draw(fb, plan, band, y, Math.min(H, y + bandRows));
         }
         return fb;
     }
@@ -74,18 +75,61 @@ class BorderOverlayTest {
         return best;
     }
 
-    @Test
-    void drawingInBandsGivesTheSamePixels() {
-        Random rnd = new Random(11);
+    /** 40 triangles scattered over the frame and beyond it; with {@code fallbacks}, one in three a fallback piece. */
+    private static ScreenTriangles scattered(long seed, boolean fallbacks) {
+        Random rnd = new Random(seed);
         ScreenTriangles t = new ScreenTriangles();
         for (int k = 0; k < 40; k++) {
             double x = rnd.nextDouble() * W;
             double y = rnd.nextDouble() * H;
             t.add(x, y, 0.5, 0, 0, x + rnd.nextGaussian() * 25, y + rnd.nextGaussian() * 25, 0.4, 0, 0,
-                    x + rnd.nextGaussian() * 25, y + rnd.nextGaussian() * 25, 0.6, 0, 0, k, 0);
+                    x + rnd.nextGaussian() * 25, y + rnd.nextGaussian() * 25, 0.6, 0, 0, k, 0, fallbacks && k % 3 == 0);
         }
+        return t;
+    }
+
+    @Test
+    void drawingInBandsGivesTheSamePixels() {
+        ScreenTriangles t = scattered(11, false);
         assertArrayEquals(draw(t, H).colour(), draw(t, 7).colour());
         assertArrayEquals(draw(t, H).colour(), draw(t, 1).colour());
+    }
+
+    /**
+     * The plan's edges are segments of the line rasterizer's crossing rule: drawn band by band, with
+     * faded and fallback outlines, every pixel they change is one the rule's one-pixel test
+     * ({@link OutlineProbe}, {@link LineCrossing#lights}) says an outline lights; the loop of OpenGL's
+     * lines refuses them.
+     */
+    @Test
+    void thePlansEdgesAreCrossingLinesOfTheLineRasterizer() {
+        ScreenTriangles t = scattered(5, true);
+        BorderStyle style = new BorderStyle(BorderStyle.Colouring.YELLOW, true);
+        int bandRows = 8;
+        OutlinePlan plan = new OutlinePlan();
+        plan.prepare(t, style, 0, 1, H, bandRows);
+        assertEquals(Segments.CROSSING, plan.segments().rule());
+        Framebuffer fb = filled(t);
+        BorderOverlay overlay = new BorderOverlay();
+        long drawn = 0;
+        for (int y = 0, band = 0; y < H; y += bandRows, band++) {
+            drawn += overlay.draw(fb, plan, band, y, Math.min(H, y + bandRows));
+        }
+        assertTrue(drawn > 100, "outlines drawn: " + drawn);
+        Framebuffer plain = filled(t);
+        for (int i = 0; i < W * H; i++) {
+            if (fb.colour()[i] != plain.colour()[i]) {
+                int x = i % W;
+                int y = i / W;
+                boolean lit = false;
+                for (int tri = 0; tri < t.count() && !lit; tri++) {
+                    lit = OutlineProbe.lights(t, tri, x, y, H, plain.depth()[i]);
+                }
+                assertTrue(lit, "pixel " + x + "," + y + " drawn by no outline the probe knows");
+            }
+        }
+        assertThrows(IllegalArgumentException.class,
+                () -> LineRaster.rows(plan.segments(), 0, fb.colour(), fb.depth(), 0, H));
     }
 
     @Test
@@ -166,7 +210,7 @@ class BorderOverlayTest {
                     s[6 * i + 4], s[6 * i + 5], a[9 * i + 6], 0, 0, i, 0, t.perPixel()[i]);
             OutlinePlan plan = new OutlinePlan();
             plan.prepare(one, style, 0, 1, H, H);
-            overlay.draw(fb, plan, 0, 0, 0, W, H);
+            overlay.draw(fb, plan, 0, 0, H);
         }
         return fb;
     }
@@ -175,7 +219,7 @@ class BorderOverlayTest {
         Framebuffer fb = filled(t);
         OutlinePlan plan = new OutlinePlan();
         plan.prepare(t, style, 0, 1, H, H);
-        new BorderOverlay().draw(fb, plan, 0, 0, 0, W, H);
+        new BorderOverlay().draw(fb, plan, 0, 0, H);
         return fb;
     }
 
@@ -220,7 +264,7 @@ class BorderOverlayTest {
             assertEquals(0, plan.earlier(shared), "the earlier piece shares it");
             BorderOverlay overlay = new BorderOverlay();
             for (int y = 0, band = 0; y < H; y += bandRows, band++) {
-                overlay.draw(fb, plan, band, 0, y, W, Math.min(H, y + bandRows));
+                overlay.draw(fb, plan, band, y, Math.min(H, y + bandRows));
             }
             for (int x = 10; x < 70; x++) {
                 assertEquals(earlier, fb.colour()[10 * W + x], "shared edge at " + x + ",10, bands of " + bandRows);

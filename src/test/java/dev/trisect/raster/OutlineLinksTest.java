@@ -199,7 +199,7 @@ class OutlineLinksTest {
         new Rasterizer().fill(fb, t, order, 0, t.count(), GREY, true, 0, 0, W, H);
         BorderOverlay overlay = new BorderOverlay();
         for (int y = 0, band = 0; y < H; y += BAND_ROWS, band++) {
-            overlay.draw(fb, plan, band, 0, y, W, Math.min(H, y + BAND_ROWS));
+            overlay.draw(fb, plan, band, y, Math.min(H, y + BAND_ROWS));
         }
         return fb;
     }
