@@ -35,9 +35,9 @@ import java.util.TreeSet;
  * combination's source, state, UV and ids settings and the loop's name. A line that is only {@code $WRITE$} or {@code $END_WRITE$}
  * becomes the write's {@code //#begin} or {@code //#end} (around the UV output's lines; they read the
  * locals {@code i}, {@code qf}, {@code argb} and the arrays {@code depth}, {@code color}); a line that is
- * only another {@code $WORD$} is a hook: the source's section of that name in lower case
- * ({@code $SETUP$}, {@code $ROW$}, {@code $PIXEL$}, {@code $KNOT$}, {@code $SEGMENT$}, {@code $PIECE$}),
- * or nothing.
+ * only another {@code $WORD$} is a hook: the write's, the source's and the colour's sections of that
+ * name in lower case, in that order ({@code $SETUP$}, {@code $ROW$}, {@code $PIXEL$}, {@code $KNOT$},
+ * {@code $SEGMENT$}, {@code $PIECE$}), or nothing.
  *
  * <p>LoopPart ({@code sources/NAME.source}): comment lines (its description), then sections, each from
  * a line {@code //#name} to the next: {@code fixed} and {@code double} (the texel, required), the
@@ -48,7 +48,8 @@ import java.util.TreeSet;
  * Colour ({@code colours/NAME.colour}): {@code //#varyings} (names, slots 2.. in order),
  * {@code //#combine} (of {@code $TEXEL$} and them), and hook sections as a source's, written after the
  * source's. Write ({@code writes/NAME.write}): {@code //#uv}
- * ({@code yes} when it writes the UV output), {@code //#begin}, {@code //#end}. Adding one is its file
+ * ({@code yes} when it writes the UV output), {@code //#begin}, {@code //#end}, and hook sections
+ * ({@code //#pixel}: right after the depth test, before the colour). Adding one is its file
  * and its line in {@link #SOURCES}, {@link #COLOURS} or {@link #WRITES} (and for the last two its
  * {@code PixelState} constant).
  */
@@ -290,11 +291,12 @@ public final class LoopGenerator {
                         b.append(indent).append(line).append('\n');
                     }
                 } else if (hook.matches("\\$[A-Z]+\\$")) {
-                    // A hook line: the source's section of that name, then the colour's, indented as the
-                    // line, or nothing.
+                    // A hook line: the write's section of that name, then the source's, then the
+                    // colour's, indented as the line, or nothing.
                     String indent = kept.substring(0, kept.indexOf('$'));
                     String section = hook.substring(1, hook.length() - 1).toLowerCase(Locale.ROOT);
-                    List<String> lines = new ArrayList<>(k.source().lines(section, templateName, k));
+                    List<String> lines = new ArrayList<>(k.write().lines(section, templateName, k));
+                    lines.addAll(k.source().lines(section, templateName, k));
                     lines.addAll(k.colour().lines(section, templateName, k));
                     for (String line : lines) {
                         b.append(indent).append(substitute(line, k, name)).append('\n');
