@@ -21,6 +21,7 @@ import dev.trisect.perf.Sweep;
 import dev.trisect.perf.SweepChart;
 import dev.trisect.pipeline.Draws;
 import dev.trisect.pipeline.FrameRenderer;
+import dev.trisect.raster.PixelState;
 import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.scene.Camera;
@@ -81,6 +82,12 @@ final class BenchCommand extends SceneCommand {
                     + "by frame in turn, and each row ends with what the labels cost, their layout included "
                     + "(default: none; not with --lines or --glref).")
     int scatteredLabels;
+
+    @Option(names = "--alpha-test", description = "Time each path also with every material alpha-tested (drawn where "
+            + "its texel's alpha is at least 0.5; the scene's textures are opaque, so the same pixels), frame by frame "
+            + "in turn with the opaque frame; each row ends with the alpha-tested median over the opaque one "
+            + "(not with --lines, --labels or --glref).")
+    boolean alphaTest;
 
     @Option(names = "--json", description = "One JSON line per path instead of a table.")
     boolean json;
@@ -172,6 +179,10 @@ final class BenchCommand extends SceneCommand {
         if (scatteredLabels > 0 && (scatteredLines > 0 || glref != null)) {
             throw InputException.usage("--labels times the labels alone: give it without --lines and --glref");
         }
+        if (alphaTest && (scatteredLines > 0 || scatteredLabels > 0 || glref != null)) {
+            throw InputException.usage("--alpha-test times the alpha test alone: give it without --lines, --labels "
+                    + "and --glref");
+        }
         SceneAsset scene = scatteredLines == 0 ? given : given.withLines(ScatteredLines.of(camera,
                 frame.size.viewport().aspect(), scatteredLines, 1, 0xFFFFFF));
         Texture[] textures = scene.textureArray();
@@ -239,11 +250,13 @@ final class BenchCommand extends SceneCommand {
             try (InterruptNotice notice = new InterruptNotice(common.err(), progress,
                     modes.size() + (glref == null ? 0 : 1), "path")) {
                 Results.print(common.out(), lines);
-                Draws draws = light.draws(scene, textures, vp, lineWidth);
+                Draws draws = alphaTest ? light.draws(scene.mesh(), textures, alphaTested(textures.length), vp)
+                        : light.draws(scene, textures, vp, lineWidth);
                 FrameBench bench = new FrameBench(renderer, draws, Frames.allocate(frame.size));
                 // With lines, every path is also timed without them, frame by frame in turn: the
                 // difference of the medians is what the lines cost, measured alike for glref below.
-                Draws bare = scene.lines().isEmpty() && scatteredLabels == 0 ? null
+                // With --alpha-test, without the test: the ratio of the medians is what it costs.
+                Draws bare = scene.lines().isEmpty() && scatteredLabels == 0 && !alphaTest ? null
                         : light.draws(scene.mesh(), textures, vp);
                 // Labels are laid out again before every frame, as a view does.
                 Runnable labels = scatteredLabels == 0 ? null : labelLayout(camera, draws);
@@ -257,7 +270,8 @@ final class BenchCommand extends SceneCommand {
                         FrameBench.Result[] pair = bench.timeAlternately(bare, settings, warmup, frames,
                                 progress.task(mode.id()), labels);
                         r = pair[0];
-                        extraMs = pair[0].times().medianMs() - pair[1].times().medianMs();
+                        extraMs = alphaTest ? pair[0].times().medianMs() / pair[1].times().medianMs()
+                                : pair[0].times().medianMs() - pair[1].times().medianMs();
                     }
                     progress.close(); // erased before the row, which goes to the same terminal
                     Results.print(common.out(), List.of(row(mode.id(), r, threads, extraMs)));
@@ -292,7 +306,7 @@ final class BenchCommand extends SceneCommand {
                     .put("pixels", (long) frame.size.width() * frame.size.height())
                     .put("pixels_written", r.last().pixelsWritten());
             if (!Double.isNaN(linesMs)) {
-                o.put(extraName() + "_ms", linesMs, 3);
+                o.put(extraName() + (alphaTest ? "_ratio" : "_ms"), linesMs, 3);
             }
             return o.toString();
         }
@@ -300,14 +314,22 @@ final class BenchCommand extends SceneCommand {
                 t.minMs(), t.meanMs(), t.p95Ms(), 1000 / t.medianMs(), r.last().pieces()) + linesColumn(linesMs);
     }
 
-    /** The lines' (or labels') cost after a row, when measured. */
+    /** The lines' (or labels') cost after a row, when measured; with --alpha-test, its ratio to the opaque frame. */
     private String linesColumn(double ms) {
-        return Double.isNaN(ms) ? "" : String.format(Locale.ROOT, "  %s %.3f ms", extraName(), ms);
+        return Double.isNaN(ms) ? "" : String.format(Locale.ROOT, alphaTest ? "  %s %.3fx opaque" : "  %s %.3f ms",
+                extraName(), ms);
     }
 
     /** What the rows' extra cost is of. */
     private String extraName() {
-        return scatteredLabels > 0 ? "labels" : "lines";
+        return alphaTest ? "alpha_test" : scatteredLabels > 0 ? "labels" : "lines";
+    }
+
+    /** Every one of {@code materials} alpha-tested, the texel its colour. */
+    private static int[] alphaTested(int materials) {
+        int[] states = new int[materials];
+        Arrays.fill(states, PixelState.TEXEL | PixelState.ALPHA_TEST);
+        return states;
     }
 
     /** Lays out the scattered labels into {@code draws}' quads, replacing those there. */

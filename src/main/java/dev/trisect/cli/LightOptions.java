@@ -115,10 +115,15 @@ final class LightOptions {
      * triangles in file order, as the view draws the model as one object.
      */
     Draws draws(Mesh mesh, Texture[] textures, Mat4 viewProjection) {
+        return draws(mesh, textures, BlendOrder.states(textures), viewProjection);
+    }
+
+    /** As {@link #draws(Mesh, Texture[], Mat4)}, each material with the given pixel state (lit ones modulated). */
+    Draws draws(Mesh mesh, Texture[] textures, int[] states, Mat4 viewProjection) {
         Draws d = new Draws();
         Surface[] surfaces = new Surface[mesh.materialCount()];
         Arrays.fill(surfaces, new Surface(shading(), Colour.WHITE, Colour.WHITE));
-        d.add(mesh, textures, BlendOrder.states(textures), viewProjection, Mat4.identity(), surfaces);
+        d.add(mesh, textures, states, viewProjection, Mat4.identity(), surfaces);
         d.setLights(lights());
         d.setFog(fog().orElse(null));
         return d;

@@ -1,6 +1,7 @@
 package dev.trisect.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.texture.Texture;
 import dev.trisect.texture.TextureReader;
@@ -9,15 +10,57 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 /**
- * {@code render --obj} writes each material as its texture's alpha says, as the view does: a texture
+ * {@code bench --alpha-test} times the alpha-tested write against the opaque one; {@code render --obj} writes each material as its texture's alpha says, as the view does: a texture
  * whose alpha is only 0 or 255 is a cut-out (alpha-tested), one with partial alpha blends over what was
  * drawn before it in the file, and an opaque one is drawn as before.
  */
 class ObjAlphaCommandTest {
+    @Test
+    void benchTimesTheAlphaTestAgainstTheOpaqueFrameOnTheSamePixels() {
+        String[] args = {"bench", "--scene", "boxes", "--size", "96x64", "--modes", "perspective,tessellated",
+            "--frames", "2", "--warmup", "0", "--json"};
+        CliRun plain = CliRun.of(args);
+        assertEquals(0, plain.status(), plain.err());
+        CliRun tested = CliRun.of(concat(args, "--alpha-test"));
+        assertEquals(0, tested.status(), tested.err());
+        List<String> a = plain.out().lines().toList();
+        List<String> b = tested.out().lines().toList();
+        assertEquals(2, b.size(), tested.out());
+        for (int i = 0; i < 2; i++) {
+            // Opaque textures: every fragment passes the test, so the alpha-tested frame writes the same pixels.
+            assertEquals(field(a.get(i), "pixels_written"), field(b.get(i), "pixels_written"), b.get(i));
+            assertTrue(Double.parseDouble(field(b.get(i), "alpha_test_ratio")) > 0,
+                    b.get(i));
+        }
+        CliRun table = CliRun.of("bench", "--scene", "boxes", "--size", "64x48", "--modes", "affine", "--frames", "1",
+                "--warmup", "0", "--alpha-test");
+        assertEquals(0, table.status(), table.err());
+        assertTrue(table.out().lines().anyMatch(l -> l.startsWith("affine")
+                && l.matches(".* alpha_test [0-9.]+x opaque")), table.out());
+        CliRun both = CliRun.of("bench", "--scene", "boxes", "--alpha-test", "--labels", "3");
+        assertEquals(2, both.status(), both.err());
+    }
+
+    private static String field(String json, String key) {
+        Matcher m = Pattern.compile("\"" + key + "\":([-0-9.eE]+)").matcher(json);
+        assertTrue(m.find(), key + " in " + json);
+        return m.group(1);
+    }
+
+    private static String[] concat(String[] a, String... b) {
+        String[] out = Arrays.copyOf(a, a.length + b.length);
+        System.arraycopy(b, 0, out, a.length, b.length);
+        return out;
+    }
+
     @TempDir
     Path dir;
 
