@@ -43,6 +43,11 @@ final class BandPass {
     }
 
     private final Lane[] lanes;
+    /** The frame pixel whose last writer among the after-lists is noted ({@link #probe}), or -1. */
+    private int probe = -1;
+    /** After a draw: the after-list and command that wrote {@link #probe} last, or -1. Written by its band's task. */
+    private int probeList = -1;
+    private int probeCommand = -1;
 
     /** @param threads the threads of the pool that will run it */
     BandPass(int threads) {
@@ -77,6 +82,8 @@ final class BandPass {
             java.util.Arrays.fill(lane.afterPixels, 0);
             java.util.Arrays.fill(lane.afterNanos, 0);
         }
+        probeList = -1;
+        probeCommand = -1;
         boolean perspective = settings.mode().divides();
         double knotError = settings.mode().knots() ? settings.knotError() : 0;
         int width = frame.width();
@@ -120,11 +127,18 @@ final class BandPass {
                 lane.overlayNanos += System.nanoTime() - t2;
             }
             // The lines, then the quads, after the band's triangles, fog and outlines, as they were submitted.
+            boolean probed = probe >= y0 * width && probe < y1 * width;
             for (int l = 0; l < after.length; l++) {
                 if (after[l].count() > 0) {
+                    fill.probe(probed ? probe : -1);
                     long t3 = System.nanoTime();
                     lane.afterPixels[l] += fill.fill(frame, after[l], b, textures, perspective, 0, y0, width, y1);
                     lane.afterNanos[l] += System.nanoTime() - t3;
+                    if (fill.probeWriter() >= 0) {
+                        probeList = l;
+                        probeCommand = fill.probeWriter();
+                    }
+                    fill.probe(-1);
                 }
             }
         });
@@ -143,6 +157,26 @@ final class BandPass {
             }
         }
         return new Result(pixels, fill, overlay, afterPixels, afterNanos);
+    }
+
+    /**
+     * Notes, in the draws from now on, which command of the lists drawn after the triangles writes frame
+     * pixel {@code pixel} last ({@link #probeList}, {@link #probeCommand}); -1 to stop.
+     *
+     * @param pixel {@code y * width + x} of the frames to be drawn, or -1
+     */
+    void probe(int pixel) {
+        probe = pixel;
+    }
+
+    /** After a draw: the index in {@code after} of the list whose command wrote the probed pixel last, or -1. */
+    int probeList() {
+        return probeList;
+    }
+
+    /** After a draw: that command's index in its list, or -1. */
+    int probeCommand() {
+        return probeCommand;
     }
 
     /**

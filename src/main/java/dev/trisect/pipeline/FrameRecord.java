@@ -21,8 +21,11 @@ public final class FrameRecord {
     private final int width;
     private final int height;
     private final double knotError;
+    private final int[] probed;
 
-    FrameRecord(FrameRenderer renderer, Chunks chunks, int chunkCount, int width, int height, double knotError) {
+    FrameRecord(FrameRenderer renderer, Chunks chunks, int chunkCount, int width, int height, double knotError,
+                int[] probed) {
+        this.probed = probed;
         this.renderer = renderer;
         this.chunks = chunks;
         this.chunkCount = chunkCount;
@@ -105,6 +108,19 @@ public final class FrameRecord {
     public int[] coverage() {
         check();
         return renderer.coverage(chunks, chunkCount, width, height);
+    }
+
+    /**
+     * The line segment or quad drawn last at the pixel {@link FrameRenderer#probe} named when the frame was
+     * drawn (over the triangles there), found by the fill itself: {@code {Commands.LINE, line draw,
+     * segment}} (the draw as {@link Draws#lines(int)} numbers it, the segment in its lines) or
+     * {@code {Commands.QUAD, quad}} (the quad's index in {@link Draws#quads()}). Answers after the
+     * renderer drew again too (it is a copy).
+     *
+     * @return a new array, or null when no line or quad wrote the pixel or none was probed
+     */
+    public int[] probed() {
+        return probed == null ? null : probed.clone();
     }
 
     /** The chunks of screen triangles drawn, for the renderer's own passes over this frame. */

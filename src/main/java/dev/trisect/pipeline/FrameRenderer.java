@@ -79,6 +79,10 @@ public final class FrameRenderer implements AutoCloseable {
     public static final int MAX_THREADS = 256;
 
     /** A renderer using every available processor, up to {@link #MAX_THREADS}. */
+    /** The pixel {@link #probe} notes the last line or quad of, or -1. */
+    private volatile int probeX = -1;
+    private volatile int probeY = -1;
+
     public FrameRenderer() {
         this(defaultThreads());
     }
@@ -176,6 +180,8 @@ public final class FrameRenderer implements AutoCloseable {
      * on, and its lines and quads drawn.
      */
     private void fillPass(FrameJob job) {
+        int w = job.frame.width();
+        bands.probe(probeX >= 0 && probeX < w && probeY >= 0 && probeY < job.frame.height() ? probeY * w + probeX : -1);
         job.bands = bands.draw(job.frame, job.chunks, job.chunkCount(), job.draws.textures(), job.draws.states(),
                 job.settings, job.draws.fogPass(), outlines, new Commands[] {lines.commands(), quads.commands()},
                 job.pool);
@@ -193,7 +199,36 @@ public final class FrameRenderer implements AutoCloseable {
 
     private FrameRecord record(int chunkCount, int width, int height, RenderSettings settings) {
         return new FrameRecord(this, geometry.chunks(), chunkCount, width, height,
-                settings.mode().knots() ? settings.knotError() : 0);
+                settings.mode().knots() ? settings.knotError() : 0, probed());
+    }
+
+    /**
+     * Notes, in the frames drawn from now on, which line segment or quad is drawn last at frame pixel
+     * (x, y), over the triangles ({@link FrameRecord#probed}); for the pixel inspector. Costs a branch per
+     * line or quad command of that pixel's band.
+     *
+     * @param x frame column, or -1 to stop noting
+     * @param y frame row (0 at the top)
+     */
+    public void probe(int x, int y) {
+        probeX = x;
+        probeY = y;
+    }
+
+    /** What the probe found in the frame just drawn: {kind, ...} as {@link FrameRecord#probed}, or null. */
+    private int[] probed() {
+        int list = bands.probeList();
+        if (list < 0) {
+            return null;
+        }
+        Commands c = list == 0 ? lines.commands() : quads.commands();
+        int command = c.command(bands.probeCommand());
+        int ref = Commands.ref(command);
+        if (Commands.kind(command) == Commands.LINE) {
+            int[] o = lines.origin(ref);
+            return new int[] {Commands.LINE, o[0], o[1]};
+        }
+        return new int[] {Commands.QUAD, ref};
     }
 
     /**

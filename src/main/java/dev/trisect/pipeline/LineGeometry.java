@@ -33,6 +33,8 @@ final class LineGeometry {
     private double[] clip = new double[0];
     /** The segment being clipped: x, y, z, w of each end. */
     private final double[] ends = new double[8];
+    /** Per segment set up: its line draw and its index in that draw's lines. */
+    private int[] origins = new int[64];
 
     /** The lines of the frame last set up, binned into the fill's bands. */
     Commands commands() {
@@ -66,12 +68,26 @@ final class LineGeometry {
                             nearer / e[3], viewport.screenX(e[4], e[7]), viewport.screenY(e[5], e[7]),
                             nearer / e[7], lineWidth, colours[s])) {
                         commands.add(Commands.LINE, ref, segments.firstRow(ref), segments.lastRow(ref) + 1);
+                        if (2 * ref + 2 > origins.length) {
+                            origins = java.util.Arrays.copyOf(origins, 2 * origins.length);
+                        }
+                        origins[2 * ref] = d;
+                        origins[2 * ref + 1] = s;
                     }
                 }
             }
         }
         commands.bin(height, FrameRenderer.BAND_ROWS);
         return new Result(segments.count(), System.nanoTime() - start);
+    }
+
+    /**
+     * Where segment {@code ref} of the frame last set up came from.
+     *
+     * @return {line draw index (as {@link Draws#lines(int)}), segment index in that draw's lines}
+     */
+    int[] origin(int ref) {
+        return new int[] {origins[2 * ref], origins[2 * ref + 1]};
     }
 
     private void transform(Lines lines, Mat4 mvp) {

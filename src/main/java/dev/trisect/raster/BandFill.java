@@ -15,6 +15,10 @@ import dev.trisect.texture.Texture;
  */
 public final class BandFill {
     private final Rasterizer rasterizer = new Rasterizer();
+    /** The frame pixel index whose last writer {@link #fill} notes, or -1. */
+    private int probe = -1;
+    /** The index (in its list) of the last command that wrote {@link #probe}, or -1. */
+    private int probeWriter = -1;
 
     /** The rasterizer of this thread's triangles: set its filter and span error before filling. */
     public Rasterizer rasterizer() {
@@ -34,9 +38,16 @@ public final class BandFill {
                      int x0, int y0, int x1, int y1) {
         int[] items = list.bins().items();
         long written = 0;
+        int[] colour = frame.colour();
         for (int k = list.bins().start(band), end = list.bins().start(band + 1); k < end; k++) {
             int command = list.command(items[k]);
             int ref = Commands.ref(command);
+            // The probed pixel's alpha is cleared before each command: every write sets it to 255 (and none
+            // reads it), so a command wrote the pixel exactly when the alpha is back; else it is restored.
+            int saved = probe < 0 ? 0 : colour[probe];
+            if (probe >= 0) {
+                colour[probe] = saved & 0xFFFFFF;
+            }
             written += switch (Commands.kind(command)) {
                 case Commands.TRIANGLE -> rasterizer.fillOne(frame, list.triangles(), ref, textures, perspective,
                         x0, y0, x1, y1);
@@ -44,8 +55,36 @@ public final class BandFill {
                 case Commands.LINE -> LineRaster.rows(list.segments(), ref, frame.colour(), frame.depth(), y0, y1);
                 default -> list.quads().rows(ref, frame.colour(), frame.depth(), y0, y1);
             };
+            if (probe >= 0) {
+                if (colour[probe] >>> 24 != 0) {
+                    probeWriter = items[k];
+                } else {
+                    colour[probe] = saved;
+                }
+            }
         }
         return written;
+    }
+
+    /**
+     * Notes which command of the next {@link #fill} calls writes frame pixel {@code pixel} last (for the
+     * pixel inspector: a line or a label over a triangle), or stops noting with -1. Costs a branch per
+     * command, none per pixel.
+     *
+     * @param pixel index of the pixel in the frame ({@code y * width + x}), within the rows filled, or -1
+     */
+    public void probe(int pixel) {
+        probe = pixel;
+        probeWriter = -1;
+    }
+
+    /**
+     * The command that wrote the probed pixel last in the {@link #fill} calls since {@link #probe}.
+     *
+     * @return its index in its list ({@link Commands#command}), or -1 when none wrote it
+     */
+    public int probeWriter() {
+        return probeWriter;
     }
 
     /**

@@ -77,6 +77,15 @@ public final class QuadRaster {
     }
 
     /**
+     * The kind of quad {@code s}.
+     *
+     * @return {@link #BILLBOARD}, {@link #GLYPH} or {@link #OTHER}
+     */
+    public int kind(int s) {
+        return ints[ISTRIDE * s + 6];
+    }
+
+    /**
      * Quads of one kind added since {@link #clear}.
      *
      * @param kind {@link #BILLBOARD}, {@link #GLYPH} or {@link #OTHER}

@@ -38,6 +38,8 @@ public final class DrawnFrame {
     private final int height;
     private final Draws draws;
     private final Sprites sprites;
+    /** The object of each line draw ({@link Draws#lines(int)}), in order. */
+    private final List<LineOwner> lineOwners = new java.util.ArrayList<>();
 
     /**
      * Fills {@code draws} (cleared first) with a draw per object of {@code placed}, each with its own
@@ -80,9 +82,11 @@ public final class DrawnFrame {
             }
             if (!o.lines().isEmpty()) {
                 draws.addLines(o.lines(), mvp, o.lineWidth());
+                lineOwners.add(new LineOwner(o.object().name(), this.placed.indexOf(o), false));
             }
             if (!o.wire().isEmpty()) {
                 draws.addLines(o.wire(), mvp, o.lineWidth(), o.filled() ? Draws.WIRE_NEARER : 0);
+                lineOwners.add(new LineOwner(o.object().name(), this.placed.indexOf(o), true));
             }
         }
         draws.setLights(lights(snapshot.lights()));
@@ -102,21 +106,6 @@ public final class DrawnFrame {
             Sprites.screenText(t, width, height, draws.quads());
         }
         return this;
-    }
-
-    /**
-     * The label whose text box holds pixel (x, y), the one drawn last where several do.
-     *
-     * @return the label as placed, or null
-     */
-    public Sprites.Placed labelAt(int x, int y) {
-        List<Sprites.Placed> labels = sprites.labels();
-        for (int k = labels.size() - 1; k >= 0; k--) {
-            if (labels.get(k).contains(x, y)) {
-                return labels.get(k);
-            }
-        }
-        return null;
     }
 
     /** The shining lights as the frame's {@link Lights}, world space. */
@@ -159,6 +148,34 @@ public final class DrawnFrame {
      * @param triangle the triangle's index in the object's own mesh, 0-based
      */
     public record Owner(String name, int draw, int triangle) {
+    }
+
+    /**
+     * Which object a line draw belongs to, for readouts such as the pixel inspector.
+     *
+     * @param name the object's name, or null when it has none
+     * @param draw the object's place in the frame's draw order, 0-based
+     * @param wire whether the lines are its mesh's wireframe (else its own lines)
+     */
+    public record LineOwner(String name, int draw, boolean wire) {
+    }
+
+    /** The object line draw {@code i} ({@link Draws#lines(int)}) belongs to. */
+    public LineOwner lineOwnerOf(int i) {
+        return lineOwners.get(i);
+    }
+
+    /**
+     * The label quad {@code quad} of {@link Draws#quads()} belongs to (its backdrop or a glyph), or null
+     * for a billboard's or the screen text's.
+     */
+    public Sprites.Placed labelOfQuad(int quad) {
+        for (Sprites.Placed p : sprites.labels()) {
+            if (quad >= p.firstQuad() && quad < p.endQuad()) {
+                return p;
+            }
+        }
+        return null;
     }
 
     /** The object frame triangle {@code id} (0-based, numbered across the draws) belongs to. */

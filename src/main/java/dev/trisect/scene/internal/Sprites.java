@@ -39,12 +39,11 @@ public final class Sprites {
      * @param top    the first row
      * @param right  one past the last column
      * @param bottom one past the last row
+     * @param firstQuad its first quad (backdrop or glyph) in the frame's quads
+     * @param endQuad   one past its last quad
      */
-    public record Placed(Label label, String object, int left, int top, int right, int bottom) {
-        /** Whether pixel (x, y) is in the box. */
-        public boolean contains(int x, int y) {
-            return x >= left && x < right && y >= top && y < bottom;
-        }
+    public record Placed(Label label, String object, int left, int top, int right, int bottom, int firstQuad,
+                         int endQuad) {
     }
 
     /** A billboard or label with its point on screen, before sorting. */
@@ -144,8 +143,9 @@ public final class Sprites {
             int top = (int) Math.round(i.y()) - boxHeight;
             int boxWidth = widest(atlas, lines);
             int left = (int) Math.round(i.x() - boxWidth / 2.0);
+            int first = quads.count();
             text(atlas, lines, left, top, boxWidth, 0.5, q, l.colour(), l.background(), onTop, quads);
-            labels.add(new Placed(l, i.object(), left, top, left + boxWidth, top + boxHeight));
+            labels.add(new Placed(l, i.object(), left, top, left + boxWidth, top + boxHeight, first, quads.count()));
         }
     }
 

@@ -151,7 +151,10 @@ final class FrameDrawer {
         // This path last, so that its pieces are the ones the overlay outlines; the overlay comes after
         // the comparison, which measures the rendered image and never the borders.
         RenderSettings render = budget.apply(settings.render(), state.budget());
+        // The inspected pixel is probed: the fill notes the line or quad drawn last there.
+        renderer.probe(inspected >= 0 ? (int) (inspected >> 32) : -1, (int) inspected);
         back.stats = renderer.render(draws, render.withBorders(false), fb);
+        renderer.probe(-1, -1);
         if (paths != null) {
             paths[settings.render().mode().ordinal()] = back.stats.totalNanos() / 1e6;
             state.pathMs(paths, scene);
@@ -192,7 +195,7 @@ final class FrameDrawer {
             int ix = (int) (inspected >> 32);
             int iy = (int) inspected;
             if (ix < fw && iy < fh) {
-                back.inspection = inspect(fb, draws, viewport, drawn, settings, ix, iy);
+                back.inspection = inspect(fb, draws, viewport, drawn, settings, ix, iy, true);
                 back.underMarks = InspectorPainter.patch(fb.colour(), fw, fh, ix, iy);
             }
         }
@@ -203,7 +206,7 @@ final class FrameDrawer {
             int px = (int) (p >> 32);
             int py = (int) p;
             if (px < fw && py < fh) {
-                read.add(inspect(fb, draws, viewport, drawn, settings, px, py));
+                read.add(inspect(fb, draws, viewport, drawn, settings, px, py, false));
             }
         }
         back.pins = read.toArray(PixelInspector.Inspection[]::new);
@@ -237,10 +240,10 @@ final class FrameDrawer {
 
     /** The inspector's reading of frame pixel (x, y) of this frame (before anything is drawn over the image). */
     private PixelInspector.Inspection inspect(Framebuffer fb, Draws draws, Viewport viewport, DrawnFrame drawn,
-                                              ViewSettings settings, int x, int y) {
+                                              ViewSettings settings, int x, int y, boolean probed) {
         return PixelInspector.inspect(renderer.drawn(), fb, reference, new TexelToScreen(draws, viewport), drawn,
                 settings.render().filter(), settings.render().mode().divides(),
-                settings.render().borders() && settings.view() != ViewKind.DIFFERENCE, x, y);
+                settings.render().borders() && settings.view() != ViewKind.DIFFERENCE, x, y, probed);
     }
 
     /** Draws this frame in one path into a framebuffer; returns the nanoseconds it took. */

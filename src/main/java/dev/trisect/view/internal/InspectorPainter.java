@@ -46,6 +46,10 @@ public final class InspectorPainter {
         l.add(String.format(Locale.ROOT, "pixel %d,%d %s#%06X", in.x(), in.y(), pinned ? "(pinned) " : "",
                 in.argb() & 0xFFFFFF) + (in.refArgb() == 0 ? "" : String.format(Locale.ROOT, ", per-pixel #%06X",
                 in.refArgb() & 0xFFFFFF)));
+        if (in.shape() != null) {
+            // Drawn over the triangle (whose numbers follow): a line, a label, a billboard, the screen text.
+            l.add("drawn here: " + in.shape());
+        }
         PieceInfo mark = in.outline();
         if (mark != null) {
             // The magenta mark on the pixel belongs to this piece, which may not be the pixel's own.

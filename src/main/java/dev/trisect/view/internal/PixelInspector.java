@@ -7,13 +7,17 @@ import dev.trisect.pipeline.Draws;
 import dev.trisect.pipeline.FrameRecord;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.pipeline.PieceInfo;
+import dev.trisect.raster.Commands;
+import dev.trisect.raster.QuadRaster;
 import dev.trisect.raster.RowKnots;
 import dev.trisect.render.Framebuffer;
 import dev.trisect.scene.internal.DrawnFrame;
+import dev.trisect.scene.internal.Sprites;
 import dev.trisect.texture.internal.Lod;
 import dev.trisect.texture.MipChain;
 import dev.trisect.texture.Texture;
 import dev.trisect.texture.TextureFilter;
+import java.util.Locale;
 
 /**
  * The pixel inspector's numbers for one pixel, read from the renderer's own buffers of the frame just
@@ -57,11 +61,13 @@ public final class PixelInspector {
      *                     where nothing was drawn
      * @param light        the lit colour r, g, b (0..1) the pixel's texel was multiplied by, as its path
      *                     interpolates it; null where the frame carries no colour or nothing was drawn
+     * @param shape        the line segment, label, billboard or screen text drawn last over the triangles at
+     *                     this pixel, named ({@link #shapeOf}); null where none was or the pixel was not probed
      */
     public record Inspection(int x, int y, int argb, int triangle, DrawnFrame.Owner owner, double w, double s, double t,
                       double refS, double refT, double displacement, PieceInfo piece, double lambda, int mipLevel,
                       int texelX, int texelY, RowKnots knots, PieceInfo outline, DrawnFrame.Owner outlineOwner,
-                      int refArgb, double[] triangle2d, double[] light) {
+                      int refArgb, double[] triangle2d, double[] light, String shape) {
         /** The span segment holding the pixel (the index of its first knot), or -1 (not the span path, or a lone knot). */
         public int segment() {
             return knots == null ? -1 : knots.segmentOf(x);
@@ -77,10 +83,13 @@ public final class PixelInspector {
      *                    {@link FrameRecord#knotsAt} then gives)
      * @param borders     the borders are drawn over the frame (so fallback pieces' outlines may light the pixel)
      * @param drawn       the frame's objects: the texture and the object of each frame triangle
+     * @param probed      the frame was drawn probing this pixel ({@link FrameRenderer#probe}), so the record
+     *                    names the line or quad drawn last there
      */
     static Inspection inspect(FrameRecord record, Framebuffer frame, Framebuffer reference, TexelToScreen exact,
                               DrawnFrame drawn, TextureFilter filter, boolean perspective, boolean borders, int x,
-                              int y) {
+                              int y, boolean probed) {
+        String shape = probed ? shapeOf(record.probed(), drawn) : null;
         int i = y * frame.width() + x;
         double[] uv = frame.uv();
         int id = (int) uv[3 * i + 2] - 1;
@@ -90,7 +99,7 @@ public final class PixelInspector {
         int refArgb = reference == null ? 0 : reference.colour()[i];
         if (id < 0) {
             return new Inspection(x, y, argb, -1, null, Double.NaN, Double.NaN, Double.NaN, Double.NaN, Double.NaN,
-                    Double.NaN, null, Double.NaN, 0, 0, 0, null, outline, outlineOwner, refArgb, null, null);
+                    Double.NaN, null, Double.NaN, 0, 0, 0, null, outline, outlineOwner, refArgb, null, null, shape);
         }
         double q = frame.depth()[i];
         double s = uv[3 * i];
@@ -125,7 +134,33 @@ public final class PixelInspector {
         int ty = Math.floorMod((int) Math.floor(t * chain.scaleT(level)), chain.height(level));
         return new Inspection(x, y, argb, id, drawn.ownerOf(id), 1 / q, s, t, refS, refT, displacement, piece, lambda,
                 level, tx, ty, knots, outline, outlineOwner, refArgb, onScreen(drawn.draws(), id, frame.width(),
-                frame.height()), lightAt(piece, perspective, knots, x, y));
+                frame.height()), lightAt(piece, perspective, knots, x, y), shape);
+    }
+
+    /**
+     * The line segment or quad {@code probed} ({@link FrameRecord#probed}) as the user knows it: the segment
+     * of an object's lines or wireframe with its colour and width, the label with its object, a billboard,
+     * the screen text; null for null.
+     */
+    static String shapeOf(int[] probed, DrawnFrame drawn) {
+        if (probed == null) {
+            return null;
+        }
+        Draws draws = drawn.draws();
+        if (probed[0] == Commands.LINE) {
+            DrawnFrame.LineOwner o = drawn.lineOwnerOf(probed[1]);
+            String object = o.name() != null ? "\"" + o.name() + "\"" : "object " + (o.draw() + 1);
+            return String.format(Locale.ROOT, "%s %d of %s, #%06X, %d px", o.wire() ? "wireframe edge" : "line segment",
+                    probed[2], object, draws.lines(probed[1]).colours()[probed[2]] & 0xFFFFFF,
+                    draws.lineWidth(probed[1]));
+        }
+        Sprites.Placed label = drawn.labelOfQuad(probed[1]);
+        if (label != null) {
+            return "label \"" + label.label().text().replace("\n", " / ") + "\""
+                    + (label.object() != null ? " of \"" + label.object() + "\"" : "")
+                    + (label.label().isOnTop() ? ", on top" : "");
+        }
+        return draws.quads().kind(probed[1]) == QuadRaster.BILLBOARD ? "a billboard" : "the screen text";
     }
 
     /**

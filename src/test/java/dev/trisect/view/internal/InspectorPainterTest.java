@@ -19,7 +19,7 @@ class InspectorPainterTest {
         // A full readout: a triangle, its piece, both paths' texel coordinates, the displacement, the mip level.
         PieceInfo piece = new PieceInfo(8, 3, 2, false, new double[] {10, 10, 60, 10, 35, 40}, new double[9]);
         f.inspection = new PixelInspector.Inspection(x, y, 0xFF808080, 3, null, 2.5, 10.25, 3.5, 10.25, 3.5, 0.125,
-                piece, 1.5, 1, 12, 4, null, null, null, 0xFF404040, new double[] {5, 5, 90, 5, 5, 90}, null);
+                piece, 1.5, 1, 12, 4, null, null, null, 0xFF404040, new double[] {5, 5, 90, 5, 5, 90}, null, null);
         BufferedImage view = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
         Graphics2D g = view.createGraphics();
         g.drawImage(f.image, 0, 0, null);
@@ -74,7 +74,7 @@ class InspectorPainterTest {
         FrameSlot f = new FrameSlot(8, 8);
         PieceInfo piece = new PieceInfo(8, 3, 2, false, new double[] {10, 10, 60, 10, 35, 40}, new double[9]);
         var in = new PixelInspector.Inspection(1, 2, 0xFF808080, 3, null, 2.5, 10.25, 3.5, 10.25, 3.5, 0.125, piece,
-                1.5, 1, 12, 4, null, null, null, 0xFF404040, new double[] {5, 5, 90, 5, 5, 90}, null);
+                1.5, 1, 12, 4, null, null, null, 0xFF404040, new double[] {5, 5, 90, 5, 5, 90}, null, null);
         String text = InspectorPainter.text(in);
         assertTrue(text.startsWith("pixel 1,2 #808080, per-pixel #404040" + System.lineSeparator()), text);
         assertTrue(text.contains("in the view: piece outlined cyan, input triangle dashed"), text);
@@ -87,7 +87,7 @@ class InspectorPainterTest {
         FrameSlot f = new FrameSlot(64, 48);
         Arrays.fill(f.frame.colour(), 0xFF808080);
         f.inspection = new PixelInspector.Inspection(10, 10, 0xFF808080, 3, null, 2.5, 10.25, 3.5, 10.25, 3.5, 0.125,
-                null, 1.5, 1, 12, 4, null, null, null, 0, null, null);
+                null, 1.5, 1, 12, 4, null, null, null, 0, null, null, null);
         f.underMarks = InspectorPainter.patch(f.frame.colour(), 64, 48, 10, 10);
         assertEquals(null, InspectorPainter.marksNote(f), "nothing drawn over the image");
         for (int x = 8; x <= 10; x++) {
@@ -173,7 +173,7 @@ class InspectorPainterTest {
         assertEquals((0.2 + 0.6 + 0.5) / 2.5, piece.colourAt(35.5, 20.5, true)[0], 1e-12, "weighted by 1/w");
         double[] light = PixelInspector.lightAt(piece, false, null, 35, 20);
         var in = new PixelInspector.Inspection(35, 20, 0xFF808080, 3, null, 2.5, 10.25, 3.5, 10.25, 3.5, 0.125, piece,
-                1.5, 1, 12, 4, null, null, null, 0xFF404040, null, light);
+                1.5, 1, 12, 4, null, null, null, 0xFF404040, null, light, null);
         String texel = InspectorPainter.lines(in, false).stream().filter(l -> l.contains("texel 12,4")).findFirst()
                 .orElseThrow();
         assertTrue(texel.endsWith(", light 0.600 0.000 0.000"), texel);

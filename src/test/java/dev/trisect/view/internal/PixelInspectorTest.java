@@ -161,7 +161,7 @@ class PixelInspectorTest {
         PieceInfo capped = new PieceInfo(8, 3, 2, true, new double[] {10, 10, 60, 10, 35, 40}, new double[9]);
         assertTrue(sliver.sliver());
         PixelInspector.Inspection on = new PixelInspector.Inspection(35, 10, 0xFFFF00FF, 3, null, 2, 0, 0, 0, 0, 0, capped,
-                0, 0, 0, 0, null, sliver, null, 0, null, null);
+                0, 0, 0, 0, null, sliver, null, 0, null, null, null);
         var lines = InspectorPainter.lines(on, false);
         assertTrue(lines.contains("magenta outline: piece 7 of triangle 3, filled per pixel: a sliver (thinner than 1/16 px)"),
                 lines.toString());
