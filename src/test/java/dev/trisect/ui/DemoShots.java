@@ -33,6 +33,8 @@ public final class DemoShots {
                 w.shapes.setExtras(true);
                 w.shapes.cycleStyle();
                 w.shapes.setHud(true);
+                // Frames flat out, so that the HUD has a rate to show (a still view draws one frame and idles).
+                w.measureUncapped(true);
             });
             settle();
             shoot(viewBounds(w), docs.resolve("demo-shapes.png"));
@@ -41,6 +43,7 @@ public final class DemoShots {
                 w.shapes.cycleStyle();
                 w.shapes.cycleStyle();
                 w.shapes.setHud(false);
+                w.measureUncapped(false);
             });
             settle();
             // The heat map of the tessellated path against the per-pixel one, its legend on its panel.
