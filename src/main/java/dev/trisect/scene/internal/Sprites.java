@@ -196,7 +196,8 @@ public final class Sprites {
         int mode = QuadRaster.TEST | QuadRaster.TINT | onTop;
         for (int n = 0; n < lines.length; n++) {
             String line = lines[n];
-            int pen = left + (int) Math.round(align * (boxWidth - advance(atlas, line)));
+            // One line is the box's width: its advance is not measured again.
+            int pen = left + (lines.length == 1 ? 0 : (int) Math.round(align * (boxWidth - advance(atlas, line))));
             int baseline = top + n * lineHeight + atlas.ascent();
             for (int k = 0; k < line.length(); k = line.offsetByCodePoints(k, 1)) {
                 GlyphAtlas.Glyph g = atlas.glyph(line.codePointAt(k));

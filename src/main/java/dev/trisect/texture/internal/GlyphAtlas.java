@@ -52,6 +52,9 @@ public final class GlyphAtlas {
     private final int descent;
     private final int leading;
     private final Map<Integer, Glyph> glyphs = new HashMap<>();
+    /** Code points below this have their glyph in {@link #ascii} once rasterized. */
+    private static final int ASCII = 128;
+    private final Glyph[] ascii = new Glyph[ASCII];
     private int[] texels = new int[WIDTH * 64];
     private int rows = 64;
     /** The shelf being filled: its top row, height so far, and next free column. */
@@ -98,11 +101,26 @@ public final class GlyphAtlas {
      * @param codePoint a Unicode code point
      * @return its glyph
      */
-    public synchronized Glyph glyph(int codePoint) {
+    public Glyph glyph(int codePoint) {
+        // ASCII without the lock or a boxed key: a label's layout asks for each of its glyphs two or three
+        // times a frame. A Glyph's fields are final, so one read here is whole even without the lock.
+        if (codePoint >= 0 && codePoint < ASCII) {
+            Glyph g = ascii[codePoint];
+            if (g != null) {
+                return g;
+            }
+        }
+        return rasterized(codePoint);
+    }
+
+    private synchronized Glyph rasterized(int codePoint) {
         Glyph g = glyphs.get(codePoint);
         if (g == null) {
             g = rasterize(codePoint);
             glyphs.put(codePoint, g);
+        }
+        if (codePoint >= 0 && codePoint < ASCII) {
+            ascii[codePoint] = g;
         }
         return g;
     }
