@@ -58,19 +58,46 @@ final class BandPass {
     }
 
     /**
+     * Draws band {@code b}'s commands of list {@code l} of {@code after}, noting which of them writes the
+     * probed pixel last ({@link #probe}); returns the time it took, ns.
+     */
+    private long drawAfter(Lane lane, BandFill fill, Framebuffer frame, Commands[] after, int l, int b,
+                           Texture[] textures, boolean perspective, int width, int y0, int y1) {
+        if (after[l].count() == 0) {
+            return 0;
+        }
+        boolean probed = probe >= y0 * width && probe < y1 * width;
+        fill.probe(probed ? probe : -1);
+        long t = System.nanoTime();
+        lane.afterPixels[l] += fill.fill(frame, after[l], b, textures, perspective, 0, y0, width, y1);
+        long nanos = System.nanoTime() - t;
+        lane.afterNanos[l] += nanos;
+        if (fill.probeWriter() >= 0) {
+            probeList = l;
+            probeCommand = fill.probeWriter();
+        }
+        fill.probe(-1);
+        return nanos;
+    }
+
+    /**
      * Clears {@code frame} and fills the commands of chunks 0..chunkCount-1 into it, fogs each band
-     * when there is fog ({@link FogPass}, before the overlay: the borders are not part of the scene),
-     * outlines it by {@code outlines} when the settings have borders on, then draws its commands of
-     * each list of {@code after}, in order.
+     * when there is fog ({@link FogPass}, before the overlay: the borders are not part of the scene;
+     * the first {@code foggedLists} lists of {@code after} are drawn before the fog), outlines it by
+     * {@code outlines} when the settings have borders on, then draws its commands of each (other) list
+     * of {@code after}, in order.
      *
      * @param fog      the frame's fog, or null for none
      * @param textures the texture of each material, by material index
      * @param states   the pixel state of each material, by material index (see {@link Rasterizer#states})
      * @param after    the lists each band draws after its triangles, fog and outlines (the frame's
      *                 lines, then its quads), binned into the same bands
+     * @param foggedLists how many of the first lists of {@code after} are fogged (OpenGL fogs lines):
+     *                 with fog, each band draws them before its fog pass (so before the outlines)
      */
     Result draw(Framebuffer frame, Chunks chunks, int chunkCount, Texture[] textures, int[] states,
-                RenderSettings settings, FogPass fog, Outlines outlines, Commands[] after, WorkerPool pool) {
+                RenderSettings settings, FogPass fog, Outlines outlines, Commands[] after, int foggedLists,
+                WorkerPool pool) {
         for (Lane lane : lanes) {
             lane.pixels = 0;
             lane.fillNanos = 0;
@@ -116,30 +143,26 @@ final class BandPass {
             for (int c = 0; c < chunkCount; c++) {
                 lane.pixels += fill.fill(frame, chunks.get(c).commands, b, textures, perspective, 0, y0, width, y1);
             }
+            long foggedNanos = 0;
             if (fog != null) {
+                // The lists fogged with the triangles (the lines) come before the pass: each of their
+                // pixels is then fogged by its own depth, which it has written.
+                for (int l = 0; l < foggedLists; l++) {
+                    foggedNanos += drawAfter(lane, fill, frame, after, l, b, textures, perspective, width, y0, y1);
+                }
                 fog.apply(frame, y0, y1);
             }
-            lane.fillNanos += System.nanoTime() - t0;
+            lane.fillNanos += System.nanoTime() - t0 - foggedNanos;
             // The wait for the preparations is neither filling nor outlining: it is left out of both measures.
             if (borders && outlines.awaitPrepared(pool)) {
                 long t2 = System.nanoTime();
                 outlines.drawBand(thread, frame, b, y0, y1);
                 lane.overlayNanos += System.nanoTime() - t2;
             }
-            // The lines, then the quads, after the band's triangles, fog and outlines, as they were submitted.
-            boolean probed = probe >= y0 * width && probe < y1 * width;
-            for (int l = 0; l < after.length; l++) {
-                if (after[l].count() > 0) {
-                    fill.probe(probed ? probe : -1);
-                    long t3 = System.nanoTime();
-                    lane.afterPixels[l] += fill.fill(frame, after[l], b, textures, perspective, 0, y0, width, y1);
-                    lane.afterNanos[l] += System.nanoTime() - t3;
-                    if (fill.probeWriter() >= 0) {
-                        probeList = l;
-                        probeCommand = fill.probeWriter();
-                    }
-                    fill.probe(-1);
-                }
+            // The lines, then the quads, after the band's triangles, fog and outlines, as they were submitted
+            // (with fog, the lines came before it).
+            for (int l = fog != null ? foggedLists : 0; l < after.length; l++) {
+                drawAfter(lane, fill, frame, after, l, b, textures, perspective, width, y0, y1);
             }
         });
         long pixels = 0;

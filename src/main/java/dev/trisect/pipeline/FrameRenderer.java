@@ -176,14 +176,15 @@ public final class FrameRenderer implements AutoCloseable {
     }
 
     /**
-     * The fill pass: every band cleared and filled, fogged, outlined right after when the borders are
-     * on, and its lines and quads drawn.
+     * The fill pass: every band cleared and filled, fogged (its lines drawn before the fog, which fogs
+     * them as OpenGL does; the quads are not fogged), outlined right after when the borders are on, and
+     * its lines and quads drawn.
      */
     private void fillPass(FrameJob job) {
         int w = job.frame.width();
         bands.probe(probeX >= 0 && probeX < w && probeY >= 0 && probeY < job.frame.height() ? probeY * w + probeX : -1);
         job.bands = bands.draw(job.frame, job.chunks, job.chunkCount(), job.draws.textures(), job.draws.states(),
-                job.settings, job.draws.fogPass(), outlines, new Commands[] {lines.commands(), quads.commands()},
+                job.settings, job.draws.fogPass(), outlines, new Commands[] {lines.commands(), quads.commands()}, 1,
                 job.pool);
         job.bandsDone = System.nanoTime();
     }
