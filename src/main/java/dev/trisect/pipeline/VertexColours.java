@@ -41,6 +41,13 @@ final class VertexColours {
     private boolean lit;
     /** Unlit frames in a row since the last lit one. */
     private int unlitFrames;
+    /** What the colours were computed for ({@link #unchanged}): lights, per draw mesh and world, materials. */
+    private Lights lastLights;
+    private Mesh[] lastMeshes = new Mesh[0];
+    private Mat4[] lastWorlds = new Mat4[0];
+    private int lastMaterials = -1;
+    private double[] lastFactors = new double[0];
+    private boolean[] lastLit = new boolean[0];
 
     /**
      * Lights the vertices of every draw with a lit material; does nothing (and {@link #lit()} is
@@ -53,6 +60,8 @@ final class VertexColours {
         if (!lit) {
             if (++unlitFrames >= Retention.FRAMES && !tables.isEmpty()) {
                 tables = new IdentityHashMap<>();
+                lastMeshes = new Mesh[0];
+                lastWorlds = new Mat4[0];
             }
             return;
         }
@@ -89,6 +98,9 @@ final class VertexColours {
         for (int m = 0; m < materials; m++) {
             surfaces[m].factors(factors, LightingEquation.MATERIAL_STRIDE * m);
         }
+        if (unchanged(draws, materials)) {
+            return;
+        }
         Mat4[] normalMatrices = new Mat4[n];
         for (int d = 0; d < n; d++) {
             try {
@@ -102,6 +114,41 @@ final class VertexColours {
         double[][] scratch = new double[pool.threads()][6];
         pool.run(blocks, (thread, b) -> light(draws, lights, normalMatrices, scratch[thread], b * BLOCK,
                 Math.min(total, (b + 1) * BLOCK)));
+    }
+
+    /**
+     * Whether the colours of the last lit frame stand for this one: the same lights, and per draw the
+     * same mesh, world matrix and materials (their factors and whether they are lit) — a still scene
+     * under still lights, as a paused view or a benchmark draws it. Otherwise remembers this frame's.
+     */
+    private boolean unchanged(Draws draws, int materials) {
+        int n = draws.size();
+        int stride = LightingEquation.MATERIAL_STRIDE;
+        boolean same = lastMaterials == materials && lastMeshes.length == n && draws.lights().equals(lastLights)
+                && Arrays.equals(factors, 0, stride * materials, lastFactors, 0, stride * materials);
+        for (int d = 0; same && d < n; d++) {
+            same = lastMeshes[d] == draws.mesh(d) && lastWorlds[d].equals(draws.world(d));
+        }
+        for (int m = 0; same && m < materials; m++) {
+            same = lastLit[m] == draws.surfaces()[m].lit();
+        }
+        if (same) {
+            return true;
+        }
+        lastLights = draws.lights();
+        lastMeshes = new Mesh[n];
+        lastWorlds = new Mat4[n];
+        for (int d = 0; d < n; d++) {
+            lastMeshes[d] = draws.mesh(d);
+            lastWorlds[d] = draws.world(d);
+        }
+        lastMaterials = materials;
+        lastFactors = Arrays.copyOf(factors, stride * materials);
+        lastLit = new boolean[materials];
+        for (int m = 0; m < materials; m++) {
+            lastLit[m] = draws.surfaces()[m].lit();
+        }
+        return false;
     }
 
     /** Lights frame vertices from..to-1. */

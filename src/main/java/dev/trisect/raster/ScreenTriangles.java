@@ -31,6 +31,8 @@ public final class ScreenTriangles {
 
     private int count;
     private VertexLayout layout = VertexLayout.TEXTURED;
+    /** {@link #cornerStride} of a lit frame's layout: 1/w, s, t, r, g, b. */
+    private static final int LIT_CORNER = 6;
     /** Doubles per corner in {@link #attributes}: 1/w and the varyings. */
     private int cornerStride = 1 + VertexLayout.TEXTURED.varyings();
     private int[] fixed = new int[FIXED_STRIDE * 1024];
@@ -250,6 +252,11 @@ public final class ScreenTriangles {
             // The textured layout, once per corner of every triangle: two stores, not a loop.
             at[to + 1] = v[from + VertexLayout.S];
             at[to + 2] = v[from + VertexLayout.T];
+            return;
+        }
+        if (cornerStride == LIT_CORNER) {
+            // A lit frame's layout (s, t, r, g, b): a copy of a constant length, not a loop.
+            System.arraycopy(v, from + VertexLayout.FIRST_VARYING, at, to + 1, LIT_CORNER - 1);
             return;
         }
         for (int k = 1, f = from + VertexLayout.FIRST_VARYING; k < cornerStride; k++, f++) {

@@ -39,6 +39,8 @@ public final class VertexLayout {
     private static final VertexLayout[] LAYOUTS = new VertexLayout[MAX_VARYINGS + 1];
     /** {@link #TEXTURED}'s doubles per clip vertex: x, y, z, w, s, t. */
     public static final int CLIP_STRIDE = 6;
+    /** The clip stride of {@code of(5)}: s, t and a colour r, g, b, the layout of a lit frame. */
+    private static final int LIT_CLIP_STRIDE = CLIP_STRIDE + 3;
     /** {@link #TEXTURED}'s screen position in pixels, x right and y down (see {@link dev.trisect.math.Viewport}). */
     public static final int SCREEN_X = 6;
     public static final int SCREEN_Y = 7;
@@ -110,6 +112,12 @@ public final class VertexLayout {
     public static void copy(double[] src, int from, double[] dst, int to, int count) {
         if (count == CLIP_STRIDE) {
             System.arraycopy(src, from, dst, to, CLIP_STRIDE);
+            return;
+        }
+        if (count == LIT_CLIP_STRIDE) {
+            // The lit layout (s, t and a colour), in every clipped vertex of a lit frame: a copy of a
+            // constant length compiles to moves, a loop of a variable one does not.
+            System.arraycopy(src, from, dst, to, LIT_CLIP_STRIDE);
             return;
         }
         for (int k = 0; k < count; k++) {

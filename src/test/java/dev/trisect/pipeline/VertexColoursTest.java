@@ -118,4 +118,36 @@ class VertexColoursTest {
             assertEquals(colour(v, 0, a, false)[0], colour(v, 1, a, false)[0]);
         }
     }
+
+    @Test
+    void coloursAreKeptWhileLightsWorldsAndMaterialsStayAndFollowAnyChange() {
+        Mesh mesh = triangle();
+        Lights front = Lights.builder().directional(0, 0, 1, NO, new double[] {1, 1, 1}).build();
+        Lights above = Lights.builder().directional(0, 1, 1, NO, new double[] {1, 1, 1}).build();
+        Mat4 still = Mat4.identity();
+        Mat4 turned = Mat4.ofRows(1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, 0, 0, 0, 0, 1); // the normal +z becomes -y
+        Colour grey = new Colour(0.5, 0.5, 0.5);
+        // Each frame's lights, world and diffuse colour, and corner 0's red: Lambert's N·L times the diffuse.
+        Object[][] frames = {
+            {front, still, Colour.WHITE, 1.0},
+            {front, still, Colour.WHITE, 1.0},
+            {above, still, Colour.WHITE, 1 / Math.sqrt(2)},
+            {above, turned, Colour.WHITE, 0.0},
+            {front, still, Colour.WHITE, 1.0},
+            {front, still, grey, 0.5},
+        };
+        VertexColours v = new VertexColours();
+        Draws draws = new Draws();
+        try (WorkerPool pool = new WorkerPool(1, "vc-test")) {
+            for (int i = 0; i < frames.length; i++) {
+                Object[] f = frames[i];
+                draws.clear();
+                draws.add(mesh, new Texture[] {WHITE}, Mat4.identity(), (Mat4) f[1],
+                        new Surface[] {new Surface(Shading.SMOOTH, Colour.WHITE, (Colour) f[2])});
+                draws.setLights((Lights) f[0]);
+                v.compute(draws, pool);
+                assertEquals((double) f[3], colour(v, 0, 0, false)[0], 1e-6, "frame " + i);
+            }
+        }
+    }
 }
