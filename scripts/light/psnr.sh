@@ -3,9 +3,10 @@
 # smooth: PSNR (dB) of `compare` on demo, boxes, sphere (each exported to OBJ with its camera) and the
 # head of LightAgainstOpenGlTest (src/test/resources/dev/trisect/light/head.obj, its camera there),
 # lit by a directional light, a coloured point light with attenuation 1,0.2,0.05 and a coloured
-# ambient (the tests' "both-smooth"), nearest sampling. Each scene twice: with its textures, and with a
-# white texture on every material, so that only the light's interpolation differs between the paths
-# (no texel flips). Prints one line per scene, texture and path.
+# ambient (the tests' "both-smooth"), nearest sampling. Each scene three times: unlit with its textures
+# (what the texel flips alone give), lit with its textures, and lit with a white texture on every
+# material, so that only the light's interpolation differs between the paths (no texel flips). Prints
+# one line per scene, case and path.
 #
 #   scripts/light/psnr.sh [WxH] [MAX_ERROR]     (default 1280x720, 0.5)
 set -euo pipefail
@@ -18,7 +19,7 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 printf 'P3\n1 1\n255\n255 255 255\n' >"$tmp/white.ppm"
 light=(--light 1,2,3 --light-colour 0.8,0.9,1 --point-colour 1,0.7,0.4 --attenuation 1,0.2,0.05
   --ambient 0.25,0.2,0.35 --shade smooth --size "$size" --max-error "$err")
-printf '%-7s %-8s %-12s %s\n' scene texture path psnr_db
+printf '%-7s %-12s %-12s %s\n' scene case path psnr_db
 grep '^frame ' src/test/resources/dev/trisect/light/frames.txt | while read -r _ name scene eye target far point; do
   if [[ $scene == head ]]; then
     obj=src/test/resources/dev/trisect/light/head.obj
@@ -28,13 +29,15 @@ grep '^frame ' src/test/resources/dev/trisect/light/frames.txt | while read -r _
     java -jar "$JAR" export --scene "$scene" --to "$obj" >/dev/null
     textured=()
   fi
-  for texture in own white; do
-    if [[ $texture == white ]]; then tex=(--texture "$tmp/white.ppm"); else tex=("${textured[@]}"); fi
+  for case in unlit lit lit-white; do
+    lit=("${light[@]}" --point "$point")
+    if [[ $case == unlit ]]; then lit=(--size "$size" --max-error "$err"); fi
+    if [[ $case == lit-white ]]; then tex=(--texture "$tmp/white.ppm"); else tex=("${textured[@]}"); fi
     for mode in spans tessellated; do
       extra=(); [[ $mode == tessellated ]] && extra=(--split error)
       psnr=$(java -jar "$JAR" compare --obj "$obj" "${tex[@]}" --eye "$eye" --target "$target" --far "$far" \
-        --point "$point" "${light[@]}" --mode "$mode" "${extra[@]}" | sed -n 's/.*"psnr_db":\([^,}]*\).*/\1/p')
-      printf '%-7s %-8s %-12s %s\n' "$name" "$texture" "$mode" "$psnr"
+        "${lit[@]}" --mode "$mode" "${extra[@]}" | sed -n 's/.*"psnr_db":\([^,}]*\).*/\1/p')
+      printf '%-7s %-12s %-12s %.1f\n' "$name" "$case" "$mode" "$psnr"
     done
   done
 done
