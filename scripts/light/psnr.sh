@@ -37,7 +37,9 @@ grep '^frame ' src/test/resources/dev/trisect/light/frames.txt | while read -r _
       extra=(); [[ $mode == tessellated ]] && extra=(--split error)
       psnr=$(java -jar "$JAR" compare --obj "$obj" "${tex[@]}" --eye "$eye" --target "$target" --far "$far" \
         "${lit[@]}" --mode "$mode" "${extra[@]}" | sed -n 's/.*"psnr_db":\([^,}]*\).*/\1/p')
-      printf '%-7s %-12s %-12s %.1f\n' "$name" "$case" "$mode" "$psnr"
+      # Identical images have no PSNR (compare prints null): infinite.
+      [[ $psnr == null ]] && psnr=inf || psnr=$(printf '%.1f' "$psnr")
+      printf '%-7s %-12s %-12s %s\n' "$name" "$case" "$mode" "$psnr"
     done
   done
 done
