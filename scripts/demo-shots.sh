@@ -5,5 +5,6 @@
 #   scripts/demo-shots.sh [folder]      (default docs)
 set -e
 cd "$(dirname "$0")/.."
+mkdir -p "${1:-docs}"
 mvn -q test-compile
 exec mvn -q exec:java -Dmain.class=dev.trisect.ui.DemoShots -Dexec.classpathScope=test -Dexec.args="${1:-docs}"
