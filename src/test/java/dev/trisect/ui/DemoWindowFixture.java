@@ -2,6 +2,7 @@ package dev.trisect.ui;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import dev.trisect.GuiTests;
 import dev.trisect.content.DemoScenes;
 import dev.trisect.devtools.DevToolsDialog;
 import dev.trisect.devtools.DevToolsPanel;
@@ -17,7 +18,6 @@ import java.awt.Robot;
 import java.awt.Window;
 import java.awt.event.InputEvent;
 import java.util.concurrent.Callable;
-import java.util.concurrent.atomic.AtomicReference;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import javax.swing.JDialog;
@@ -104,35 +104,14 @@ abstract class DemoWindowFixture {
         return ((DevToolsDialog) devToolsWindow()).panel();
     }
 
+    /** {@link GuiTests#onEdt}, for the subclasses' unqualified calls. */
     static <T> T onEdt(Callable<T> task) throws Exception {
-        AtomicReference<T> result = new AtomicReference<>();
-        AtomicReference<Exception> failure = new AtomicReference<>();
-        SwingUtilities.invokeAndWait(() -> {
-            try {
-                result.set(task.call());
-            } catch (Exception e) {
-                failure.set(e);
-            }
-        });
-        if (failure.get() != null) {
-            throw failure.get();
-        }
-        return result.get();
+        return GuiTests.onEdt(task);
     }
 
-    interface Check {
-        boolean ok() throws Exception;
-    }
-
-    static void waitFor(String what, Check check) throws Exception {
-        // Bounded waiting (up to about 20 s), not timing: 400 polls 50 ms apart.
-        for (int poll = 0; poll < 400; poll++) {
-            if (check.ok()) {
-                return;
-            }
-            Thread.sleep(50);
-        }
-        throw new AssertionError("timed out waiting for " + what);
+    /** {@link GuiTests#waitFor}: bounded waiting, not timing. */
+    static void waitFor(String what, GuiTests.Check check) throws Exception {
+        GuiTests.waitFor(what, check);
     }
 
     static void press(int key) {
