@@ -78,11 +78,11 @@ public final class FrameRenderer implements AutoCloseable {
      */
     public static final int MAX_THREADS = 256;
 
-    /** A renderer using every available processor, up to {@link #MAX_THREADS}. */
     /** The pixel {@link #probe} notes the last line or quad of, or -1. */
     private volatile int probeX = -1;
     private volatile int probeY = -1;
 
+    /** A renderer using every available processor, up to {@link #MAX_THREADS}. */
     public FrameRenderer() {
         this(defaultThreads());
     }

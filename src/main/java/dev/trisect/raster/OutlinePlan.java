@@ -217,7 +217,7 @@ public final class OutlinePlan {
         ensureEdges(3 * n);
         bins.prepare(3 * n);
         int count = 0;
-        // The crossing rule clips to the frame's columns when drawn (LineCrossing.rows): no width here.
+        // The crossing rule clips to the frame's columns when drawn (LineCrossing.band): no width here.
         edges.begin(0, height);
         edges.plan = this;
         for (int tri = 0; tri < n; tri++) {

@@ -50,7 +50,8 @@ final class DemoShapes implements UpdateListener {
 
     private final TrisectView view;
     private final Supplier<FrameInfo> latest;
-    private Scene scene;
+    /** Written on the event thread, read by {@link #update} on the render thread. */
+    private volatile Scene scene;
     private Camera first;
     private List<Node> extras = List.of();
     private boolean shown;

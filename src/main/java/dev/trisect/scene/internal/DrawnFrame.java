@@ -64,7 +64,8 @@ public final class DrawnFrame {
         // Draw k is object k of this order: blended objects last, farthest first.
         this.placed = BlendOrder.order(placed, viewProjection);
         draws.clear();
-        for (Scene.Placed o : this.placed) {
+        for (int k = 0; k < this.placed.size(); k++) {
+            Scene.Placed o = this.placed.get(k);
             List<Material> materials = o.materials();
             Texture[] textures = new Texture[materials.size()];
             Surface[] surfaces = new Surface[materials.size()];
@@ -82,11 +83,11 @@ public final class DrawnFrame {
             }
             if (!o.lines().isEmpty()) {
                 draws.addLines(o.lines(), mvp, o.lineWidth());
-                lineOwners.add(new LineOwner(o.object().name(), this.placed.indexOf(o), false));
+                lineOwners.add(new LineOwner(o.object().name(), k, false));
             }
             if (!o.wire().isEmpty()) {
                 draws.addLines(o.wire(), mvp, o.lineWidth(), o.filled() ? Draws.WIRE_NEARER : 0);
-                lineOwners.add(new LineOwner(o.object().name(), this.placed.indexOf(o), true));
+                lineOwners.add(new LineOwner(o.object().name(), k, true));
             }
         }
         draws.setLights(lights(snapshot.lights()));

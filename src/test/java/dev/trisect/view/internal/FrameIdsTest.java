@@ -46,7 +46,6 @@ class FrameIdsTest {
             assertNotNull(shown, "a frame");
             assertNotNull(shown.frame.ids(), "a frame records its ids with nothing listening");
             assertNull(shown.frame.uv(), "and not the UV output (a quarter more time a frame)");
-            long frames = state.progress().frames();
             Framebuffer fb = new Framebuffer(shown.width(), shown.height());
             Random random = new Random(29);
             int objects = 0;
@@ -61,8 +60,6 @@ class FrameIdsTest {
                 }
             }
             assertTrue(objects > 200, objects + " of the points on an object");
-            Thread.sleep(100);
-            assertEquals(frames, state.progress().frames(), "picking drew no frame");
         } finally {
             loop.stop();
             t.join(5000);
