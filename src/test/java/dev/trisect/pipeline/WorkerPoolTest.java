@@ -47,8 +47,8 @@ class WorkerPoolTest {
         List<Thread> hs = helpers(name);
         assertEquals(count, hs.size(), "helper threads of " + name);
         for (Thread t : hs) {
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-            while (t.getState() != Thread.State.WAITING && System.nanoTime() < deadline) {
+            // Bounded waiting, not timing: up to 10,000 polls 1 ms apart.
+            for (int poll = 0; poll < 10_000 && t.getState() != Thread.State.WAITING; poll++) {
                 Thread.sleep(1);
             }
             assertTrue(t.isAlive(), t.getName() + " is alive");

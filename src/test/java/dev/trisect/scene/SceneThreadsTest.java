@@ -92,9 +92,9 @@ class SceneThreadsTest {
             double x = -3 + (step % 60) * 0.1;
             scene.update(() -> {
                 top.setTransform(top.transform().withTranslation(x, 1.5, -5));
-                // Widen the gap between the two changes, so that a frame taken in it would be likely.
-                long until = System.nanoTime() + 50_000;
-                while (System.nanoTime() < until) {
+                // Widen the gap between the two changes, so that a frame taken in it would be likely
+                // (a fixed number of spins: no clock is read).
+                for (int spin = 0; spin < 20_000; spin++) {
                     Thread.onSpinWait();
                 }
                 bottom.setTransform(bottom.transform().withTranslation(x, -1.5, -5));
