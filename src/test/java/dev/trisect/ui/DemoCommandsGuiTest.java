@@ -6,7 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.GuiTests;
-import dev.trisect.content.DemoScenes;
 import java.awt.Component;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -42,8 +41,7 @@ class DemoCommandsGuiTest {
     @Test
     void eachCommandHasOneFreeKeyAHelpRowAndOneItem() throws Exception {
         GuiTests.requireDisplay();
-        window = onEdt(() -> new DemoWindow(DemoScenes.demo(), 1, new RecentFiles(java.nio.file.Files
-                .createTempDirectory("trisect-recent").resolve("demo.properties"))));
+        window = onEdt(DemoWindows::demo);
         List<DemoCommands.Entry> table = window.commands;
         Map<KeyStroke, Object> taken = new HashMap<>();
         InputMap viewKeys = onEdt(() -> window.view().getInputMap(JComponent.WHEN_FOCUSED));

@@ -6,7 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.GuiTests;
-import dev.trisect.content.DemoScenes;
 import dev.trisect.content.SceneLighting;
 import dev.trisect.render.Shading;
 import dev.trisect.scene.Light;
@@ -31,8 +30,7 @@ class DemoLightingGuiTest {
     @Test
     void lightingCyclesOffFlatSmoothAndFogToggles() throws Exception {
         GuiTests.requireDisplay();
-        window = onEdt(() -> new DemoWindow(DemoScenes.demo(), 1, new RecentFiles(java.nio.file.Files
-                .createTempDirectory("trisect-recent").resolve("demo.properties"))));
+        window = onEdt(DemoWindows::demo);
         Scene scene = onEdt(() -> window.view().getScene());
         assertEquals(Shading.NONE, SceneLighting.shading(scene), "the demo opens unlit");
         assertEquals(3, SceneLighting.lights(scene).size());

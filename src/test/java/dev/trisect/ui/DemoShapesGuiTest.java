@@ -6,12 +6,10 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.GuiTests;
-import dev.trisect.content.DemoScenes;
 import dev.trisect.scene.DrawStyle;
 import dev.trisect.scene.Scene;
 import dev.trisect.scene.SceneObject;
 import dev.trisect.view.FrameInfo;
-import java.nio.file.Files;
 import java.util.List;
 import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.AfterEach;
@@ -49,8 +47,7 @@ class DemoShapesGuiTest {
     @Test
     void xShowsLabelsAxesAndAPaneZDrawsWireAndHShowsTheRate() throws Exception {
         GuiTests.requireDisplay();
-        window = onEdt(() -> new DemoWindow(DemoScenes.demo(), 1, new RecentFiles(Files
-                .createTempDirectory("trisect-recent").resolve("demo.properties"))));
+        window = onEdt(DemoWindows::demo);
         onEdt(() -> {
             window.start();
             return null;
