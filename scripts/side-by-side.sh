@@ -2,12 +2,16 @@
 # Compares two builds in one JVM: each jar in its own class loader, their frames interleaved (A B,
 # then B A, ...), each timed by the rendering thread's CPU time, one thread. Steadier than timing
 # separate runs on a shared machine, since both builds see the same load at the same moments.
+# THREADS=2 renders with two threads instead: each pair interleaves the builds frame by frame
+# (A B B A ...) and times every frame by the wall clock (the table) and by the process's CPU time
+# (a second table), since the rendering thread's own CPU time misses its helper's work.
 # Prints per path the median CPU ms per frame of each build and the B/A ratio of each pair (median
 # and range), and with the affine path listed, the CPU time per extra piece of the tessellated
 # paths (their frames fill the affine frame's pixels).
 #
 #   scripts/side-by-side.sh OLD.jar NEW.jar [SCENE] [WxH] [PAIRS] [FRAMES] [PATH...]
 #   scripts/side-by-side.sh /tmp/old.jar target/trisect.jar demo 1920x1080 15 5 affine edge error perspective
+#   THREADS=2 scripts/side-by-side.sh /tmp/old.jar target/trisect.jar floor 1920x1080 9 6 perspective spans
 #
 # PATH: perspective, affine, edge (tessellated, 32 px edges), error (tessellated, 0.5 px), spans
 # (0.5 px; builds from 3fa131c on); each may
@@ -35,6 +39,8 @@ scene=${3:-demo}
 size=${4:-1920x1080}
 pairs=${5:-15}
 frames=${6:-5}
+threads=${THREADS:-1}
+[[ $threads =~ ^[1-9][0-9]*$ ]] || { echo "$0: THREADS must be a positive whole number, not '$threads'" >&2; exit 2; }
 shift $(( $# < 6 ? $# : 6 ))
 paths=("$@")
 [[ ${#paths[@]} -gt 0 ]] || paths=(affine edge error perspective)
@@ -45,4 +51,4 @@ trap 'rm -rf "$tmp"' EXIT
 frame_for "$a" "$tmp/a"
 frame_for "$b" "$tmp/b"
 javac -d "$tmp/run" "$src/SideBySide.java"
-java -cp "$tmp/run" SideBySide "$tmp/a" "$tmp/b" "$a" "$b" "$scene" "$size" "$pairs" "$frames" "${paths[@]}"
+java -cp "$tmp/run" SideBySide "$tmp/a" "$tmp/b" "$a" "$b" "$scene" "$size" "$pairs" "$frames" "$threads" "${paths[@]}"

@@ -34,6 +34,12 @@ public final class Frame {
      *             the frame): "error@trilinear+borders"
      */
     public static LongSupplier make(String scene, String path, int width, int height) throws ReflectiveOperationException {
+        return make(scene, path, width, height, 1);
+    }
+
+    /** As {@link #make(String, String, int, int)}, drawn by a renderer of {@code threads} threads (the caller's among them). */
+    public static LongSupplier make(String scene, String path, int width, int height, int threads)
+            throws ReflectiveOperationException {
         // The built-in scenes moved from dev.trisect.scene.DemoScenes (a Scene record) to
         // dev.trisect.content.DemoScenes (a SceneAsset record): reach either build's through reflection.
         Class<?> scenes;
@@ -76,7 +82,7 @@ public final class Frame {
             case "spans" -> base.withMode(RenderMode.valueOf("SPANS"));
             default -> throw new IllegalArgumentException("no path " + path);
         };
-        FrameRenderer renderer = new FrameRenderer(1);
+        FrameRenderer renderer = new FrameRenderer(threads);
         return () -> {
             FrameStats stats = renderer.render(mesh, textures, viewProjection, settings, frame);
             return stats.pieces();

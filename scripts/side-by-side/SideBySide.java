@@ -8,8 +8,9 @@ import java.util.List;
 import java.util.function.LongSupplier;
 
 /**
- * Two builds in one JVM, their frames interleaved, timed by the rendering thread's CPU time: see
- * side-by-side.sh. Arguments: frame-classes-A frame-classes-B A.jar B.jar scene WxH reps frames path...
+ * Two builds in one JVM, their frames interleaved, timed by the rendering thread's CPU time (one
+ * thread) or by the wall clock and the process's CPU time (more threads): see
+ * side-by-side.sh. Arguments: frame-classes-A frame-classes-B A.jar B.jar scene WxH reps frames threads path...
  */
 public final class SideBySide {
     private SideBySide() {
@@ -23,44 +24,35 @@ public final class SideBySide {
         int height = Integer.parseInt(size[1]);
         int reps = Integer.parseInt(args[6]);
         int frames = Integer.parseInt(args[7]);
-        List<String> paths = Arrays.asList(args).subList(8, args.length);
-        ThreadMXBean cpu = ManagementFactory.getThreadMXBean();
+        int threads = Integer.parseInt(args[8]);
+        List<String> paths = Arrays.asList(args).subList(9, args.length);
         LongSupplier[][] frame = new LongSupplier[2][paths.size()];
         long[][] pieces = new long[2][paths.size()];
         for (int b = 0; b < 2; b++) {
             URL[] urls = {Path.of(args[b]).toUri().toURL(), Path.of(jars[b]).toUri().toURL()};
             Class<?> c = new URLClassLoader(urls, ClassLoader.getPlatformClassLoader()).loadClass("Frame");
             for (int p = 0; p < paths.size(); p++) {
-                frame[b][p] = (LongSupplier) c.getMethod("make", String.class, String.class, int.class, int.class)
-                        .invoke(null, scene, paths.get(p), width, height);
+                frame[b][p] = (LongSupplier) c.getMethod("make", String.class, String.class, int.class, int.class,
+                                int.class).invoke(null, scene, paths.get(p), width, height, threads);
                 for (int k = 0; k < 30; k++) {
                     pieces[b][p] = frame[b][p].getAsLong();
                 }
             }
         }
         double[][][] ms = new double[2][paths.size()][reps];
-        for (int r = 0; r < reps; r++) {
-            for (int p = 0; p < paths.size(); p++) {
-                for (int k = 0; k < 2; k++) {
-                    int b = r % 2 == 0 ? k : 1 - k;
-                    long t0 = cpu.getCurrentThreadCpuTime();
-                    for (int f = 0; f < frames; f++) {
-                        frame[b][p].getAsLong();
-                    }
-                    ms[b][p][r] = (cpu.getCurrentThreadCpuTime() - t0) / 1e6 / frames;
-                }
-            }
+        double[][][] cpuMs = new double[2][paths.size()][reps];
+        if (threads == 1) {
+            oneThread(frame, frames, ms);
+        } else {
+            threads(frame, frames, ms, cpuMs);
         }
-        System.out.printf("%s %s, one thread, CPU ms per frame, %d pairs of %d frames; A = %s, B = %s%n",
-                scene, args[5], reps, frames, jars[0], jars[1]);
-        System.out.printf("%-12s %8s %9s %9s  %s%n", "path", "pieces", "A median", "B median", "B/A median [range]");
-        for (int p = 0; p < paths.size(); p++) {
-            double[] ratio = new double[reps];
-            for (int r = 0; r < reps; r++) {
-                ratio[r] = ms[1][p][r] / ms[0][p][r];
-            }
-            System.out.printf("%-12s %8d %9.3f %9.3f  %.3f [%.3f..%.3f]%n", paths.get(p), pieces[1][p],
-                    median(ms[0][p]), median(ms[1][p]), median(ratio), min(ratio), max(ratio));
+        System.out.printf("%s %s, %s, %d pairs of %d frames; A = %s, B = %s%n", scene, args[5],
+                threads == 1 ? "one thread, CPU ms per frame" : threads + " threads, wall ms per frame", reps, frames,
+                jars[0], jars[1]);
+        table("path", paths, pieces, ms);
+        if (threads > 1) {
+            System.out.println("CPU ms per frame, all Java threads (the renderers' helpers among them):");
+            table("cpu", paths, pieces, cpuMs);
         }
         int affine = paths.indexOf("affine");
         for (int p = 0; affine >= 0 && p < paths.size(); p++) {
@@ -95,6 +87,78 @@ public final class SideBySide {
             }
         }
         System.exit(0);
+    }
+
+    /** Each pair: {@code frames} frames of one build, then of the other (A first in even pairs), timed by this thread's CPU time. */
+    private static void oneThread(LongSupplier[][] frame, int frames, double[][][] ms) {
+        ThreadMXBean cpu = ManagementFactory.getThreadMXBean();
+        for (int r = 0; r < ms[0][0].length; r++) {
+            for (int p = 0; p < frame[0].length; p++) {
+                for (int k = 0; k < 2; k++) {
+                    int b = r % 2 == 0 ? k : 1 - k;
+                    long t0 = cpu.getCurrentThreadCpuTime();
+                    for (int f = 0; f < frames; f++) {
+                        frame[b][p].getAsLong();
+                    }
+                    ms[b][p][r] = (cpu.getCurrentThreadCpuTime() - t0) / 1e6 / frames;
+                }
+            }
+        }
+    }
+
+    /**
+     * Renderers of several threads, whose work the calling thread's CPU time does not hold: each pair
+     * interleaves the builds frame by frame (A B B A A B ..., so that neither is always first after the
+     * other) and times each frame by the wall clock and by the CPU time of all the JVM's Java threads
+     * (the renderers' helpers among them; per-thread clocks, as the process clock counts in 10 ms ticks).
+     * A pair's figure per build is the median of its frames, so that a frame stalled by another
+     * process on this shared machine does not move it.
+     */
+    private static void threads(LongSupplier[][] frame, int frames, double[][][] ms, double[][][] cpuMs) {
+        ThreadMXBean cpu = ManagementFactory.getThreadMXBean();
+        long[] ids = cpu.getAllThreadIds();
+        double[][] wall = new double[2][frames];
+        double[][] used = new double[2][frames];
+        for (int r = 0; r < ms[0][0].length; r++) {
+            for (int p = 0; p < frame[0].length; p++) {
+                for (int f = 0; f < frames; f++) {
+                    for (int k = 0; k < 2; k++) {
+                        int b = (r + f) % 2 == 0 ? k : 1 - k;
+                        long c0 = cpuTime(cpu, ids);
+                        long t0 = System.nanoTime();
+                        frame[b][p].getAsLong();
+                        wall[b][f] = (System.nanoTime() - t0) / 1e6;
+                        used[b][f] = (cpuTime(cpu, ids) - c0) / 1e6;
+                    }
+                }
+                for (int b = 0; b < 2; b++) {
+                    ms[b][p][r] = median(wall[b]);
+                    cpuMs[b][p][r] = median(used[b]);
+                }
+            }
+        }
+    }
+
+    /** The CPU nanoseconds the given threads have used so far (a thread that has ended counts as none). */
+    private static long cpuTime(ThreadMXBean cpu, long[] ids) {
+        long sum = 0;
+        for (long id : ids) {
+            sum += Math.max(0, cpu.getThreadCpuTime(id));
+        }
+        return sum;
+    }
+
+    /** One line per path: pieces, each build's median ms per frame, and the per-pair B/A ratio's median and range. */
+    private static void table(String title, List<String> paths, long[][] pieces, double[][][] ms) {
+        System.out.printf("%-12s %8s %9s %9s  %s%n", title, "pieces", "A median", "B median", "B/A median [range]");
+        for (int p = 0; p < paths.size(); p++) {
+            double[] ratio = new double[ms[0][p].length];
+            for (int r = 0; r < ratio.length; r++) {
+                ratio[r] = ms[1][p][r] / ms[0][p][r];
+            }
+            System.out.printf("%s%-12s %8d %9.3f %9.3f  %.3f [%.3f..%.3f]%n", title.equals("path") ? "" : title + " ",
+                    paths.get(p), pieces[1][p], median(ms[0][p]), median(ms[1][p]), median(ratio), min(ratio), max(ratio));
+        }
     }
 
     private static double median(double[] v) {
