@@ -24,23 +24,11 @@ public final class BorderOverlay {
     /** Relative 1/w tolerance: a line pixel may lie this much behind the stored surface and still show. */
     static final double DEPTH_TOLERANCE = 1.0 / 512;
 
-    /** The triangle whose turn it is to walk the edge: its 1/w plane, colour and opacity. */
-    private double qBase;
-    private double qDx;
-    private double qDy;
-    private double qMin;
-    private double qMax;
-    private int colour;
-    private double alpha;
+    /** The triangle whose turn it is to walk the edge. */
+    private final Look later = new Look();
     /** The earlier triangle sharing the edge, applied first at each pixel, when {@link #shared}. */
+    private final Look earlier = new Look();
     private boolean shared;
-    private double qBaseEarlier;
-    private double qDxEarlier;
-    private double qDyEarlier;
-    private double qMinEarlier;
-    private double qMaxEarlier;
-    private int colourEarlier;
-    private double alphaEarlier;
     /**
      * Whether the edge's one or two outlines are opaque and not held to a depth range (no fading, no
      * fallback piece): then a pixel is the later outline's colour where its test passes, else the
@@ -50,7 +38,6 @@ public final class BorderOverlay {
     /** The triangle whose outline values are loaded, and its plan's looks. */
     private int owner = -1;
     private double[] ownerLooks;
-    private boolean ownerSimple;
     /** The frame being drawn: its colours, depths and width. */
     private int[] color;
     private float[] depth;
@@ -80,36 +67,52 @@ public final class BorderOverlay {
 
     /**
      * Makes the edge about to be drawn triangle {@code tri}'s of {@code plan}, shared with its
-     * {@code earlier} triangle (or {@link OutlinePlan#ALONE}). A triangle's edges follow one another,
+     * {@code earlierTri} triangle (or {@link OutlinePlan#ALONE}). A triangle's edges follow one another,
      * so its outline's values are loaded only when the triangle changes.
      */
-    void edge(OutlinePlan plan, int tri, int earlier) {
-        double[] looks = plan.looks;
-        if (tri != owner || looks != ownerLooks) {
+    void edge(OutlinePlan plan, int tri, int earlierTri) {
+        if (tri != owner || plan.looks != ownerLooks) {
             owner = tri;
-            ownerLooks = looks;
-            int l = OutlinePlan.LOOK * tri;
-            qBase = looks[l];
-            qDx = looks[l + 1];
-            qDy = looks[l + 2];
-            qMin = looks[l + 3];
-            qMax = looks[l + 4];
-            alpha = looks[l + 5];
-            colour = plan.colours[tri];
-            ownerSimple = simple(alpha, qMin, qMax);
+            ownerLooks = plan.looks;
+            later.load(plan, tri);
         }
-        shared = earlier >= 0;
+        shared = earlierTri >= 0;
         if (shared) {
-            int l = OutlinePlan.LOOK * earlier;
-            qBaseEarlier = looks[l];
-            qDxEarlier = looks[l + 1];
-            qDyEarlier = looks[l + 2];
-            qMinEarlier = looks[l + 3];
-            qMaxEarlier = looks[l + 4];
-            alphaEarlier = looks[l + 5];
-            colourEarlier = plan.colours[earlier];
+            earlier.load(plan, earlierTri);
         }
-        simple = ownerSimple && (!shared || simple(alphaEarlier, qMinEarlier, qMaxEarlier));
+        simple = later.simple() && (!shared || earlier.simple());
+    }
+
+    /** One outlined triangle's values from its plan ({@link OutlinePlan#looks}): 1/w plane, range, colour, opacity. */
+    private static final class Look {
+        double qBase;
+        double qDx;
+        double qDy;
+        double qMin;
+        double qMax;
+        double alpha;
+        int colour;
+
+        void load(OutlinePlan plan, int tri) {
+            int l = OutlinePlan.LOOK * tri;
+            qBase = plan.looks[l];
+            qDx = plan.looks[l + 1];
+            qDy = plan.looks[l + 2];
+            qMin = plan.looks[l + 3];
+            qMax = plan.looks[l + 4];
+            alpha = plan.looks[l + 5];
+            colour = plan.colours[tri];
+        }
+
+        /** The triangle's 1/w at pixel centre (x, y), not yet held to its range. */
+        double q(double x, double y) {
+            return qBase + qDx * x + qDy * y;
+        }
+
+        /** Opaque and not held to a depth range: see {@link BorderOverlay#simple}. */
+        boolean simple() {
+            return alpha >= 1 && qMin == Double.NEGATIVE_INFINITY && qMax == Double.POSITIVE_INFINITY;
+        }
     }
 
     /** Pieces whose inscribed circle has at least this radius, pixels, are outlined opaque when fading. */
@@ -140,20 +143,17 @@ public final class BorderOverlay {
      */
     int plotSimple(int i, double x, double y) {
         double limit = depth[i] * (1 - DEPTH_TOLERANCE);
-        if (!(qBase + qDx * x + qDy * y < limit)) {
-            color[i] = colour;
+        Look l = later;
+        if (!(l.q(x, y) < limit)) {
+            color[i] = l.colour;
             return 1;
         }
-        if (shared && !(qBaseEarlier + qDxEarlier * x + qDyEarlier * y < limit)) {
-            color[i] = colourEarlier;
+        Look e = earlier;
+        if (shared && !(e.q(x, y) < limit)) {
+            color[i] = e.colour;
             return 1;
         }
         return 0;
-    }
-
-    /** Whether an outline of opacity {@code a} held to 1/w range [min, max] is opaque and not held. */
-    private static boolean simple(double a, double min, double max) {
-        return a >= 1 && min == Double.NEGATIVE_INFINITY && max == Double.POSITIVE_INFINITY;
     }
 
     /**
@@ -168,18 +168,20 @@ public final class BorderOverlay {
             return plotSimple(i, x, y);
         }
         double limit = depth[i] * (1 - DEPTH_TOLERANCE);
-        boolean shows = !(held(qBase + qDx * x + qDy * y, qMin, qMax) < limit);
-        if (shows && alpha >= 1) {
-            color[i] = colour;
+        Look l = later;
+        boolean shows = !(held(l.q(x, y), l.qMin, l.qMax) < limit);
+        if (shows && l.alpha >= 1) {
+            color[i] = l.colour;
             return 1;
         }
         int painted = 0;
-        if (shared && !(held(qBaseEarlier + qDxEarlier * x + qDyEarlier * y, qMinEarlier, qMaxEarlier) < limit)) {
-            color[i] = alphaEarlier >= 1 ? colourEarlier : blend(color[i], colourEarlier, alphaEarlier);
+        Look e = earlier;
+        if (shared && !(held(e.q(x, y), e.qMin, e.qMax) < limit)) {
+            color[i] = e.alpha >= 1 ? e.colour : blend(color[i], e.colour, e.alpha);
             painted = 1;
         }
         if (shows) {
-            color[i] = blend(color[i], colour, alpha);
+            color[i] = blend(color[i], l.colour, l.alpha);
             painted = 1;
         }
         return painted;

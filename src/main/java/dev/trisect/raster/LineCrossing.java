@@ -238,7 +238,7 @@ public final class LineCrossing {
     /** {@link #byColumn} for an edge whose pixels all lie within the band and the frame. */
     private static int byColumnInside(BorderOverlay write, double xa, double ya, double slope, int first, int last) {
         if (write.simple) {
-            return byColumnSimple(write, xa, ya, slope, first, last);
+            return simple(write, xa, ya, slope, first, last, 1);
         }
         int painted = 0;
         for (int c = first; c <= last; c++) {
@@ -251,7 +251,7 @@ public final class LineCrossing {
     /** {@link #byRow} for an edge whose pixels all lie within the frame's columns. */
     private static int byRowInside(BorderOverlay write, double xa, double ya, double slope, int first, int last) {
         if (write.simple) {
-            return byRowSimple(write, xa, ya, slope, first, last);
+            return simple(write, ya, xa, slope, first, last, 0);
         }
         int painted = 0;
         for (int r = first; r <= last; r++) {
@@ -274,28 +274,23 @@ public final class LineCrossing {
     }
 
     /**
-     * {@link #byColumnInside} of a {@link BorderOverlay#simple simple} edge. Each value is the same
-     * double as there: column c and c + 0.5 are counted up exactly in doubles.
+     * {@link #byColumnInside} ({@code alongX} 1) or {@link #byRowInside} ({@code alongX} 0) of a
+     * {@link BorderOverlay#simple simple} edge: step {@code k} = first..last along the edge's major
+     * axis, the other coordinate floor(b0 + (k + 0.5 - a0) * slope). Each value is the same double as
+     * there: k and k + 0.5 are counted up exactly in doubles, and the 0/1 weights that put k and the
+     * other coordinate into x and y are exact, every value being a whole number.
      */
-    private static int byColumnSimple(BorderOverlay write, double xa, double ya, double slope, int first, int last) {
+    private static int simple(BorderOverlay write, double a0, double b0, double slope, int first, int last,
+                              double alongX) {
+        double alongY = 1 - alongX;
         int painted = 0;
         int width = write.width;
-        double x = first;
-        for (int c = first; c <= last; c++, x++) {
-            double y = Math.floor(ya + (x + 0.5 - xa) * slope);
-            painted += write.plotSimple((int) y * width + c, x, y);
-        }
-        return painted;
-    }
-
-    /** {@link #byRowInside} of a {@link BorderOverlay#simple simple} edge, as {@link #byColumnSimple}. */
-    private static int byRowSimple(BorderOverlay write, double xa, double ya, double slope, int first, int last) {
-        int painted = 0;
-        int width = write.width;
-        double y = first;
-        for (int r = first; r <= last; r++, y++) {
-            double x = Math.floor(xa + (y + 0.5 - ya) * slope);
-            painted += write.plotSimple(r * width + (int) x, x, y);
+        double k = first;
+        for (int n = first; n <= last; n++, k++) {
+            double b = Math.floor(b0 + (k + 0.5 - a0) * slope);
+            double x = k * alongX + b * alongY;
+            double y = k * alongY + b * alongX;
+            painted += write.plotSimple((int) y * width + (int) x, x, y);
         }
         return painted;
     }
