@@ -34,9 +34,11 @@ import java.util.Locale;
  *
  *   java -cp target/trisect.jar scripts/light/LightCost.java SCENE WxH THREADS ROUNDS [VARIANT...]
  *
- * VARIANT: fog-linear, fog-exp, flat, smooth (the default: all four); flat and smooth light every
- * material by a white directional light from (0.3, -1, -0.5) and an ambient grey of 0.2, as
- * {@code bench --shade flat|smooth --light 0.3,-1,-0.5} does.
+ * VARIANT: fog-linear, fog-exp, flat, smooth (the default: all four), flat-uncached, smooth-uncached;
+ * flat and smooth light every material by a white directional light from (0.3, -1, -0.5) and an
+ * ambient grey of 0.2, as {@code bench --shade flat|smooth --light 0.3,-1,-0.5} does. The -uncached
+ * variants are drawn by a second renderer of as many threads whose lit copies of textures are off
+ * ({@code FrameRenderer.cacheLitTextures(false)}): what the copies save, side by side.
  */
 public final class LightCost {
     private static final com.sun.management.OperatingSystemMXBean CPU =
@@ -60,24 +62,28 @@ public final class LightCost {
         Framebuffer fb = new Framebuffer(w, h);
         Draws draws = new Draws();
         System.out.printf(Locale.ROOT, "scene %s %dx%d, %d threads, %d rounds%n", scene, w, h, threads, rounds);
-        try (FrameRenderer r = new FrameRenderer(threads)) {
+        try (FrameRenderer r = new FrameRenderer(threads); FrameRenderer uncached = new FrameRenderer(threads)) {
+            uncached.cacheLitTextures(false);
             for (RenderSettings path : paths) {
                 List<Setup> setups = new ArrayList<>();
+                List<FrameRenderer> renderers = new ArrayList<>();
                 setups.add((d, mesh, textures, m) -> d.add(mesh, textures, m));
+                renderers.add(r);
                 for (String v : variants) {
-                    setups.add(variant(v));
+                    setups.add(variant(v.replace("-uncached", "")));
+                    renderers.add(v.endsWith("-uncached") ? uncached : r);
                 }
                 double[][] ms = new double[setups.size()][rounds];
                 double[][] cpu = new double[setups.size()][rounds];
                 for (int warm = 0; warm < 10; warm++) {
-                    for (Setup setup : setups) {
-                        frame(r, draws, s, vp, setup, path, fb);
+                    for (int k = 0; k < setups.size(); k++) {
+                        frame(renderers.get(k), draws, s, vp, setups.get(k), path, fb);
                     }
                 }
                 for (int round = 0; round < rounds; round++) {
                     for (int k = 0; k < setups.size(); k++) {
                         long c = cpuNanos(threads);
-                        ms[k][round] = frame(r, draws, s, vp, setups.get(k), path, fb);
+                        ms[k][round] = frame(renderers.get(k), draws, s, vp, setups.get(k), path, fb);
                         cpu[k][round] = (cpuNanos(threads) - c) / 1e6;
                     }
                 }
@@ -85,7 +91,7 @@ public final class LightCost {
                     double[] ratio = ratios(ms[k], ms[0]);
                     double[] cpuRatio = threads == 1 ? ratios(cpu[k], cpu[0])
                             : new double[] {Arrays.stream(cpu[k]).sum() / Arrays.stream(cpu[0]).sum()};
-                    System.out.printf(Locale.ROOT, "%-12s %-12s plain %7.2f ms  variant %7.2f ms  ratio median %.3f "
+                    System.out.printf(Locale.ROOT, "%-12s %-16s plain %7.2f ms  variant %7.2f ms  ratio median %.3f "
                                     + "(min %.3f, max %.3f)  cpu ratio %.3f (min %.3f, max %.3f)%n",
                             path.mode().name().toLowerCase(Locale.ROOT), variants.get(k - 1), median(ms[0]),
                             median(ms[k]), ratio[rounds / 2], ratio[0], ratio[rounds - 1], cpuRatio[cpuRatio.length / 2], cpuRatio[0],

@@ -4,6 +4,7 @@ import dev.trisect.light.FogPass;
 import dev.trisect.raster.BandBins;
 import dev.trisect.raster.BandFill;
 import dev.trisect.raster.Commands;
+import dev.trisect.raster.LitTextures;
 import dev.trisect.raster.Rasterizer;
 import dev.trisect.render.Framebuffer;
 import dev.trisect.render.RenderSettings;
@@ -90,13 +91,14 @@ final class BandPass {
      * @param fog      the frame's fog, or null for none
      * @param textures the texture of each material, by material index
      * @param states   the pixel state of each material, by material index (see {@link Rasterizer#states})
+     * @param lit      the renderer's lit copies of textures, begun for this frame's textures, or null for none
      * @param after    the lists each band draws after its triangles, fog and outlines (the frame's
      *                 lines, then its quads), binned into the same bands
      * @param foggedLists how many of the first lists of {@code after} are fogged (OpenGL fogs lines):
      *                 with fog, each band draws them before its fog pass (so before the outlines)
      */
     Result draw(Framebuffer frame, Chunks chunks, int chunkCount, Texture[] textures, int[] states,
-                RenderSettings settings, FogPass fog, Outlines outlines, Commands[] after, int foggedLists,
+                LitTextures lit, RenderSettings settings, FogPass fog, Outlines outlines, Commands[] after, int foggedLists,
                 WorkerPool pool) {
         for (Lane lane : lanes) {
             lane.pixels = 0;
@@ -140,6 +142,7 @@ final class BandPass {
             rasterizer.filter(settings.filter());
             rasterizer.spans(knotError);
             rasterizer.states(states);
+            rasterizer.lit(lit == null ? null : lit.lane(thread));
             for (int c = 0; c < chunkCount; c++) {
                 lane.pixels += fill.fill(frame, chunks.get(c).commands, b, textures, perspective, 0, y0, width, y1);
             }

@@ -3,6 +3,7 @@ package dev.trisect.pipeline;
 import dev.trisect.math.Mat4;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.raster.Commands;
+import dev.trisect.raster.LitTextures;
 import dev.trisect.render.BorderStyle;
 import dev.trisect.render.FrameStats;
 import dev.trisect.render.Framebuffer;
@@ -55,6 +56,10 @@ public final class FrameRenderer implements AutoCloseable {
     private final Outlines outlines;
     private final LineGeometry lines;
     private final QuadGeometry quads;
+    /** Lit copies of textures, kept from frame to frame (rule: {@link LitTextures}). */
+    private final LitTextures lit;
+    /** Whether frames draw from {@link #lit} ({@link #cacheLitTextures}). */
+    private volatile boolean litOn = true;
     /**
      * The frame's passes, in the order they run: the geometry, the lines' geometry, the fill, the quads
      * (see {@link FramePass}).
@@ -106,6 +111,7 @@ public final class FrameRenderer implements AutoCloseable {
         this.outlines = new Outlines(threads);
         this.lines = new LineGeometry();
         this.quads = new QuadGeometry();
+        this.lit = new LitTextures(threads, LitTextures.DEFAULT_BUDGET);
         List<FramePass> all = new java.util.ArrayList<>(List.of(this::geometryPass, this::setUpPass, this::fillPass));
         all.addAll(later);
         this.passes = List.copyOf(all);
@@ -183,10 +189,34 @@ public final class FrameRenderer implements AutoCloseable {
     private void fillPass(FrameJob job) {
         int w = job.frame.width();
         bands.probe(probeX >= 0 && probeX < w && probeY >= 0 && probeY < job.frame.height() ? probeY * w + probeX : -1);
+        LitTextures cache = litOn ? lit : null;
+        if (cache != null) {
+            cache.begin(job.draws.textures());
+        } else {
+            lit.clear();
+        }
         job.bands = bands.draw(job.frame, job.chunks, job.chunkCount(), job.draws.textures(), job.draws.states(),
-                job.settings, job.draws.fogPass(), outlines, new Commands[] {lines.commands(), quads.commands()}, 1,
+                cache, job.settings, job.draws.fogPass(), outlines, new Commands[] {lines.commands(), quads.commands()}, 1,
                 job.pool);
+        if (cache != null) {
+            cache.end();
+        }
         job.bandsDone = System.nanoTime();
+    }
+
+    /**
+     * Whether the following frames draw triangles of one colour from lit copies of their textures
+     * ({@link LitTextures}; on until set): the same pixels either way, for measuring what the copies
+     * save. Turned off, the copies kept are dropped by the next frame. Any thread may call it.
+     */
+    public void cacheLitTextures(boolean on) {
+        checkOpen();
+        litOn = on;
+    }
+
+    /** The renderer's lit copies of textures, for tests. */
+    LitTextures litTextures() {
+        return lit;
     }
 
     /**
@@ -314,13 +344,14 @@ public final class FrameRenderer implements AutoCloseable {
      * frames ({@link #TRIM_FRAMES}); they grow again with the next frame. For when the scene is replaced:
      * a view then holds the old scene's storage no longer than the new one takes to load. The last
      * frame's pieces go too: {@link #pieceAt} and the like answer as before the first frame, and
-     * {@link #drawBorders} outlines nothing.
+     * {@link #drawBorders} outlines nothing; the lit copies of textures go as well.
      */
     public void release() {
         checkOpen();
         drawn = null;
         geometry.release();
         outlines.release();
+        lit.clear();
     }
 
     /**

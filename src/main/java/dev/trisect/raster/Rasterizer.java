@@ -11,7 +11,8 @@ import dev.trisect.texture.TextureFilter;
  * triangle: the loops generated from templates, one per colour source ({@link ColourSources}: the
  * filter and the texture's kind) and UV setting ({@link PerPixelLoops}, {@link FixedLoops}, in the
  * span path {@link KnotLoops}, in the tessellated path {@link TreeLoops}); the span path's knots
- * are placed by {@link KnotSpacing}.
+ * are placed by {@link KnotSpacing}. A triangle of one colour sampled nearest is drawn by the texel
+ * loop from a lit copy of its texture when the renderer's {@link LitTextures} has one: the same pixels.
  *
  * <p>Coverage is exact integer arithmetic on snapped corners: a pixel belongs to a triangle when its
  * centre is inside, and a centre exactly on an edge goes to the triangle for which that edge is a top
@@ -39,6 +40,12 @@ public final class Rasterizer {
     private static final double SAME_COLOUR = 0x1p-24;
     /** The {@link PixelState} of each material index, or null: state 0 for every material. */
     private int[] states;
+    /** This thread's side of the renderer's lit textures, or null: none used. */
+    private LitTextures.Lane lit;
+    /** What {@link #choose} picked for the triangle being filled: its texture, colour source and pixel state. */
+    private Texture chosenTexture;
+    private int chosenSource;
+    private int chosenState;
 
     /** Sets how the following {@link #fill} calls sample textures (nearest until set). */
     public void filter(TextureFilter f) {
@@ -72,6 +79,16 @@ public final class Rasterizer {
                     + " varyings: the frame needs VertexLayout.of(5)");
         }
         return state;
+    }
+
+    /**
+     * Sets where the following fills find lit copies of textures ({@link LitTextures}): a triangle of one
+     * colour sampled nearest is drawn from its texture's copy modulated by that colour when there is one.
+     *
+     * @param lane this thread's lane of the renderer's cache, or null (until set) for none
+     */
+    public void lit(LitTextures.Lane lane) {
+        this.lit = lane;
     }
 
     /**
@@ -127,13 +144,13 @@ public final class Rasterizer {
         }
         solver.walk(t);
         int[] spans = solver.spans();
-        int material = triangles.materials()[tri];
-        Texture texture = textures[material];
+        choose(triangles, tri, textures, t, spans);
+        Texture texture = chosenTexture;
+        int source = chosenSource;
+        int state = chosenState;
         int uvId = triangles.ids()[tri] + 1;
         boolean uv = frame.uv() != null;
         boolean ids = frame.ids() != null;
-        int source = source(texture);
-        int state = constant(state(triangles, material), triangles, tri, t);
         if (knots) {
             return KnotLoops.fill(source, state, uv, ids, t, spans, frame, texture, uvId, knotError, x0, x1);
         } else if (!divide && t.fixedPointSafe) {
@@ -166,6 +183,41 @@ public final class Rasterizer {
         t.green16 = Modulate.f16(a[at + 1]);
         t.blue16 = Modulate.f16(a[at + 2]);
         return state - PixelState.MODULATE + PixelState.CONSTANT;
+    }
+
+    /**
+     * Picks the texture, colour source and pixel state of triangle {@code tri} of {@code triangles}, set
+     * up in {@code t} with its {@code spans}, into {@link #chosenTexture}, {@link #chosenSource} and
+     * {@link #chosenState}: its material's, or for a triangle of one colour sampled nearest its texture's
+     * lit copy with the texel loop, when the cache has one ({@link #litCopy}).
+     */
+    private void choose(ScreenTriangles triangles, int tri, Texture[] textures, TriangleSetup t, int[] spans) {
+        int material = triangles.materials()[tri];
+        Texture texture = textures[material];
+        int source = source(texture);
+        int state = constant(state(triangles, material), triangles, tri, t);
+        Texture copy = litCopy(state, source, material, t, spans);
+        if (copy != null) {
+            texture = copy;
+            state = PixelState.write(state);
+        }
+        chosenTexture = texture;
+        chosenSource = source;
+        chosenState = state;
+    }
+
+    /**
+     * The lit copy of {@code material}'s texture to draw the triangle set up in {@code t} from, with
+     * the texel loop: only for a triangle of one colour ({@link PixelState#CONSTANT}) sampled nearest,
+     * whose texel times that colour is the copy's texel bit for bit; else, or when the cache has no
+     * copy yet, null.
+     */
+    private Texture litCopy(int state, int source, int material, TriangleSetup t, int[] spans) {
+        if (lit == null || PixelState.colour(state) != PixelState.CONSTANT
+                || source != ColourSources.NEAREST_POT && source != ColourSources.NEAREST_ANY) {
+            return null;
+        }
+        return lit.lit(material, t, spans);
     }
 
     /** The colour source of the filter sampling {@code texture}: masks wrap a power-of-two side. */
@@ -201,12 +253,9 @@ public final class Rasterizer {
         }
         solver.walk(t);
         int[] spans = solver.spans();
-        Texture texture = textures[inputs.materials()[g]];
-        int uvId = inputs.ids()[g] + 1;
-        return TreeLoops.fill(source(texture), constant(state(inputs, inputs.materials()[g]), inputs, g, t),
-                frame.uv() != null,
-                frame.ids() != null, this.trees, t, spans, trees, trees.roots()[g], trees.nodeCount(g), frame, texture,
-                uvId);
+        choose(inputs, g, textures, t, spans);
+        return TreeLoops.fill(chosenSource, chosenState, frame.uv() != null, frame.ids() != null, this.trees, t,
+                spans, trees, trees.roots()[g], trees.nodeCount(g), frame, chosenTexture, inputs.ids()[g] + 1);
     }
 
     /**

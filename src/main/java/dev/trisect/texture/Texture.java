@@ -14,8 +14,8 @@ import java.util.Objects;
  * The rasterizer inlines the same arithmetic; {@link #texelIndex} is the reference for it.
  *
  * <p>Bilinear and trilinear sampling ({@link TextureFilter}) read the levels of {@link #mipChain()},
- * which is built here, once, when the texture is created, and laid out for the filtered pixel loops on
- * their first use.
+ * which is built once, on its first use (a texture only ever sampled nearest — a lit copy of one, say —
+ * never pays for it), and laid out for the filtered pixel loops on their first use.
  */
 public final class Texture {
     /** Largest width or height accepted, in texels. */
@@ -25,7 +25,10 @@ public final class Texture {
     private final int width;
     private final int height;
     private final int[] argb;
-    private final MipChain mipChain;
+    /** {@link #mipChain()}, built on first use; null before. */
+    private volatile MipChain mipChain;
+    /** Held while {@link #mipChain} is built, so that it is built once whatever the threads asking. */
+    private final Object mipLock = new Object();
     /** {@link #alpha()}, found on first use; null before. */
     private volatile Alpha alpha;
 
@@ -44,7 +47,7 @@ public final class Texture {
      * @param width  width in texels, 1..{@link #MAX_SIDE}
      * @param height height in texels, 1..{@link #MAX_SIDE}
      * @param argb   {@code width * height} texels, row 0 at the top; kept, not copied, so it must not change
-     *               afterwards: the mipmap levels are made from it here and the filtered samplers' copy on
+     *               afterwards: the mipmap levels and the filtered samplers' copy are made from it on
      *               first use, so a later change would show with some filters and frames and not others
      * @throws NullPointerException     when {@code name} or {@code argb} is null
      * @throws IllegalArgumentException for a size outside 1..{@link #MAX_SIDE} or a texel count not
@@ -64,7 +67,6 @@ public final class Texture {
         this.width = width;
         this.height = height;
         this.argb = argb;
-        this.mipChain = new MipChain(width, height, argb);
     }
 
     /**
@@ -160,12 +162,23 @@ public final class Texture {
     }
 
     /**
-     * The mipmap levels, level 0 being {@link #argb()} itself; built with the texture.
+     * The mipmap levels, level 0 being {@link #argb()} itself; built on the first call (by whichever
+     * thread makes it), then kept.
      *
-     * @return the mipmap levels, built with the texture
+     * @return the mipmap levels
      */
     public MipChain mipChain() {
-        return mipChain;
+        MipChain m = mipChain;
+        if (m == null) {
+            synchronized (mipLock) {
+                m = mipChain;
+                if (m == null) {
+                    m = new MipChain(width, height, argb);
+                    mipChain = m;
+                }
+            }
+        }
+        return m;
     }
 
     /**

@@ -267,10 +267,10 @@ class WorkerPoolTest {
                 Framebuffer fb = new Framebuffer(w, h);
                 if (broken) {
                     assertThrows(ArrayIndexOutOfBoundsException.class,
-                            () -> bands.draw(fb, chunks, 3, textures, null, s, null, outlines, NO_LINES, 0, pool));
+                            () -> bands.draw(fb, chunks, 3, textures, null, null, s, null, outlines, NO_LINES, 0, pool));
                     assertHelpersParked(name, 2);
                 } else {
-                    BandPass.Result result = bands.draw(fb, chunks, 3, textures, null, s, null, outlines, NO_LINES, 0, pool);
+                    BandPass.Result result = bands.draw(fb, chunks, 3, textures, null, null, s, null, outlines, NO_LINES, 0, pool);
                     assertTrue(result.pixels() > 0);
                     if (expected == null) {
                         expected = fb;
