@@ -36,6 +36,7 @@ final class BandPass {
     /** Per-thread scratch and counters. */
     private static final class Lane {
         final BandFill fill = new BandFill();
+        final FogPass.Rows fogRows = new FogPass.Rows();
         long pixels;
         long fillNanos;
         long overlayNanos;
@@ -153,7 +154,7 @@ final class BandPass {
                 for (int l = 0; l < foggedLists; l++) {
                     foggedNanos += drawAfter(lane, fill, frame, after, l, b, textures, perspective, width, y0, y1);
                 }
-                fog.apply(frame, y0, y1);
+                fog.apply(frame, y0, y1, lane.fogRows);
             }
             lane.fillNanos += System.nanoTime() - t0 - foggedNanos;
             // The wait for the preparations is neither filling nor outlining: it is left out of both measures.

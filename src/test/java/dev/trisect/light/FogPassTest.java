@@ -37,6 +37,29 @@ class FogPassTest {
     }
 
     @Test
+    void oneThreadsRowsServeFramesOfEveryWidthAlike() {
+        FogPass pass = new FogPass(Fog.exp(0.2, new Colour(0.3, 0.9, 0.5)));
+        FogPass.Rows rows = new FogPass.Rows();
+        for (int width : new int[] {5, 70, 3, 70}) {
+            Framebuffer mine = new Framebuffer(width, 4);
+            Framebuffer fresh = new Framebuffer(width, 4);
+            for (Framebuffer f : new Framebuffer[] {mine, fresh}) {
+                for (int i = 0; i < width * 4; i++) {
+                    f.colour()[i] = 0xFF000000 | (i * 0x3F1D27 & 0xFFFFFF);
+                    f.depth()[i] = i % 7 == 0 ? 0 : 1f / (1 + i % 23);
+                }
+            }
+            pass.apply(mine, 1, 4, rows);
+            pass.apply(fresh, 1, 4);
+            assertEquals(java.util.Arrays.toString(fresh.colour()), java.util.Arrays.toString(mine.colour()));
+            // Row 0 is left alone; a covered pixel of the fogged rows changes, the background does not.
+            assertEquals(0xFF000000, mine.colour()[0]);
+            assertTrue(mine.colour()[width + 1] != (0xFF000000 | ((width + 1) * 0x3F1D27 & 0xFFFFFF)));
+            assertEquals(0xFF000000 | (7 * 0x3F1D27 & 0xFFFFFF), mine.colour()[7]);
+        }
+    }
+
+    @Test
     void theFactorFollowsEveryEquationWithinItsBound() {
         Fog[] fogs = {Fog.linear(0.5, 40, Colour.BLACK), Fog.exp(0.07, Colour.BLACK), Fog.exp2(0.05, Colour.BLACK),
             Fog.exp(3, Colour.BLACK), Fog.linear(100, 101, Colour.BLACK)};
