@@ -134,15 +134,27 @@ public final class FogPass {
         int width = frame.width();
         rows.fit(width);
         int[] color = frame.colour();
+        float[] depth = frame.depth();
         int[] k = rows.factors;
         int[] c = rows.colours;
         int[] out = rows.out;
         for (int y = y0; y < y1; y++) {
-            int row = y * width;
-            factors(frame.depth(), row, width, k);
-            System.arraycopy(color, row, c, 0, width);
-            blend(c, k, out, width);
-            System.arraycopy(out, 0, color, row, width);
+            // The background at the row's ends (the sky around a scene, empty rows) is skipped.
+            int from = y * width;
+            int to = from + width;
+            while (from < to && depth[from] == 0) {
+                from++;
+            }
+            while (to > from && depth[to - 1] == 0) {
+                to--;
+            }
+            int n = to - from;
+            if (n > 0) {
+                factors(depth, from, n, k);
+                System.arraycopy(color, from, c, 0, n);
+                blend(c, k, out, n);
+                System.arraycopy(out, 0, color, from, n);
+            }
         }
     }
 
