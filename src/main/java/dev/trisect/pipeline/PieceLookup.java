@@ -154,18 +154,15 @@ final class PieceLookup {
 
     /** Barycentric weights of (x, y) on the plane of the screen triangle at {@code s}; null when it has no area. */
     private static double[] weights(double[] sc, int s, double x, double y) {
-        double x0 = sc[s];
-        double y0 = sc[s + 1];
-        double ex1 = sc[s + 2] - x0;
-        double ey1 = sc[s + 3] - y0;
-        double ex2 = sc[s + 4] - x0;
-        double ey2 = sc[s + 5] - y0;
-        double det = ex1 * ey2 - ex2 * ey1;
-        if (det == 0 || !Double.isFinite(det)) {
+        double[] e = new double[ScreenTriangles.EDGES];
+        if (!ScreenTriangles.edges(sc, s, e)) {
             return null;
         }
-        double b1 = ((x - x0) * ey2 - ex2 * (y - y0)) / det;
-        double b2 = (ex1 * (y - y0) - (x - x0) * ey1) / det;
+        // (x, y) from corner 0, against the edges e[2..3] and e[4..5] and their cross product e[6].
+        double dx = x - e[0];
+        double dy = y - e[1];
+        double b1 = (dx * e[5] - e[4] * dy) / e[6];
+        double b2 = (e[2] * dy - dx * e[3]) / e[6];
         return new double[] {1 - b1 - b2, b1, b2};
     }
 }

@@ -60,6 +60,8 @@ public final class OutlinePlan {
     /** Slots of {@link #table} in use this frame: a power of two. */
     private int slots;
     private final Plane depth = new Plane();
+    /** {@link ScreenTriangles#edges} of the triangle being set up. */
+    private final double[] corner = new double[ScreenTriangles.EDGES];
 
     /**
      * Prepares the outlines of the triangles of {@code triangles} that the fill draws (those with an
@@ -103,20 +105,11 @@ public final class OutlinePlan {
             if (firstRow >= endRow || style.onlyFallback() && !perPixel[tri]) {
                 continue;
             }
-            int s = tri * ScreenTriangles.SCREEN_STRIDE;
-            double x0 = sc[s];
-            double y0 = sc[s + 1];
-            double ex1 = sc[s + 2] - x0;
-            double ey1 = sc[s + 3] - y0;
-            double ex2 = sc[s + 4] - x0;
-            double ey2 = sc[s + 5] - y0;
-            double det = ex1 * ey2 - ex2 * ey1;
-            if (det == 0 || !Double.isFinite(det)) {
+            if (!depthPlane(triangles, tri, corner, depth)) {
                 continue;
             }
             int a = tri * triangles.attributeStride();
             int cs = triangles.cornerStride();
-            depth.fit(x0, y0, ex1, ey1, ex2, ey2, 1 / det, at[a], at[a + cs], at[a + 2 * cs]);
             int l = LOOK * tri;
             looks[l] = depth.base;
             looks[l + 1] = depth.dx;
@@ -125,7 +118,8 @@ public final class OutlinePlan {
             looks[l + 3] = held ? Math.min(at[a], Math.min(at[a + cs], at[a + 2 * cs])) : Double.NEGATIVE_INFINITY;
             looks[l + 4] = held ? Math.max(at[a], Math.max(at[a + cs], at[a + 2 * cs])) : Double.POSITIVE_INFINITY;
             // A fallback piece is never faded: its magenta outline is what the legend counts, and it must show.
-            looks[l + 5] = style.fade() && !held ? BorderOverlay.fadeAlpha(Math.abs(det) / 2, perimeter(sc, s)) : 1;
+            looks[l + 5] = style.fade() && !held ? BorderOverlay.fadeAlpha(Math.abs(corner[6]) / 2,
+                    perimeter(sc, tri * ScreenTriangles.SCREEN_STRIDE)) : 1;
             colours[tri] = style.colouring() == BorderStyle.Colouring.YELLOW ? OverlayColours.of(triangles, tri)
                     : OverlayColours.of(triangles, tri, style.colouring(), maxLevel, maxError);
         }
@@ -308,5 +302,24 @@ public final class OutlinePlan {
             edges.shrink(2 * n);
             bins.shrink(2 * n, 8 * n);
         }
+    }
+
+    /**
+     * Fits {@code into} to screen triangle {@code tri}'s 1/w over pixel centres, from its corners' 1/w:
+     * the plane its outline is depth-tested by ({@link #looks}); {@code edges} is scratch of
+     * {@link ScreenTriangles#EDGES} doubles.
+     *
+     * @return false when the triangle has no area (it is not outlined)
+     */
+    static boolean depthPlane(ScreenTriangles triangles, int tri, double[] edges, Plane into) {
+        if (!ScreenTriangles.edges(triangles.screen(), tri * ScreenTriangles.SCREEN_STRIDE, edges)) {
+            return false;
+        }
+        double[] at = triangles.attributes();
+        int a = tri * triangles.attributeStride();
+        int cs = triangles.cornerStride();
+        into.fit(edges[0], edges[1], edges[2], edges[3], edges[4], edges[5], 1 / edges[6], at[a], at[a + cs],
+                at[a + 2 * cs]);
+        return true;
     }
 }

@@ -41,23 +41,13 @@ public final class OutlineProbe {
 
     /** The outline's 1/w at pixel (x, y) as the overlay tests it; -infinity for a triangle without area (not outlined). */
     private static double depthAt(ScreenTriangles t, int tri, int x, int y) {
-        double[] sc = t.screen();
-        double[] at = t.attributes();
-        int s = tri * ScreenTriangles.SCREEN_STRIDE;
-        int a = tri * t.attributeStride();
-        int cs = t.cornerStride();
-        double x0 = sc[s];
-        double y0 = sc[s + 1];
-        double ex1 = sc[s + 2] - x0;
-        double ey1 = sc[s + 3] - y0;
-        double ex2 = sc[s + 4] - x0;
-        double ey2 = sc[s + 5] - y0;
-        double det = ex1 * ey2 - ex2 * ey1;
-        if (det == 0 || !Double.isFinite(det)) {
+        Plane plane = new Plane();
+        if (!OutlinePlan.depthPlane(t, tri, new double[ScreenTriangles.EDGES], plane)) {
             return Double.NEGATIVE_INFINITY;
         }
-        Plane plane = new Plane();
-        plane.fit(x0, y0, ex1, ey1, ex2, ey2, 1 / det, at[a], at[a + cs], at[a + 2 * cs]);
+        double[] at = t.attributes();
+        int a = tri * t.attributeStride();
+        int cs = t.cornerStride();
         double q = plane.base + plane.dx * x + plane.dy * y;
         if (t.perPixel()[tri]) {
             q = Math.max(Math.min(at[a], Math.min(at[a + cs], at[a + 2 * cs])),

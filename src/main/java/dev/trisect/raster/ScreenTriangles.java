@@ -20,6 +20,8 @@ public final class ScreenTriangles {
     public static final int FIXED_STRIDE = 6;
     /** Doubles per triangle in {@link #screen()}: x0, y0, x1, y1, x2, y2 in pixels. */
     public static final int SCREEN_STRIDE = 6;
+    /** Doubles {@link #edges} writes. */
+    public static final int EDGES = 7;
     /**
      * {@link #links()} of an edge on its input triangle's own boundary (every edge of a triangle not
      * split): it may have the same corners as an edge of another triangle, which only comparing
@@ -327,5 +329,27 @@ public final class ScreenTriangles {
 
     static int ceilDiv(int a, int b) {
         return -Math.floorDiv(-a, b);
+    }
+
+    /**
+     * The screen triangle at {@code s}, an offset into {@link #screen()}, seen from its corner 0, into
+     * {@code into[0..6]}: x0, y0; ex1, ey1 and ex2, ey2, the edges to corners 1 and 2; and their cross
+     * product det = ex1 * ey2 - ex2 * ey1 (twice the signed area), all in pixels. What fitting a plane
+     * over the triangle or weighing a point in it starts from.
+     *
+     * @return false when the triangle has no area (det 0 or not finite); {@code into} is written either way
+     */
+    public static boolean edges(double[] screen, int s, double[] into) {
+        double x0 = screen[s];
+        double y0 = screen[s + 1];
+        into[0] = x0;
+        into[1] = y0;
+        for (int k = 2; k < 6; k += 2) {
+            into[k] = screen[s + k] - x0;
+            into[k + 1] = screen[s + k + 1] - y0;
+        }
+        double det = into[2] * into[5] - into[4] * into[3];
+        into[6] = det;
+        return det != 0 && Double.isFinite(det);
     }
 }
