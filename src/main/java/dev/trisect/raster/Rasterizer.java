@@ -33,11 +33,6 @@ public final class Rasterizer {
     private TextureFilter filter = TextureFilter.NEAREST;
     /** The span path's largest displacement between knots, pixels; 0: perspective fills divide per pixel. */
     private double knotError;
-    /**
-     * Corner colours closer than this are one colour ({@link #constant}): 2^-24 of the [0, 1] range,
-     * far below the 2^-16 steps the modulation takes the colour in.
-     */
-    private static final double SAME_COLOUR = 0x1p-24;
     /** The {@link PixelState} of each material index, or null: state 0 for every material. */
     private int[] states;
     /** This thread's side of the renderer's lit textures, or null: none used. */
@@ -161,27 +156,16 @@ public final class Rasterizer {
     }
 
     /**
-     * {@code state}, or for a modulating one whose triangle {@code tri} has the same colour at its three
-     * corners (within {@link #SAME_COLOUR}: flat shading, a face lit evenly, a colour carried through
-     * clipping and cuts), {@link PixelState#CONSTANT} with that colour in {@code t}: the loop then
-     * multiplies by the colour taken once instead of interpolating three varyings at every pixel.
+     * {@code state}, or for a modulating one whose triangle, set up in {@code t}, has the same colour at
+     * its three corners ({@link TriangleSetup#constantColour}: flat shading, a face lit evenly, a colour
+     * carried through clipping and cuts), {@link PixelState#CONSTANT}, that colour being in {@code t}:
+     * the loop then multiplies by the colour taken once instead of interpolating three varyings at
+     * every pixel.
      */
-    private static int constant(int state, ScreenTriangles triangles, int tri, TriangleSetup t) {
-        if (PixelState.colour(state) != PixelState.MODULATE) {
+    private static int constant(int state, TriangleSetup t) {
+        if (PixelState.colour(state) != PixelState.MODULATE || !t.constantColour) {
             return state;
         }
-        double[] a = triangles.attributes();
-        int cs = triangles.cornerStride();
-        int at = tri * triangles.attributeStride() + 1 + PixelState.COLOUR_SLOT;
-        for (int c = at; c < at + 3; c++) {
-            double v = a[c];
-            if (Math.abs(a[c + cs] - v) > SAME_COLOUR || Math.abs(a[c + 2 * cs] - v) > SAME_COLOUR) {
-                return state;
-            }
-        }
-        t.red16 = Modulate.f16(a[at]);
-        t.green16 = Modulate.f16(a[at + 1]);
-        t.blue16 = Modulate.f16(a[at + 2]);
         return state - PixelState.MODULATE + PixelState.CONSTANT;
     }
 
@@ -195,7 +179,7 @@ public final class Rasterizer {
         int material = triangles.materials()[tri];
         Texture texture = textures[material];
         int source = source(texture);
-        int state = constant(state(triangles, material), triangles, tri, t);
+        int state = constant(state(triangles, material), t);
         Texture copy = litCopy(state, source, material, t, spans);
         if (copy != null) {
             texture = copy;

@@ -49,9 +49,22 @@ final class TriangleSetup {
     /** Whether the texel coordinates are small enough for 32.32 fixed point (|s|, |t| &lt; 2^30). */
     boolean fixedPointSafe;
     /**
-     * The triangle's one colour r, g, b in 16 fractional bits ({@link Modulate#f16}), where its three
-     * corners have the same colour varyings and it is filled by a {@link PixelState#CONSTANT} loop;
-     * set by {@link Rasterizer}, not by a setup.
+     * Corner colours closer than this are one colour ({@link #constantColour}): 2^-24 of the [0, 1]
+     * range, far below the 2^-16 steps the modulation takes the colour in.
+     */
+    static final double SAME_COLOUR = 0x1p-24;
+    /**
+     * Whether the last {@link #prepare} found the three corners' colour varyings (slots
+     * {@link PixelState#COLOUR_SLOT}..+2) one colour, within {@link #SAME_COLOUR}: flat shading, a face lit
+     * evenly, a colour carried through clipping. Then {@link #red16}, {@link #green16}, {@link #blue16}
+     * hold it (corner 0's) and the colour planes are not fitted — only a {@link PixelState#CONSTANT} loop,
+     * which reads no colour plane, fills such a triangle with a modulating material. False for a layout
+     * without colour varyings and after {@link #affinePlanes}.
+     */
+    boolean constantColour;
+    /**
+     * The triangle's one colour r, g, b in 16 fractional bits ({@link Modulate#f16}), where
+     * {@link #constantColour}.
      */
     int red16;
     int green16;
@@ -108,7 +121,7 @@ final class TriangleSetup {
         c[3] = by;
         c[4] = cx;
         c[5] = cy;
-        planes(triangles, tri, i1, i2, perspective);
+        planes(triangles, tri, i1, i2, perspective, true);
         return true;
     }
 
@@ -129,12 +142,16 @@ final class TriangleSetup {
         if (area == 0) {
             return false;
         }
-        planes(triangles, tri, area < 0 ? 2 : 1, area < 0 ? 1 : 2, false);
+        planes(triangles, tri, area < 0 ? 2 : 1, area < 0 ? 1 : 2, false, false);
         return true;
     }
 
-    /** Attribute planes from the unsnapped corners, so snapping moves coverage but never the mapping. */
-    private void planes(ScreenTriangles triangles, int tri, int i1, int i2, boolean perspective) {
+    /**
+     * Attribute planes from the unsnapped corners, so snapping moves coverage but never the mapping;
+     * with {@code oneColour}, the colour planes of a triangle of one colour are left unfitted
+     * ({@link #constantColour}).
+     */
+    private void planes(ScreenTriangles triangles, int tri, int i1, int i2, boolean perspective, boolean oneColour) {
         double[] sc = triangles.screen();
         double[] at = triangles.attributes();
         int s = tri * ScreenTriangles.SCREEN_STRIDE;
@@ -171,6 +188,7 @@ final class TriangleSetup {
                 && Math.abs(at[c0 + 2]) < limit && Math.abs(at[c1 + 2]) < limit && Math.abs(at[c2 + 2]) < limit;
         qPlane.fit(x0, y0, ex1, ey1, ex2, ey2, inv, q0, q1, q2);
         planeCount = cs;
+        constantColour = false;
         if (cs == 3) {
             // The textured layout (s, t alone), every frame but a lit one: two fits written out, with
             // no loop over a count the compiler does not know and no load of the plane from the array
@@ -191,7 +209,21 @@ final class TriangleSetup {
             }
             return;
         }
+        // The colour planes, skipped for a triangle of one colour (a flat-shaded sphere's thousands of
+        // tiny triangles: three fits of five, and the check Rasterizer made after them).
+        int skipFrom = 1 + PixelState.COLOUR_SLOT;
+        int skipTo = skipFrom;
+        if (oneColour && cs >= skipFrom + 3 && sameColour(at, c0, c1, c2, skipFrom)) {
+            constantColour = true;
+            red16 = Modulate.f16(at[c0 + skipFrom]);
+            green16 = Modulate.f16(at[c0 + skipFrom + 1]);
+            blue16 = Modulate.f16(at[c0 + skipFrom + 2]);
+            skipTo = skipFrom + 3;
+        }
         for (int k = 1; k < cs; k++) {
+            if (k >= skipFrom && k < skipTo) {
+                continue;
+            }
             double v0 = at[c0 + k];
             double v1 = at[c1 + k];
             double v2 = at[c2 + k];
@@ -203,6 +235,17 @@ final class TriangleSetup {
             }
             planes[k].fit(x0, y0, ex1, ey1, ex2, ey2, inv, v0, v1, v2);
         }
+    }
+
+    /** Whether corners {@code c1} and {@code c2} have corner {@code c0}'s three values from offset {@code k}, within {@link #SAME_COLOUR}. */
+    private static boolean sameColour(double[] at, int c0, int c1, int c2, int k) {
+        for (int j = k; j < k + 3; j++) {
+            double v = at[c0 + j];
+            if (Math.abs(at[c1 + j] - v) > SAME_COLOUR || Math.abs(at[c2 + j] - v) > SAME_COLOUR) {
+                return false;
+            }
+        }
+        return true;
     }
 
     private static Plane[] newPlanes() {
