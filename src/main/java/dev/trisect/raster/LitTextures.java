@@ -171,7 +171,7 @@ public final class LitTextures {
                 continue;
             }
             Long before = wanted.put(key, frame);
-            if (before != null && makeRoom(t) ) {
+            if (before != null && makeRoom(t)) {
                 wanted.remove(key);
                 entries.add(new Entry(key, build(t, key.colour()), frame));
                 bytes += 4L * t.width() * t.height();
