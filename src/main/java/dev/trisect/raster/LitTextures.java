@@ -30,7 +30,8 @@ import java.util.Map;
  * {@link #MAX_PER_TEXTURE} copies.
  *
  * <p>Threads: one {@link Lane} per filling thread, touched by that thread alone during a frame; this
- * object changes only in {@link #begin} and {@link #end}, between frames, on the thread that renders.
+ * object changes only in {@link #begin}, {@link #end} and {@link #clear}, between frames, on the thread
+ * that renders.
  * One per renderer.
  */
 public final class LitTextures {
@@ -192,7 +193,8 @@ public final class LitTextures {
 
     /**
      * Makes room for one more copy of {@code t}, dropping the least recently used copies not used in
-     * this frame while the budget is short; whether there is room.
+     * this frame while the budget is short; whether there is room. When even dropping all of those
+     * would not make room, drops nothing.
      */
     private boolean makeRoom(Texture t) {
         long need = 4L * t.width() * t.height();
@@ -201,6 +203,15 @@ public final class LitTextures {
             same += e.key.texture() == t ? 1 : 0;
         }
         if (same >= MAX_PER_TEXTURE || need > budget) {
+            return false;
+        }
+        // Nothing is dropped unless dropping every copy not used in this frame would make room:
+        // otherwise a key that cannot fit would cost other copies each frame it is asked.
+        long freeable = 0;
+        for (Entry e : entries) {
+            freeable += e.lastUsed < frame ? 4L * e.lit.width() * e.lit.height() : 0;
+        }
+        if (bytes - freeable + need > budget) {
             return false;
         }
         while (bytes + need > budget) {

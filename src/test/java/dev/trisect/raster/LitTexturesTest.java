@@ -153,7 +153,7 @@ class LitTexturesTest {
         for (int f = 0; f < 3; f++) {
             cache.begin(new Texture[] {A, B});
             cache.lane(0).lit(0, GREY, 256);
-            cache.lane(0).lit(1, GREY, 256);
+            assertNotNull(cache.lane(0).lit(1, GREY, 256), "B's copy stays while used");
             cache.end();
             assertEquals(4096, cache.bytes());
         }
@@ -161,6 +161,32 @@ class LitTexturesTest {
         frame(none, A, GREY, 256);
         frame(none, A, GREY, 256);
         assertEquals(0, none.size(), "a copy larger than the budget is not built");
+    }
+
+    @Test
+    void aKeyThatCannotFitDropsNothing() {
+        // Room for three 32x32 copies; A's and C's are in use when D (64x32, two copies' worth) is
+        // wanted, so dropping B's alone would not make room: B's must stay.
+        Texture c = texture(3);
+        Texture d = new Texture("random 64x32", 64, 32, new int[64 * 32]);
+        LitTextures cache = new LitTextures(1, 3 * 4096);
+        for (int f = 0; f < 2; f++) {
+            cache.begin(new Texture[] {A, B, c});
+            for (int m = 0; m < 3; m++) {
+                cache.lane(0).lit(m, GREY, 256);
+            }
+            cache.end();
+        }
+        assertEquals(3, cache.size());
+        for (int f = 0; f < 3; f++) {
+            cache.begin(new Texture[] {A, c, d});
+            assertNotNull(cache.lane(0).lit(0, GREY, 256));
+            assertNotNull(cache.lane(0).lit(1, GREY, 256));
+            assertNull(cache.lane(0).lit(2, GREY, 512));
+            cache.end();
+            assertEquals(3, cache.size(), "nothing dropped for a key that does not fit");
+        }
+        assertNotNull(frame(cache, B, GREY, 1), "B's copy kept");
     }
 
     @Test
