@@ -71,6 +71,11 @@ class LitTexturesFrameTest {
             60, 0.1, 1000).viewProjection(new Viewport(W, H));
 
     private static Framebuffer frame(FrameRenderer r, RenderSettings s, Shading shading, int write) {
+        return frame(r, s, shading, write, true);
+    }
+
+    /** The frame, with the UV output (and ids) recorded or not: the loops differ by it. */
+    private static Framebuffer frame(FrameRenderer r, RenderSettings s, Shading shading, int write, boolean uv) {
         Draws draws = new Draws();
         Surface[] surfaces = new Surface[3];
         Arrays.fill(surfaces, new Surface(shading, Colour.WHITE, Colour.WHITE));
@@ -80,7 +85,7 @@ class LitTexturesFrameTest {
         draws.setLights(Lights.builder().ambient(0.2, 0.2, 0.2)
                 .directional(0.3, -1, -0.5, new double[3], new double[] {1, 0.9, 0.7}).build());
         Framebuffer fb = new Framebuffer(W, H);
-        fb.recordUv(true);
+        fb.recordUv(uv);
         r.render(draws, s, fb);
         return fb;
     }
@@ -100,15 +105,18 @@ class LitTexturesFrameTest {
             for (RenderSettings path : PATHS) {
                 for (Shading shading : new Shading[] {Shading.FLAT, Shading.SMOOTH}) {
                     for (int write : writes) {
-                        String what = path.mode() + " " + shading + " write " + write;
-                        // The third frame draws from the copies built after the second.
-                        for (int f = 0; f < 2; f++) {
-                            frame(cached, path, shading, write);
+                        for (boolean uv : new boolean[] {true, false}) {
+                            String what = path.mode() + " " + shading + " write " + write + (uv ? " uv" : "");
+                            // The third frame draws from the copies built after the second.
+                            for (int f = 0; f < 2; f++) {
+                                frame(cached, path, shading, write, uv);
+                            }
+                            Framebuffer lit = frame(cached, path, shading, write, uv);
+                            assertTrue(cached.litTextures().hits() > 0, what + ": drawn from the copies");
+                            assertSameFrame(frame(plain, path, shading, write, uv), lit, what);
+                            assertEquals(0, plain.litTextures().size(),
+                                    "the renderer without the cache builds nothing");
                         }
-                        Framebuffer lit = frame(cached, path, shading, write);
-                        assertTrue(cached.litTextures().hits() > 0, what + ": drawn from the copies");
-                        assertSameFrame(frame(plain, path, shading, write), lit, what);
-                        assertEquals(0, plain.litTextures().size(), "the renderer without the cache builds nothing");
                     }
                 }
             }
