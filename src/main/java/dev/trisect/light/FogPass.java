@@ -18,9 +18,10 @@ import dev.trisect.render.Framebuffer;
  * factors; the second blends a copy of the row's colours by them in three small loops of integer
  * arithmetic over arrays at one index, which C2 (JDK 17) compiles to vector instructions (it
  * vectorizes no float-to-int conversion and no table look-up, so the first step stays scalar). Linear
- * fog divides: 4096 f = 4096 (end - z)/(end - start) = a - b·(1/w) in floats, rounded to the nearest
- * 4096th and clamped; the floats' rounding moves it by less than 2^-11·end/(end - start) of a 4096th
- * (under 0.5 of one while end/(end - start) is under 1000). Exp and exp2 look f up in a table
+ * fog divides: 4096 f = 4096 (end - z)/(end - start) = a - b/(1/w) in floats (z = w, the eye depth),
+ * rounded to the nearest 4096th and clamped; with E = end/(end - start), a's rounding is at most
+ * E·2^-12 of a 4096th and the quotient's (b's and the division's) at most E·2^-11, so the floats move
+ * it by at most 1.5·E·2^-11 of a 4096th (under 0.5 of one while E is under 680). Exp and exp2 look f up in a table
  * indexed by the stored 1/w's float bits, {@link #STEPS_PER_OCTAVE} entries for each doubling of 1/w,
  * holding round(4096 f) at the middle of each entry, in chars (120 KB, of which a scene's depths touch
  * a few octaves, 4 KB each). An entry spans at most 2^-11 of its 1/w, so at most 2^-12 of ln z from
