@@ -19,8 +19,10 @@ import java.util.Locale;
  * LightCost's), timing only {@code FogPass.apply} over the frame, 16 rows a call as the renderer's
  * bands (so the JIT compiles it as it does in a frame), in the thread's CPU time
  * (steadier than wall time on a loaded machine). Prints per fog the median, lowest and highest ms and
- * the median ns per covered pixel. It calls the pass as every build has it, so running it on two
- * jars compares two builds' passes:
+ * the median ns per covered pixel. It calls the pass as every build has it ({@code apply(frame, y0,
+ * y1)}), so running it on two jars compares two builds' passes; in builds whose pass works on row
+ * buffers, that form allocates them at each call where the renderer keeps one set per thread, so
+ * their figures include three int arrays of a row's width a call (an upper bound on the pass):
  *
  *   java -cp target/trisect.jar scripts/light/FogPassCost.java SCENE WxH ROUNDS
  */

@@ -39,12 +39,24 @@ import java.util.Locale;
  * ambient grey of 0.2, as {@code bench --shade flat|smooth --light 0.3,-1,-0.5} does. The -uncached
  * variants are drawn by a second renderer of as many threads whose lit copies of textures are off
  * ({@code FrameRenderer.cacheLitTextures(false)}): what the copies save, side by side.
+ *
+ * <p>A steady frame to profile, one path and variant drawn again and again on one thread (PATH:
+ * perspective, spans or tessellated, as above; VARIANT: plain, unlit and unfogged, or one of the above
+ * without -uncached), 1920x1080:
+ *
+ *   java -XX:StartFlightRecording=filename=flat.jfr,settings=profile -cp target/trisect.jar \
+ *       scripts/light/LightCost.java --repeat SCENE PATH VARIANT FRAMES
+ *   jfr print --stack-depth 64 --events jdk.ExecutionSample flat.jfr
  */
 public final class LightCost {
     private static final com.sun.management.OperatingSystemMXBean CPU =
             (com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean();
 
     public static void main(String[] args) {
+        if (args.length > 0 && args[0].equals("--repeat")) {
+            repeat(args);
+            return;
+        }
         String scene = args.length > 0 ? args[0] : "demo";
         String[] size = (args.length > 1 ? args[1] : "1920x1080").split("x");
         int threads = args.length > 2 ? Integer.parseInt(args[2]) : 2;
@@ -97,7 +109,51 @@ public final class LightCost {
                             median(ms[k]), ratio[rounds / 2], ratio[0], ratio[rounds - 1], cpuRatio[cpuRatio.length / 2], cpuRatio[0],
                             cpuRatio[cpuRatio.length - 1]);
                 }
+                System.out.printf(Locale.ROOT, "%-12s lit copies kept: %d, %.1f MB%n",
+                        path.mode().name().toLowerCase(Locale.ROOT), r.litTextures().size(),
+                        r.litTextures().bytes() / 1e6);
             }
+        }
+    }
+
+    /**
+     * {@code --repeat SCENE PATH VARIANT FRAMES}: one path and variant drawn FRAMES times on one thread,
+     * a steady frame to profile; prints the mean wall ms of the second half of the frames.
+     */
+    private static void repeat(String[] args) {
+        if (args.length != 5) {
+            System.err.println("usage: LightCost --repeat SCENE perspective|spans|tessellated VARIANT FRAMES");
+            System.exit(2);
+        }
+        String scene = args[1];
+        String mode = args[2];
+        String variant = args[3];
+        int frames = Integer.parseInt(args[4]);
+        int w = 1920;
+        int h = 1080;
+        SceneAsset s = DemoScenes.byName(scene).orElseThrow(() -> new IllegalArgumentException("no scene " + scene));
+        Mat4 vp = s.camera().viewProjection(new Viewport(w, h));
+        RenderSettings base = RenderSettings.defaults();
+        RenderSettings path = switch (mode) {
+            case "perspective" -> base.withMode(RenderMode.PERSPECTIVE);
+            case "spans" -> base.withMode(RenderMode.SPANS).withKnotError(0.5);
+            case "tessellated" -> base.withMode(RenderMode.TESSELLATED).withTessellation(
+                    TessellationSettings.defaults().withPolicy(SplitPolicy.ERROR).withMaxError(0.5));
+            default -> throw new IllegalArgumentException("no path " + mode);
+        };
+        Setup setup = variant.equals("plain") ? (d, mesh, t, m) -> d.add(mesh, t, m) : variant(variant);
+        Framebuffer fb = new Framebuffer(w, h);
+        Draws draws = new Draws();
+        try (FrameRenderer r = new FrameRenderer(1)) {
+            double sum = 0;
+            for (int i = 0; i < frames; i++) {
+                double ms = frame(r, draws, s, vp, setup, path, fb);
+                if (i >= frames / 2) {
+                    sum += ms;
+                }
+            }
+            System.out.printf(Locale.ROOT, "%s %s %s: mean %.2f ms over the last %d frames%n", scene, mode, variant,
+                    sum / (frames - frames / 2), frames - frames / 2);
         }
     }
 

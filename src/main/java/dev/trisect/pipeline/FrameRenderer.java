@@ -214,8 +214,8 @@ public final class FrameRenderer implements AutoCloseable {
         litOn = on;
     }
 
-    /** The renderer's lit copies of textures, for tests. */
-    LitTextures litTextures() {
+    /** The renderer's lit copies of textures: how many it keeps, their bytes, the last frame's hits. */
+    public LitTextures litTextures() {
         return lit;
     }
 
