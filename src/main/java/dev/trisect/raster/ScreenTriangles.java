@@ -334,7 +334,7 @@ public final class ScreenTriangles {
     /**
      * The screen triangle at {@code s}, an offset into {@link #screen()}, seen from its corner 0, into
      * {@code into[0..6]}: x0, y0; ex1, ey1 and ex2, ey2, the edges to corners 1 and 2; and their cross
-     * product det = ex1 * ey2 - ex2 * ey1 (twice the signed area), all in pixels. What fitting a plane
+     * product det = ex1 * ey2 - ex2 * ey1 (twice the signed area, in square pixels), the others in pixels. What fitting a plane
      * over the triangle or weighing a point in it starts from.
      *
      * @return false when the triangle has no area (det 0 or not finite); {@code into} is written either way
