@@ -105,11 +105,33 @@ public final class FogPass {
         return fog;
     }
 
-    /** The factor this pass applies to a pixel of stored depth {@code q} (1/w, positive), in 4096ths. */
-    int weight(float q) {
+    /**
+     * The factor this pass applies to a pixel of stored depth {@code q}, in 4096ths (4096 leaves the
+     * colour as it is): what the pass finds for one pixel, for a fragment whose depth is known before
+     * it is written (a screen-aligned quad's, {@code raster/QuadRaster}).
+     *
+     * @param q 1/w, the inverse of the eye-space depth; 0 (the background, or no depth) is not fogged
+     * @return f in 4096ths, 0..4096
+     */
+    public int weight(float q) {
         int[] k = new int[1];
         factors(new float[] {q}, 0, 1, k);
         return k[0];
+    }
+
+    /**
+     * One colour blended towards the fog by factor {@code k}, exactly as the pass blends a pixel (see
+     * {@link #blend}): {@code fogged(C, weight(q))} is the pass's result for colour C at depth q.
+     *
+     * @param argb the colour; its alpha is kept
+     * @param k    the factor in 4096ths, 0..4096 ({@link #weight})
+     * @return the fogged colour, ARGB
+     */
+    public int fogged(int argb, int k) {
+        int r = ((((argb >> 12) & 0xFF0) - fr) * k + ONE * 8 + fr * ONE) >> 16;
+        int g = ((((argb >> 4) & 0xFF0) - fg) * k + ONE * 8 + fg * ONE) >> 16;
+        int b = ((((argb << 4) & 0xFF0) - fb) * k + ONE * 8 + fb * ONE) >> 16;
+        return (argb & 0xFF000000) | r << 16 | g << 8 | b;
     }
 
     /**

@@ -183,7 +183,7 @@ public final class FrameRenderer implements AutoCloseable {
 
     /**
      * The fill pass: every band cleared and filled, fogged (its lines drawn before the fog, which fogs
-     * them as OpenGL does; the quads are not fogged), outlined right after when the borders are on, and
+     * them as OpenGL does; the quads fog their own fragments, see {@link QuadGeometry}), outlined right after when the borders are on, and
      * its lines and quads drawn.
      */
     private void fillPass(FrameJob job) {

@@ -8,8 +8,9 @@ import dev.trisect.raster.QuadRaster;
  * billboards, the glyphs of labels and of screen text, their backdrops) set up for the frame's size
  * and listed as {@link Commands#QUAD} commands in the order they were added; the list is binned into
  * the fill's bands, where each band draws its quads last, after its lines ({@link BandPass}), so the
- * image does not depend on the thread count. The quads' own depth test, alpha test and blending are
- * {@link QuadRaster}'s.
+ * image does not depend on the thread count. The quads' own fog (the billboards', by the frame's fog
+ * pass: after the band's fog pass, so each quad fogs its own fragments), depth test, alpha test and
+ * blending are {@link QuadRaster}'s.
  */
 final class QuadGeometry {
     /**
@@ -40,7 +41,7 @@ final class QuadGeometry {
             return Result.NONE;
         }
         long start = System.nanoTime();
-        quads.setUp(width, height);
+        quads.setUp(width, height, draws.fogPass());
         for (int s = 0; s < quads.count(); s++) {
             commands.add(Commands.QUAD, s, quads.firstRow(s), quads.lastRow(s) + 1);
         }

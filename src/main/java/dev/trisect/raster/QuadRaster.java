@@ -1,5 +1,6 @@
 package dev.trisect.raster;
 
+import dev.trisect.light.FogPass;
 import java.util.Arrays;
 
 /**
@@ -30,6 +31,14 @@ import java.util.Arrays;
  * With {@link #TINT} the texel gives only alpha and the quad's tint the colour (glyphs: one atlas, any
  * colour). The frame's alpha stays 255.
  *
+ * <p>With {@link #FOG}, when the frame has fog ({@link #setUp(int, int, FogPass)}), each fragment's
+ * colour (texel or tint) is blended towards the fog by the factor of the quad's own depth before the
+ * alpha test and the blend, as OpenGL fogs every fragment (OpenGL 2.1, section 3.10, ahead of the
+ * per-fragment operations of chapter 4): a blended quad is fogged by its depth, not by the surface
+ * behind it. Factor and blend are the fog pass's ({@link FogPass#weight}, {@link FogPass#fogged}), so
+ * an opaque fogged quad's pixels are what the pass would make of them. The factor is one per quad (its
+ * 1/w is), found at set-up.
+ *
  * <p>Not thread-safe to set up; {@link #rows} may run on many threads at once over distinct rows.
  */
 public final class QuadRaster {
@@ -41,6 +50,10 @@ public final class QuadRaster {
     public static final int ON_TOP = 2;
     /** Flag: colour from the tint, alpha from the texel (times the tint's). */
     public static final int TINT = 4;
+    /** Flag: fogged by its depth when the frame has fog (billboards: scene content). */
+    public static final int FOG = 8;
+    /** The fog factor of an unfogged quad, in 4096ths ({@link FogPass#weight}). */
+    private static final int UNFOGGED = 4096;
     /** Kind of quad, for the statistics: a billboard. */
     public static final int BILLBOARD = 0;
     /** Kind: a glyph. */
@@ -62,6 +75,10 @@ public final class QuadRaster {
     private int[] bounds = new int[4 * 64];
     /** Per quad, set by {@link #setUp}: the texel column at its first column's centre and per pixel, 32.32. */
     private long[] steps = new long[2 * 64];
+    /** Per quad, set by {@link #setUp}: its fog factor in 4096ths, {@link #UNFOGGED} when not fogged. */
+    private int[] fogFactors = new int[64];
+    /** The frame's fog as last set up, or null. */
+    private FogPass fog;
     private int width;
 
     /** Forgets every quad. */
@@ -108,7 +125,7 @@ public final class QuadRaster {
      * @param first   index of the region's top-left texel
      * @param texW    texels across the region
      * @param texH    texels down the region
-     * @param mode    {@link #TEST} or {@link #BLEND}, with {@link #ON_TOP} and {@link #TINT} as wanted
+     * @param mode    {@link #TEST} or {@link #BLEND}, with {@link #ON_TOP}, {@link #TINT} and {@link #FOG} as wanted
      * @param tint    ARGB: the colour under {@link #TINT}; its alpha multiplies the texels' under {@link #BLEND}
      * @param kind    {@link #BILLBOARD}, {@link #GLYPH} or {@link #OTHER}
      */
@@ -140,17 +157,26 @@ public final class QuadRaster {
         kinds[kind]++;
     }
 
+    /** As {@link #setUp(int, int, FogPass)} without fog. */
+    public int setUp(int width, int height) {
+        return setUp(width, height, null);
+    }
+
     /**
      * Sets the quads up for a {@code width x height} frame: the columns and rows whose pixel centres
-     * each covers, within the frame (see {@link #firstRow}, {@link #lastRow}).
+     * each covers, within the frame (see {@link #firstRow}, {@link #lastRow}), and the fog factor of
+     * each {@link #FOG} quad.
      *
+     * @param fog the frame's fog pass, or null for none
      * @return quads that cover a pixel of the frame
      */
-    public int setUp(int width, int height) {
+    public int setUp(int width, int height, FogPass fog) {
         this.width = width;
+        this.fog = fog;
         if (bounds.length < 4 * count) {
             bounds = new int[4 * Math.max(count, bounds.length)];
             steps = new long[bounds.length / 2];
+            fogFactors = new int[bounds.length / 4];
         }
         int shown = 0;
         for (int s = 0; s < count; s++) {
@@ -170,6 +196,9 @@ public final class QuadRaster {
             bounds[4 * s + 1] = (int) x1;
             bounds[4 * s + 2] = (int) y0;
             bounds[4 * s + 3] = (int) y1;
+            // The depth as the depth buffer would hold it, so that the factor is the fog pass's for it.
+            fogFactors[s] = fog != null && (ints[ISTRIDE * s] & FOG) != 0
+                    ? fog.weight((float) doubles[d + 4]) : UNFOGGED;
             // The texel column in 32.32 fixed point, stepped per pixel: exact where a texel is a whole number
             // of pixels at whole-pixel edges (glyphs: one texel a pixel), within 2^-32 texel a pixel elsewhere.
             double sPerPixel = ints[ISTRIDE * s + 2] / (doubles[d + 2] - doubles[d]);
@@ -212,8 +241,14 @@ public final class QuadRaster {
     private int span(int s, int from, int to, int[] colour, float[] depths) {
         int i = ISTRIDE * s;
         int d = DSTRIDE * s;
-        int mode = ints[i];
+        int mode = ints[i] & ~FOG;
         int tint = ints[i + 1];
+        int k = fogFactors[s];
+        // Fogged texels are fogged per fragment in the row; a tint, the colour of every fragment, once here.
+        FogPass texelFog = k != UNFOGGED && (mode & TINT) == 0 ? fog : null;
+        if (k != UNFOGGED && (mode & TINT) != 0) {
+            tint = fog.fogged(tint, k);
+        }
         int texW = ints[i + 2];
         int texH = ints[i + 3];
         int stride = ints[i + 4];
@@ -233,14 +268,17 @@ public final class QuadRaster {
                     ? testedTint(tex, rowStart, rowStart + texW - 1, sFixed, sStep, colour, depths, base + x0,
                             base + x1, q, tint | 0xFF000000)
                     : row(mode, tint, tex, rowStart, rowStart + texW - 1, sFixed, sStep, colour, depths, base + x0,
-                            base + x1, q);
+                            base + x1, q, texelFog, k);
         }
         return written;
     }
 
-    /** A row of any mode, from frame index {@code from} to {@code to}. */
+    /**
+     * A row of any mode, from frame index {@code from} to {@code to}; with {@code fog}, each texel's
+     * colour is fogged by factor {@code k} (its alpha is not, so the tests and the blend are unchanged).
+     */
     private static int row(int mode, int tint, int[] tex, int rowStart, int last, long sFixed, long sStep,
-                           int[] colour, float[] depths, int from, int to, float q) {
+                           int[] colour, float[] depths, int from, int to, float q, FogPass fog, int k) {
         boolean depthTest = (mode & ON_TOP) == 0;
         boolean tinted = (mode & TINT) != 0;
         int written = 0;
@@ -249,7 +287,7 @@ public final class QuadRaster {
             for (int at = from; at <= to; at++, sFixed += sStep) {
                 int texel = tex[Math.min(last, rowStart + (int) (sFixed >>> 32))];
                 if (texel >>> 24 >= 128 && (!depthTest || q >= depths[at])) {
-                    colour[at] = tinted ? rgb : texel | 0xFF000000;
+                    colour[at] = tinted ? rgb : (fog == null ? texel : fog.fogged(texel, k)) | 0xFF000000;
                     if (depthTest) {
                         depths[at] = q;
                     }
@@ -262,7 +300,7 @@ public final class QuadRaster {
                 int texel = tex[Math.min(last, rowStart + (int) (sFixed >>> 32))];
                 int a = ((texel >>> 24) * tintAlpha + 127) / 255;
                 if (a > 0 && (!depthTest || q >= depths[at])) {
-                    colour[at] = blend(tinted ? tint : texel, colour[at], a);
+                    colour[at] = blend(tinted ? tint : fog == null ? texel : fog.fogged(texel, k), colour[at], a);
                     written++;
                 }
             }

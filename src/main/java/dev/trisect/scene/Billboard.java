@@ -21,6 +21,9 @@ import java.util.Objects;
  * any other alpha is blended over what is behind it ({@code src·a + dst·(1 − a)}, no depth write).
  * It is depth-tested against the scene at its centre's depth (the whole rectangle lies at that depth),
  * unless {@link #onTop()}. Sampling is nearest, the texture's left and right edges on the rectangle's.
+ * With the scene's fog ({@link Scene#setFog}), its colour is blended towards the fog by its centre's eye
+ * depth before the alpha test and blend, as OpenGL fogs every fragment (on top or not); unlike
+ * {@link Label}s and {@link ScreenText}, which are not fogged.
  * Billboards are drawn after the scene's triangles and lines, farthest first (see docs/conventions.md,
  * "Billboards and text").
  */

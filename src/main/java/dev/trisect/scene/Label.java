@@ -10,8 +10,9 @@ import java.util.Objects;
  * character the font has), and are drawn alpha-tested, each texel on one pixel, in the label's colour.
  * The text is centred on the point horizontally and sits on it: the bottom of its last line (the
  * font's descent below the baseline) is on the point. Lines are split at {@code '\n'} and centred.
- * It is depth-tested at the point's depth unless {@link #onTop()}. Immutable; give an object its
- * labels with {@link SceneObject#setLabels}.
+ * It is depth-tested at the point's depth unless {@link #onTop()}. It is not fogged by the scene's fog:
+ * an annotation stays legible at any distance (text that is part of the scene is a {@link TextPanel},
+ * fogged as any object). Immutable; give an object its labels with {@link SceneObject#setLabels}.
  *
  * <pre>{@code
  * cube.setLabels(List.of(Label.of("crate", new Vec3(0, 0.7, 0)).withColour(0xFFFF00)));

@@ -188,8 +188,9 @@ public final class Scene extends Group {
     }
 
     /**
-     * Fogs the scene from the next frame on, or clears the fog: every pixel of every object is blended
-     * towards the fog's colour by its depth ({@link Fog}); the background is not.
+     * Fogs the scene from the next frame on, or clears the fog: every pixel of every object, of its lines
+     * and of its billboards is blended towards the fog's colour by its depth ({@link Fog}); the
+     * background, labels and screen text are not.
      *
      * @param fog the fog, or null for none
      */

@@ -6,7 +6,8 @@ import java.util.Objects;
 /**
  * Text over the frame, anchored to a corner of the screen, whatever the camera: a heads-up line, a
  * legend. Drawn after everything else, on top, from the same glyph textures as {@link Label}s (an AWT
- * font rasterized once, no antialiasing). Lines split at {@code '\n'} are aligned on the corner's side.
+ * font rasterized once, no antialiasing), never fogged. Lines split at {@code '\n'} are aligned on the
+ * corner's side.
  * Immutable; show it with {@link Scene#setScreenText}.
  *
  * <pre>{@code

@@ -130,7 +130,9 @@ public final class Sprites {
         if (i.what() instanceof Billboard b) {
             double w = b.sizedInPixels() ? b.width() : b.width() * i.pixelsPerUnit();
             double h = b.sizedInPixels() ? b.height() : b.height() * i.pixelsPerUnit();
-            int mode = (b.isBlended() ? QuadRaster.BLEND : QuadRaster.TEST) | onTop;
+            // Billboards are scene content, fogged by their depth as OpenGL fogs every fragment; labels and
+            // screen text are annotations, never fogged (docs/conventions.md, "Fog").
+            int mode = (b.isBlended() ? QuadRaster.BLEND : QuadRaster.TEST) | QuadRaster.FOG | onTop;
             var t = b.texture();
             quads.add(i.x() - w / 2, i.y() - h / 2, i.x() + w / 2, i.y() + h / 2, q, t.argb(), t.width(), 0,
                     t.width(), t.height(), mode, 0xFFFFFFFF, QuadRaster.BILLBOARD);
