@@ -282,12 +282,19 @@ public final class QuadRaster {
         boolean depthTest = (mode & ON_TOP) == 0;
         boolean tinted = (mode & TINT) != 0;
         int written = 0;
+        // The texel last fogged and its fogged colour: a magnified texture repeats each texel over pixels.
+        int seen = 0;
+        int seenFogged = fog == null ? 0 : fog.fogged(0, k);
         if ((mode & BLEND) == 0) {
             int rgb = tint | 0xFF000000;
             for (int at = from; at <= to; at++, sFixed += sStep) {
                 int texel = tex[Math.min(last, rowStart + (int) (sFixed >>> 32))];
                 if (texel >>> 24 >= 128 && (!depthTest || q >= depths[at])) {
-                    colour[at] = tinted ? rgb : (fog == null ? texel : fog.fogged(texel, k)) | 0xFF000000;
+                    if (fog != null && texel != seen) {
+                        seen = texel;
+                        seenFogged = fog.fogged(texel, k);
+                    }
+                    colour[at] = tinted ? rgb : (fog == null ? texel : seenFogged) | 0xFF000000;
                     if (depthTest) {
                         depths[at] = q;
                     }
@@ -300,7 +307,11 @@ public final class QuadRaster {
                 int texel = tex[Math.min(last, rowStart + (int) (sFixed >>> 32))];
                 int a = ((texel >>> 24) * tintAlpha + 127) / 255;
                 if (a > 0 && (!depthTest || q >= depths[at])) {
-                    colour[at] = blend(tinted ? tint : fog == null ? texel : fog.fogged(texel, k), colour[at], a);
+                    if (fog != null && texel != seen) {
+                        seen = texel;
+                        seenFogged = fog.fogged(texel, k);
+                    }
+                    colour[at] = blend(tinted ? tint : fog == null ? texel : seenFogged, colour[at], a);
                     written++;
                 }
             }
