@@ -37,10 +37,8 @@ public final class Rasterizer {
     private int[] states;
     /** This thread's side of the renderer's lit textures, or null: none used. */
     private LitTextures.Lane lit;
-    /** What {@link #choose} picked for the triangle being filled: its texture, colour source and pixel state. */
-    private Texture chosenTexture;
-    private int chosenSource;
-    private int chosenState;
+    /** The lit copy {@link #oneColour} picked for the triangle being filled, or null: its material's texture. */
+    private Texture chosenCopy;
 
     /** Sets how the following {@link #fill} calls sample textures (nearest until set). */
     public void filter(TextureFilter f) {
@@ -139,10 +137,18 @@ public final class Rasterizer {
         }
         solver.walk(t);
         int[] spans = solver.spans();
-        choose(triangles, tri, textures, t, spans);
-        Texture texture = chosenTexture;
-        int source = chosenSource;
-        int state = chosenState;
+        int material = triangles.materials()[tri];
+        Texture texture = textures[material];
+        int source = source(texture);
+        int state = state(triangles, material);
+        // Only a modulating material's triangle of one colour has anything more to decide: an unlit
+        // triangle pays two tests here, as before lit copies.
+        if (PixelState.colour(state) == PixelState.MODULATE && t.constantColour) {
+            state = oneColour(state, source, material, t, spans);
+            if (chosenCopy != null) {
+                texture = chosenCopy;
+            }
+        }
         int uvId = triangles.ids()[tri] + 1;
         boolean uv = frame.uv() != null;
         boolean ids = frame.ids() != null;
@@ -156,52 +162,26 @@ public final class Rasterizer {
     }
 
     /**
-     * {@code state}, or for a modulating one whose triangle, set up in {@code t}, has the same colour at
-     * its three corners ({@link TriangleSetup#constantColour}: flat shading, a face lit evenly, a colour
-     * carried through clipping and cuts), {@link PixelState#CONSTANT}, that colour being in {@code t}:
-     * the loop then multiplies by the colour taken once instead of interpolating three varyings at
-     * every pixel.
+     * The pixel state for a triangle of one colour ({@link TriangleSetup#constantColour}: flat shading, a
+     * face lit evenly, a colour carried through clipping and cuts) of a material whose {@code state}
+     * modulates: {@link PixelState#CONSTANT}, the colour being in {@code t}, so that the loop multiplies
+     * by the colour taken once instead of interpolating three varyings at every pixel; or, sampled
+     * nearest when the cache has a lit copy of the texture ({@link LitTextures}), whose texel is the
+     * texel times that colour bit for bit, the texel loop, that copy being put in {@link #chosenCopy}
+     * (else null there).
      */
-    private static int constant(int state, TriangleSetup t) {
-        if (PixelState.colour(state) != PixelState.MODULATE || !t.constantColour) {
-            return state;
+    private int oneColour(int state, int source, int material, TriangleSetup t, int[] spans) {
+        int constant = state - PixelState.MODULATE + PixelState.CONSTANT;
+        chosenCopy = null;
+        if (lit == null || source != ColourSources.NEAREST_POT && source != ColourSources.NEAREST_ANY) {
+            return constant;
         }
-        return state - PixelState.MODULATE + PixelState.CONSTANT;
-    }
-
-    /**
-     * Picks the texture, colour source and pixel state of triangle {@code tri} of {@code triangles}, set
-     * up in {@code t} with its {@code spans}, into {@link #chosenTexture}, {@link #chosenSource} and
-     * {@link #chosenState}: its material's, or for a triangle of one colour sampled nearest its texture's
-     * lit copy with the texel loop, when the cache has one ({@link #litCopy}).
-     */
-    private void choose(ScreenTriangles triangles, int tri, Texture[] textures, TriangleSetup t, int[] spans) {
-        int material = triangles.materials()[tri];
-        Texture texture = textures[material];
-        int source = source(texture);
-        int state = constant(state(triangles, material), t);
-        Texture copy = litCopy(state, source, material, t, spans);
-        if (copy != null) {
-            texture = copy;
-            state = PixelState.write(state);
+        Texture copy = lit.lit(material, t, spans);
+        if (copy == null) {
+            return constant;
         }
-        chosenTexture = texture;
-        chosenSource = source;
-        chosenState = state;
-    }
-
-    /**
-     * The lit copy of {@code material}'s texture to draw the triangle set up in {@code t} from, with
-     * the texel loop: only for a triangle of one colour ({@link PixelState#CONSTANT}) sampled nearest,
-     * whose texel times that colour is the copy's texel bit for bit; else, or when the cache has no
-     * copy yet, null.
-     */
-    private Texture litCopy(int state, int source, int material, TriangleSetup t, int[] spans) {
-        if (lit == null || PixelState.colour(state) != PixelState.CONSTANT
-                || source != ColourSources.NEAREST_POT && source != ColourSources.NEAREST_ANY) {
-            return null;
-        }
-        return lit.lit(material, t, spans);
+        chosenCopy = copy;
+        return PixelState.write(constant);
     }
 
     /** The colour source of the filter sampling {@code texture}: masks wrap a power-of-two side. */
@@ -237,9 +217,18 @@ public final class Rasterizer {
         }
         solver.walk(t);
         int[] spans = solver.spans();
-        choose(inputs, g, textures, t, spans);
-        return TreeLoops.fill(chosenSource, chosenState, frame.uv() != null, frame.ids() != null, this.trees, t,
-                spans, trees, trees.roots()[g], trees.nodeCount(g), frame, chosenTexture, inputs.ids()[g] + 1);
+        int material = inputs.materials()[g];
+        Texture texture = textures[material];
+        int source = source(texture);
+        int state = state(inputs, material);
+        if (PixelState.colour(state) == PixelState.MODULATE && t.constantColour) {
+            state = oneColour(state, source, material, t, spans);
+            if (chosenCopy != null) {
+                texture = chosenCopy;
+            }
+        }
+        return TreeLoops.fill(source, state, frame.uv() != null, frame.ids() != null, this.trees, t,
+                spans, trees, trees.roots()[g], trees.nodeCount(g), frame, texture, inputs.ids()[g] + 1);
     }
 
     /**
