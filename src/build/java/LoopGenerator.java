@@ -37,7 +37,7 @@ import java.util.TreeSet;
  * locals {@code i}, {@code qf}, {@code argb} and the arrays {@code depth}, {@code color}); a line that is
  * only another {@code $WORD$} is a hook: the write's, the source's and the colour's sections of that
  * name in lower case, in that order ({@code $SETUP$}, {@code $ROW$}, {@code $PIXEL$}, {@code $KNOT$},
- * {@code $SEGMENT$}, {@code $PIECE$}), or nothing.
+ * {@code $SEGMENT$}, {@code $PIECE$}, {@code $RUN$}), or nothing.
  *
  * <p>LoopPart ({@code sources/NAME.source}): comment lines (its description), then sections, each from
  * a line {@code //#name} to the next: {@code fixed} and {@code double} (the texel, required), the
