@@ -186,18 +186,18 @@ class ProcessRobustnessTest {
         var stdout = new java.io.BufferedReader(new java.io.InputStreamReader(p.getInputStream(),
                 StandardCharsets.UTF_8));
         List<String> lines = new ArrayList<>();
-        long start = System.nanoTime();
+        // The method's timeout guards against a hang: rows held back until glref ends would never come.
         for (String line; lines.size() < 3 && (line = stdout.readLine()) != null; ) {
             lines.add(line);
         }
-        assertTrue(System.nanoTime() - start < TimeUnit.SECONDS.toNanos(40) && p.isAlive(),
+        assertTrue(p.isAlive(),
                 "the header and the affine row arrive while glref is held: " + lines);
         assertEquals(3, lines.size(), lines.toString());
         assertTrue(lines.get(2).startsWith("affine "), lines.toString());
         try {
             // The affine row is printed before glref is run; interrupted in between, the run could also
             // have been stopped while it prepared glref's files, which says so in a line of its own.
-            while (!Files.exists(started) && p.isAlive() && System.nanoTime() - start < TimeUnit.SECONDS.toNanos(60)) {
+            while (!Files.exists(started) && p.isAlive()) {
                 Thread.sleep(10);
             }
             assertTrue(Files.exists(started), "the held glref started");
