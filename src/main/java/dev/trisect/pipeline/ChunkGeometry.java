@@ -49,6 +49,11 @@ final class ChunkGeometry {
     private static final int CORNER = VertexLayout.FIRST_VARYING + VertexLayout.MAX_VARYINGS;
     /** The varying slot of a lit frame's red; green and blue follow it. */
     static final int COLOUR_SLOT = 2;
+    /**
+     * The flat value of a flat-lit frame's red ({@link FrameGeometry#FLAT_LIT_LAYOUT}); green and blue
+     * follow it: the triangle's one colour, held once per triangle instead of in each corner.
+     */
+    static final int FLAT_COLOUR = 0;
     /** Triangles per timing batch inside a chunk. */
     private static final int BATCH = 1024;
 
@@ -64,7 +69,8 @@ final class ChunkGeometry {
      * @param budget          the frame's piece budget, shared by all threads' tessellators
      * @param layout          the vertices' varyings (s, t first), carried on to the pixel loops
      * @param colours         the lit vertices' colours when a material is lit, else null; a layout with
-     *                        more than two varyings carries r, g, b in varyings 2..4 (white where unlit)
+     *                        more than two varyings carries r, g, b in varyings 2..4 (white where unlit),
+     *                        one with flat values the provoking corner's r, g, b in flat values 0..2
      */
     record Input(Draws draws, double[] clip, boolean[] invalidPosition, RenderSettings settings,
                  Viewport viewport, double guardX, double guardY, boolean split, PieceBudget budget,
@@ -84,6 +90,12 @@ final class ChunkGeometry {
         double[] batch = new double[3 * VertexLayout.CLIP_STRIDE * BATCH];
         int[] batchIds = new int[BATCH];
         int[] batchMaterials = new int[BATCH];
+        /** Flat values per triangle of the layout ({@link VertexLayout#flats()}). */
+        int flatStride;
+        /** The flat values of the batch's triangles, {@link #flatStride} each. */
+        double[] batchFlats = new double[VertexLayout.MAX_FLATS * BATCH];
+        /** The flat values of the triangle being culled and clipped. */
+        final double[] flat = new double[VertexLayout.MAX_FLATS];
     }
 
     private final Scratch[] scratch;
@@ -110,6 +122,8 @@ final class ChunkGeometry {
         w.clipper.layout(layout);
         int clipStride = layout.clipStride();
         w.clipStride = clipStride;
+        int flatStride = layout.flats();
+        w.flatStride = flatStride;
         PieceBudget budget = in.budget();
         tess.configure(in.viewport(), in.settings().tessellation());
         tess.budget(budget);
@@ -140,7 +154,7 @@ final class ChunkGeometry {
             double[] b = w.batch;
             int stride = 3 * clipStride;
             for (int i = 0; i < n; i++) {
-                w.sink.triangle(w.batchIds[i], w.batchMaterials[i]);
+                w.sink.triangle(w.batchIds[i], w.batchMaterials[i], w.batchFlats, i * flatStride);
                 int o = i * stride;
                 int firstPiece = chunk.out.count();
                 tess.process(b, o, o + clipStride, o + 2 * clipStride, split, w.sink);
@@ -158,7 +172,7 @@ final class ChunkGeometry {
                         int maxLevel = trilinear ? draws.textures()[material].mipChain().maxLevel() : 0;
                         int ps = layout.projectedStride();
                         int g = chunk.trees.add(tess.vertices(), 0, ps, 2 * ps, w.batchIds[i], material,
-                                tess.splitTree(), chunk.out, firstPiece, maxLevel);
+                                w.batchFlats, i * flatStride, tess.splitTree(), chunk.out, firstPiece, maxLevel);
                         ScreenTriangles inputs = chunk.trees.inputs();
                         chunk.commands.add(Commands.TREE, g, inputs.firstRow(g), inputs.endRow(g));
                     }
@@ -199,6 +213,7 @@ final class ChunkGeometry {
         double[] corner = w.corners;
         VertexColours colours = in.colours();
         boolean carriesColour = in.layout().varyings() > COLOUR_SLOT;
+        boolean flatColour = in.layout().flats() >= FLAT_COLOUR + 3;
         Surface[] surfaces = draws.surfaces();
         int c1 = CORNER;
         int c2 = 2 * CORNER;
@@ -216,9 +231,6 @@ final class ChunkGeometry {
                     || !loadCorner(corner, c2, clip, p2, uvs, cornerUvs[c + 2], tex)) {
                 chunk.invalid++;
                 continue;
-            }
-            if (carriesColour) {
-                loadColours(corner, colours, d, c, surfaces[material]);
             }
             int f0 = Clipper.frustumCode(corner[X], corner[Y], corner[Z], corner[W]);
             int f1 = Clipper.frustumCode(corner[c1 + X], corner[c1 + Y], corner[c1 + Z], corner[c1 + W]);
@@ -249,6 +261,12 @@ final class ChunkGeometry {
             if (cullBack && det < 0) {
                 chunk.culledBack++;
                 continue;
+            }
+            // Colours only for what survived culling: about half of a closed mesh faces away.
+            if (carriesColour) {
+                loadColours(corner, colours, d, c, surfaces[material]);
+            } else if (flatColour) {
+                loadFlatColour(w.flat, colours, d, c, surfaces[material]);
             }
             int g = clipper.clipCode(corner[X], corner[Y], corner[Z], corner[W])
                     | clipper.clipCode(corner[c1 + X], corner[c1 + Y], corner[c1 + Z], corner[c1 + W])
@@ -302,21 +320,38 @@ final class ChunkGeometry {
      * one), whose texel then shows unchanged.
      */
     private static void loadColours(double[] dst, VertexColours colours, int d, int c, Surface surface) {
-        boolean lit = colours != null && surface.lit();
-        float[] rgb = lit ? colours.colours() : null;
+        VertexColours lit = surface.lit() ? colours : null;
         boolean flat = surface.shading() == Shading.FLAT;
         for (int k = 0; k < 3; k++) {
-            int o = k * CORNER + VertexLayout.varying(COLOUR_SLOT);
-            if (lit) {
-                int i = colours.index(d, c + k, flat);
-                dst[o] = rgb[i];
-                dst[o + 1] = rgb[i + 1];
-                dst[o + 2] = rgb[i + 2];
-            } else {
-                dst[o] = 1;
-                dst[o + 1] = 1;
-                dst[o + 2] = 1;
-            }
+            putColour(dst, k * CORNER + VertexLayout.varying(COLOUR_SLOT), lit, d, c + k, flat);
+        }
+    }
+
+    /**
+     * Writes the lit colour r, g, b of the last of mesh corners {@code c .. c+2} of draw {@code d} (OpenGL's
+     * provoking vertex, {@link Shading#FLAT}) into flat values {@link #FLAT_COLOUR}.. of {@code dst}, or
+     * white for an unlit material ({@code colours} null in a frame without a lit one). Only frames whose
+     * lit materials are all flat carry their colour so ({@link FrameGeometry#FLAT_LIT_LAYOUT}).
+     */
+    private static void loadFlatColour(double[] dst, VertexColours colours, int d, int c, Surface surface) {
+        putColour(dst, FLAT_COLOUR, surface.lit() ? colours : null, d, c + 2, true);
+    }
+
+    /**
+     * Writes at {@code dst[o..o+2]} the colour of draw {@code d}'s corner {@code c} (its triangle's last
+     * corner's with {@code flat}), or white when {@code colours} is null.
+     */
+    private static void putColour(double[] dst, int o, VertexColours colours, int d, int c, boolean flat) {
+        if (colours != null) {
+            float[] rgb = colours.colours();
+            int i = colours.index(d, c, flat);
+            dst[o] = rgb[i];
+            dst[o + 1] = rgb[i + 1];
+            dst[o + 2] = rgb[i + 2];
+        } else {
+            dst[o] = 1;
+            dst[o + 1] = 1;
+            dst[o + 2] = 1;
         }
     }
 
@@ -382,6 +417,7 @@ final class ChunkGeometry {
             w.batch = Arrays.copyOf(w.batch, w.batch.length * 2);
             w.batchIds = Arrays.copyOf(w.batchIds, w.batchIds.length * 2);
             w.batchMaterials = Arrays.copyOf(w.batchMaterials, w.batchMaterials.length * 2);
+            w.batchFlats = Arrays.copyOf(w.batchFlats, w.batchFlats.length * 2);
         }
         int o = count * stride;
         VertexLayout.copy(src, a, w.batch, o, cs);
@@ -389,6 +425,10 @@ final class ChunkGeometry {
         VertexLayout.copy(src, c, w.batch, o + 2 * cs, cs);
         w.batchIds[count] = id;
         w.batchMaterials[count] = material;
+        int fs = w.flatStride;
+        if (fs != 0) {
+            System.arraycopy(w.flat, 0, w.batchFlats, count * fs, fs);
+        }
         return count + 1;
     }
 }

@@ -9,6 +9,7 @@ import dev.trisect.mesh.Mesh;
 import dev.trisect.raster.PixelState;
 import dev.trisect.raster.QuadRaster;
 import dev.trisect.render.Fog;
+import dev.trisect.render.Shading;
 import dev.trisect.texture.Texture;
 import java.util.Arrays;
 import java.util.Objects;
@@ -55,6 +56,8 @@ public final class Draws {
     private boolean anyLit;
     /** Whether any material's pixel state modulates its texel by the colour varyings. */
     private boolean anyModulate;
+    /** Whether any lit material is shaded smooth: its colour then varies over a triangle. */
+    private boolean anySmooth;
     private Fog fog;
     /** The frame's screen-aligned quads: billboards, glyphs, text backdrops, in drawing order. */
     private final QuadRaster quads = new QuadRaster();
@@ -77,6 +80,7 @@ public final class Draws {
         lights = Lights.NONE;
         anyLit = false;
         anyModulate = false;
+        anySmooth = false;
         fog = null;
     }
 
@@ -95,11 +99,20 @@ public final class Draws {
     }
 
     /**
-     * Whether the frame's vertices carry a colour in varyings 2..4: some material is lit or modulates
-     * its texel by the colour ({@link PixelState#MODULATE}).
+     * Whether the frame carries a colour (in varyings 2..4, or once per triangle without a smooth
+     * material, {@link #anySmooth}): some material is lit or modulates its texel by the colour
+     * ({@link PixelState#MODULATE}).
      */
     public boolean carriesColour() {
         return anyModulate;
+    }
+
+    /**
+     * Whether some lit material is shaded {@link Shading#SMOOTH}: without one, every triangle of the
+     * frame has one colour (its provoking vertex's, or white), which it may carry once per triangle.
+     */
+    public boolean anySmooth() {
+        return anySmooth;
     }
 
     /** Whether any draw has a lit material. */
@@ -133,6 +146,7 @@ public final class Draws {
                 anyLit = true;
                 this.states[m0 + i] |= PixelState.MODULATE;
                 anyModulate = true;
+                anySmooth |= surfaces[i].shading() == Shading.SMOOTH;
             }
         }
         worlds[count - 1] = world;

@@ -27,6 +27,11 @@ final class FrameGeometry {
 
     /** The layout of a lit frame: s, t, then the lit colour r, g, b (0..1) in varyings 2..4. */
     static final VertexLayout LIT_LAYOUT = VertexLayout.of(5);
+    /**
+     * The layout of a lit frame without a smooth material: s, t, and the triangle's one colour r, g, b
+     * (0..1) as flat values 0..2, once per triangle instead of in each corner, clipped and split never.
+     */
+    static final VertexLayout FLAT_LIT_LAYOUT = VertexLayout.of(2, 3);
 
     private final ClipSpace clipSpace = new ClipSpace();
     private final VertexColours vertexColours = new VertexColours();
@@ -67,8 +72,10 @@ final class FrameGeometry {
         clipSpace.transform(draws, pool);
         vertexColours.compute(draws, pool);
         // Frames with a lit (or otherwise modulated) material carry each corner's colour r, g, b as
-        // varyings 2..4; the others keep the textured layout.
-        VertexLayout layout = draws.carriesColour() ? LIT_LAYOUT : VertexLayout.TEXTURED;
+        // varyings 2..4, or each triangle's when no lit material is smooth (every triangle has one
+        // colour then); the others keep the textured layout.
+        VertexLayout layout = !draws.carriesColour() ? VertexLayout.TEXTURED
+                : draws.anySmooth() ? LIT_LAYOUT : FLAT_LIT_LAYOUT;
         VertexColours colours = vertexColours.lit() ? vertexColours : null;
         long transformNanos = System.nanoTime() - start;
         int triangles = draws.triangleCount();

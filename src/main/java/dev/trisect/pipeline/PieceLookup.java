@@ -45,12 +45,19 @@ final class PieceLookup {
         for (int k = 0; k < 3; k++) {
             System.arraycopy(t.attributes(), a + k * cs, qst, 3 * k, 3);
         }
-        // A frame carrying colours holds r, g, b in varyings 2..4: corner slots 3..5 after 1/w, s, t.
+        // A frame carrying colours holds r, g, b in varyings 2..4: corner slots 3..5 after 1/w, s, t;
+        // or, without a smooth material, once per triangle in flat values 0..2, every corner's.
         double[] rgb = null;
+        int fs = t.layout().flats();
         if (t.layout().varyings() > ChunkGeometry.COLOUR_SLOT) {
             rgb = new double[9];
             for (int k = 0; k < 3; k++) {
                 System.arraycopy(t.attributes(), a + k * cs + 1 + ChunkGeometry.COLOUR_SLOT, rgb, 3 * k, 3);
+            }
+        } else if (fs >= ChunkGeometry.FLAT_COLOUR + 3) {
+            rgb = new double[9];
+            for (int k = 0; k < 3; k++) {
+                System.arraycopy(t.flats(), i * fs + ChunkGeometry.FLAT_COLOUR, rgb, 3 * k, 3);
             }
         }
         return new PieceInfo(index, t.ids()[i], t.levels()[i], t.perPixel()[i],

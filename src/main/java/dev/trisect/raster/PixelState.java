@@ -1,5 +1,7 @@
 package dev.trisect.raster;
 
+import dev.trisect.tessellate.VertexLayout;
+
 /**
  * What the pixel loops do with a material's fragments: a small int per frame material, kept beside
  * its texture ({@link Rasterizer#states}), made of two fields, each one of the constants below:
@@ -29,6 +31,11 @@ public final class PixelState {
     public static final int BLEND = 2 << 2;
     /** The first varying slot a {@link #MODULATE} colour reads (r; g and b follow). */
     public static final int COLOUR_SLOT = 2;
+    /**
+     * The first flat value ({@link VertexLayout#flats()}) holding a triangle's one colour (r; g and b
+     * follow) in a layout with no colour varyings: what a {@link #MODULATE} colour reads there.
+     */
+    public static final int FLAT_COLOUR = 0;
 
     /**
      * Colour: the texel times the triangle's one colour, the same at its three corners (flat shading,
@@ -75,5 +82,14 @@ public final class PixelState {
     /** The varyings a triangle's layout needs for {@code state}: s, t, and r, g, b when it modulates. */
     public static int varyingsNeeded(int state) {
         return colour(state) == MODULATE ? COLOUR_SLOT + 3 : COLOUR_SLOT;
+    }
+
+    /**
+     * Whether triangles of {@code layout} can be filled in {@code state}: a modulating state needs a
+     * colour, in varyings ({@link #varyingsNeeded}) or once per triangle in flat values
+     * {@link #FLAT_COLOUR}..+2.
+     */
+    public static boolean carried(int state, VertexLayout layout) {
+        return varyingsNeeded(state) <= layout.varyings() || layout.flats() >= FLAT_COLOUR + 3;
     }
 }

@@ -62,14 +62,14 @@ public final class Rasterizer {
      * The pixel state of {@code material} for a triangle of {@code triangles}, checked against their
      * layout once per triangle.
      *
-     * @throws IllegalStateException when the state modulates and the layout has no colour varyings
+     * @throws IllegalStateException when the state modulates and the layout carries no colour
      */
     private int state(ScreenTriangles triangles, int material) {
         int state = states == null ? 0 : states[material];
-        if (PixelState.varyingsNeeded(state) > triangles.layout().varyings()) {
+        if (!PixelState.carried(state, triangles.layout())) {
             throw new IllegalStateException("material " + material + " modulates by a colour (pixel state "
                     + state + ") but its triangles carry " + triangles.layout().varyings()
-                    + " varyings: the frame needs VertexLayout.of(5)");
+                    + " varyings and no flat colour: the frame needs VertexLayout.of(5) or VertexLayout.of(2, 3)");
         }
         return state;
     }

@@ -10,7 +10,8 @@ import java.util.Arrays;
  * <p>Per triangle: corners snapped to the {@link FixedPoint} grid (for coverage), the same corners
  * unsnapped in pixels (for attribute planes, so snapping never bends the texture mapping), and per
  * corner {@code 1/w} (view-space units^-1) and the varyings of its {@link VertexLayout} (texel
- * coordinates s, t first; {@link #layout}). Plus the input triangle's index
+ * coordinates s, t first; {@link #layout}), and once per triangle the layout's flat values, if it has
+ * any ({@link #flats()}: a flat-shaded triangle's colour). Plus the input triangle's index
  * (for the UV output), its material (the texture to sample), and whether it must be filled per pixel
  * (a tessellated piece a cap stopped short of its policy, see {@link #perPixel()}). The arrays grow as needed and are
  * reused from frame to frame; {@link #shrinkTo} gives storage back after a spike.
@@ -40,6 +41,9 @@ public final class ScreenTriangles {
     private int[] fixed = new int[FIXED_STRIDE * 1024];
     private double[] screen = new double[SCREEN_STRIDE * 1024];
     private double[] attributes = new double[3 * cornerStride * 1024];
+    /** Doubles per triangle in {@link #flats}: the layout's flat values. */
+    private int flatStride;
+    private double[] flats = new double[0];
     private int[] ids = new int[1024];
     private int[] materials = new int[1024];
     private boolean[] perPixel = new boolean[1024];
@@ -69,6 +73,10 @@ public final class ScreenTriangles {
             // (5 and 2 varyings) does not reallocate it at every switch.
             if (attributes.length < 3 * cornerStride * ids.length) {
                 attributes = new double[3 * cornerStride * ids.length];
+            }
+            flatStride = vertexLayout.flats();
+            if (flats.length < flatStride * ids.length) {
+                flats = new double[flatStride * ids.length];
             }
         }
     }
@@ -120,6 +128,14 @@ public final class ScreenTriangles {
      */
     public double[] attributes() {
         return attributes;
+    }
+
+    /**
+     * Per triangle, the {@link VertexLayout#flats()} flat values of the {@link #layout()}: triangle i's at
+     * {@code i * layout().flats()}. Empty for a layout without them.
+     */
+    public double[] flats() {
+        return flats;
     }
 
     /** Input triangle index of each triangle. */
@@ -238,9 +254,22 @@ public final class ScreenTriangles {
      */
     public void add(double[] v, int a, int b, int c, int id, int material, boolean fallback, int level,
                     int link0, int link1, int link2) {
+        add(v, a, b, c, id, material, fallback, level, link0, link1, link2, null, 0);
+    }
+
+    /**
+     * As the other form, with the triangle's flat values ({@link #flats()}) copied from
+     * {@code flat[flatAt..]}: as many as the layout has (none read when it has none; null then allowed).
+     */
+    public void add(double[] v, int a, int b, int c, int id, int material, boolean fallback, int level,
+                    int link0, int link1, int link2, double[] flat, int flatAt) {
         int sx = layout.screenX();
         int o = append(v[a + sx], v[a + sx + 1], v[b + sx], v[b + sx + 1], v[c + sx], v[c + sx + 1], id, material,
                 fallback, level, link0, link1, link2);
+        int fs = flatStride;
+        if (fs != 0) {
+            System.arraycopy(flat, flatAt, flats, fs * (count - 1), fs);
+        }
         corner(v, a, o);
         corner(v, b, o + cornerStride);
         corner(v, c, o + 2 * cornerStride);
@@ -306,6 +335,7 @@ public final class ScreenTriangles {
         fixed = Arrays.copyOf(fixed, n * FIXED_STRIDE);
         screen = Arrays.copyOf(screen, n * SCREEN_STRIDE);
         attributes = Arrays.copyOf(attributes, n * 3 * cornerStride);
+        flats = Arrays.copyOf(flats, n * flatStride);
         ids = Arrays.copyOf(ids, n);
         materials = Arrays.copyOf(materials, n);
         perPixel = Arrays.copyOf(perPixel, n);

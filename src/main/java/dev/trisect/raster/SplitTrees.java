@@ -206,8 +206,17 @@ public final class SplitTrees {
      */
     public int add(double[] v, int a, int b, int c, int id, int material, SplitTree tree,
                     ScreenTriangles pieceTriangles, int firstPiece, int maxLevel) {
+        return add(v, a, b, c, id, material, null, 0, tree, pieceTriangles, firstPiece, maxLevel);
+    }
+
+    /**
+     * As the other form, with the input triangle's flat values ({@link ScreenTriangles#flats()}) from
+     * {@code flat[flatAt..]}, as many as the layout has.
+     */
+    public int add(double[] v, int a, int b, int c, int id, int material, double[] flat, int flatAt, SplitTree tree,
+                   ScreenTriangles pieceTriangles, int firstPiece, int maxLevel) {
         inputs.add(v, a, b, c, id, material, false, 0, ScreenTriangles.OUTER, ScreenTriangles.OUTER,
-                ScreenTriangles.OUTER);
+                ScreenTriangles.OUTER, flat, flatAt);
         return addTree(tree, pieceTriangles, firstPiece, maxLevel);
     }
 

@@ -58,8 +58,9 @@ final class TriangleSetup {
      * {@link PixelState#COLOUR_SLOT}..+2) one colour, within {@link #SAME_COLOUR}: flat shading, a face lit
      * evenly, a colour carried through clipping. Then {@link #red16}, {@link #green16}, {@link #blue16}
      * hold it (corner 0's) and the colour planes are not fitted — only a {@link PixelState#CONSTANT} loop,
-     * which reads no colour plane, fills such a triangle with a modulating material. False for a layout
-     * without colour varyings and after {@link #affinePlanes}.
+     * which reads no colour plane, fills such a triangle with a modulating material. Always true for a
+     * layout carrying its colour in flat values ({@link PixelState#FLAT_COLOUR}); false for a layout
+     * with no colour and after {@link #affinePlanes}.
      */
     boolean constantColour;
     /**
@@ -206,6 +207,16 @@ final class TriangleSetup {
             } else {
                 sPlane.fit(x0, y0, ex1, ey1, ex2, ey2, inv, s0, s1, s2);
                 tPlane.fit(x0, y0, ex1, ey1, ex2, ey2, inv, t0, t1, t2);
+            }
+            int fs = triangles.layout().flats();
+            if (oneColour && fs >= PixelState.FLAT_COLOUR + 3) {
+                // A flat-lit frame's colour, once per triangle: one colour by construction.
+                double[] flat = triangles.flats();
+                int f = tri * fs + PixelState.FLAT_COLOUR;
+                constantColour = true;
+                red16 = Modulate.f16(flat[f]);
+                green16 = Modulate.f16(flat[f + 1]);
+                blue16 = Modulate.f16(flat[f + 2]);
             }
             return;
         }

@@ -14,6 +14,12 @@ package dev.trisect.tessellate;
  * projected vertex:  x y z w | v0 .. v(n-1) | sx sy    {@link #projectedStride()} = 6 + n
  * </pre>
  *
+ * <p>A layout may also carry <em>flat</em> values ({@link #flats()}): values constant over a triangle,
+ * as GLSL's {@code flat} qualifier and OpenGL's flat shading take the provoking vertex's, held once
+ * per triangle beside it instead of in every vertex (a flat-shaded triangle's lit colour r, g, b).
+ * They are in no vertex, so the clipper and the tessellator never see them: a clipped or split
+ * triangle's pieces keep their triangle's.
+ *
  * <p>{@link #TEXTURED} is the layout of a textured frame (the varyings s, t alone); its offsets are
  * also the static constants below, {@link #CLIP_STRIDE}, {@link #SCREEN_X}, {@link #SCREEN_Y},
  * {@link #PROJECTED_STRIDE}, for code that knows it works in that layout.
@@ -34,7 +40,7 @@ public final class VertexLayout {
     /** The most varyings a layout may have. */
     public static final int MAX_VARYINGS = 16;
     /** The layout of a textured frame: the varyings s and t alone. */
-    public static final VertexLayout TEXTURED = new VertexLayout(2);
+    public static final VertexLayout TEXTURED = new VertexLayout(2, 0);
     /** One instance per size, so that layouts compare by identity. */
     private static final VertexLayout[] LAYOUTS = new VertexLayout[MAX_VARYINGS + 1];
     /** {@link #TEXTURED}'s doubles per clip vertex: x, y, z, w, s, t. */
@@ -47,17 +53,30 @@ public final class VertexLayout {
     /** {@link #TEXTURED}'s doubles per projected vertex: x, y, z, w, s, t, screen x, screen y. */
     public static final int PROJECTED_STRIDE = 8;
 
+    /** The most flat values a layout may have. */
+    public static final int MAX_FLATS = 4;
+    /** Layouts with flat values, by varyings and flat values: one instance each, as {@link #LAYOUTS}. */
+    private static final VertexLayout[][] FLAT_LAYOUTS = new VertexLayout[MAX_VARYINGS + 1][MAX_FLATS + 1];
+
     private final int varyings;
+    private final int flats;
 
     static {
         LAYOUTS[2] = TEXTURED;
-        for (int n = 3; n <= MAX_VARYINGS; n++) {
-            LAYOUTS[n] = new VertexLayout(n);
+        for (int n = 2; n <= MAX_VARYINGS; n++) {
+            if (n > 2) {
+                LAYOUTS[n] = new VertexLayout(n, 0);
+            }
+            FLAT_LAYOUTS[n][0] = LAYOUTS[n];
+            for (int f = 1; f <= MAX_FLATS; f++) {
+                FLAT_LAYOUTS[n][f] = new VertexLayout(n, f);
+            }
         }
     }
 
-    private VertexLayout(int varyings) {
+    private VertexLayout(int varyings, int flats) {
         this.varyings = varyings;
+        this.flats = flats;
     }
 
     /**
@@ -71,6 +90,25 @@ public final class VertexLayout {
                     + " varyings (s and t first), got " + varyings);
         }
         return LAYOUTS[varyings];
+    }
+
+    /**
+     * The layout with {@code varyings} slots, s and t first, and {@code flats} flat values per triangle.
+     *
+     * @throws IllegalArgumentException unless 2 &lt;= varyings &lt;= {@link #MAX_VARYINGS} and
+     *                                  0 &lt;= flats &lt;= {@link #MAX_FLATS}
+     */
+    public static VertexLayout of(int varyings, int flats) {
+        if (flats < 0 || flats > MAX_FLATS) {
+            throw new IllegalArgumentException("a vertex layout has 0 to " + MAX_FLATS + " flat values, got " + flats);
+        }
+        of(varyings); // checks the varyings
+        return FLAT_LAYOUTS[varyings][flats];
+    }
+
+    /** Values constant over a triangle, held once per triangle (not in its vertices); 0 for most layouts. */
+    public int flats() {
+        return flats;
     }
 
     /** Values interpolated across a triangle per vertex, s and t included. */
@@ -127,6 +165,6 @@ public final class VertexLayout {
 
     @Override
     public String toString() {
-        return "VertexLayout[" + varyings + " varyings]";
+        return "VertexLayout[" + varyings + " varyings" + (flats > 0 ? ", " + flats + " flat]" : "]");
     }
 }

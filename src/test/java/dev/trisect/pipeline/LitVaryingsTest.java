@@ -2,6 +2,7 @@ package dev.trisect.pipeline;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.light.Lights;
 import dev.trisect.light.Surface;
@@ -11,9 +12,12 @@ import dev.trisect.mesh.MeshBuilder;
 import dev.trisect.raster.ScreenTriangles;
 import dev.trisect.render.Colour;
 import dev.trisect.render.CullMode;
+import dev.trisect.render.Framebuffer;
 import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.render.Shading;
+import dev.trisect.render.SplitPolicy;
+import dev.trisect.render.TessellationSettings;
 import dev.trisect.tessellate.VertexLayout;
 import dev.trisect.texture.Texture;
 import java.util.ArrayList;
@@ -21,10 +25,10 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 
 /**
- * A lit frame's geometry carries each corner's lit colour to the pixel stage as varyings 2..4 (r, g,
- * b), values computed here by hand from OpenGL's equation: per corner with smooth shading, the
- * triangle's last corner's in all three with flat shading, white for an unlit material; a frame with
- * no lit material keeps the textured layout.
+ * A lit frame's geometry carries each corner's lit colour to the pixel stage, values computed here by
+ * hand from OpenGL's equation: as varyings 2..4 (r, g, b) per corner when a material is smooth; once
+ * per triangle, as flat values 0..2, when none is (the triangle's last corner's); white for an unlit
+ * material; a frame with no lit material keeps the textured layout.
  */
 class LitVaryingsTest {
     private static final Texture WHITE = Texture.solid("white", 0xFFFFFFFF);
@@ -53,19 +57,31 @@ class LitVaryingsTest {
         return new double[] {0.1 + att * lambert, 0.1, 0.1 + att * lambert * 0.5};
     }
 
-    /** The r, g, b varyings of every corner of every screen triangle of the frame. */
-    private static List<double[]> cornerColours(Draws draws) {
+    /** The r, g, b varyings of every corner of every screen triangle of the frame, in {@code layout}. */
+    private static List<double[]> cornerColours(Draws draws, VertexLayout layout) {
+        return cornerColours(draws, layout, SETTINGS);
+    }
+
+    /**
+     * The colour of every corner of every screen triangle (tessellated: every piece, then every split
+     * input triangle) of the frame, in {@code layout}: its r, g, b varyings, or its triangle's flat ones.
+     */
+    private static List<double[]> cornerColours(Draws draws, VertexLayout layout, RenderSettings settings) {
         FrameGeometry geometry = new FrameGeometry(1);
         List<double[]> out = new ArrayList<>();
         try (WorkerPool pool = new WorkerPool(1, "lit-varyings-test")) {
-            FrameGeometry.Result r = geometry.run(draws, SETTINGS, 64, 64, pool);
+            FrameGeometry.Result r = geometry.run(draws, settings, 64, 64, pool);
             for (int c = 0; c < r.chunkCount(); c++) {
-                ScreenTriangles st = geometry.chunks().get(c).out;
-                assertSame(FrameGeometry.LIT_LAYOUT, st.layout());
-                double[] a = st.attributes();
-                for (int k = 0; k < 3 * st.count(); k++) {
-                    int o = k * st.cornerStride() + 1 + ChunkGeometry.COLOUR_SLOT;
-                    out.add(new double[] {a[o], a[o + 1], a[o + 2]});
+                for (ScreenTriangles st : List.of(geometry.chunks().get(c).out, geometry.chunks().get(c).trees.inputs())) {
+                    assertSame(layout, st.layout());
+                    double[] a = st.attributes();
+                    double[] f = st.flats();
+                    for (int k = 0; k < 3 * st.count(); k++) {
+                        int o = layout.flats() > 0 ? k / 3 * layout.flats() + ChunkGeometry.FLAT_COLOUR
+                                : k * st.cornerStride() + 1 + ChunkGeometry.COLOUR_SLOT;
+                        double[] from = layout.flats() > 0 ? f : a;
+                        out.add(new double[] {from[o], from[o + 1], from[o + 2]});
+                    }
                 }
             }
         }
@@ -92,7 +108,7 @@ class LitVaryingsTest {
 
     @Test
     void smoothCornersCarryTheirOwnColour() {
-        List<double[]> got = cornerColours(draws(Shading.SMOOTH, null));
+        List<double[]> got = cornerColours(draws(Shading.SMOOTH, null), FrameGeometry.LIT_LAYOUT);
         assertEquals(3, got.size());
         for (int k = 0; k < 3; k++) {
             assertColour(expected(CORNERS[k]), got.get(k));
@@ -100,8 +116,8 @@ class LitVaryingsTest {
     }
 
     @Test
-    void flatCornersAllCarryTheLastCornersColour() {
-        List<double[]> got = cornerColours(draws(Shading.FLAT, null));
+    void aFlatFrameCarriesTheLastCornersColourOncePerTriangle() {
+        List<double[]> got = cornerColours(draws(Shading.FLAT, null), FrameGeometry.FLAT_LIT_LAYOUT);
         assertEquals(3, got.size());
         for (double[] c : got) {
             assertColour(expected(CORNERS[2]), c);
@@ -109,8 +125,55 @@ class LitVaryingsTest {
     }
 
     @Test
+    void flatCornersBesideASmoothMaterialAllCarryTheLastCornersColour() {
+        Surface smooth = new Surface(Shading.SMOOTH, Colour.WHITE, new Colour(1, 1, 0.5));
+        List<double[]> got = cornerColours(draws(Shading.FLAT, smooth), FrameGeometry.LIT_LAYOUT);
+        assertEquals(6, got.size());
+        for (int k = 0; k < 3; k++) {
+            assertColour(expected(CORNERS[2]), got.get(k));
+            assertColour(expected(CORNERS[k]), got.get(3 + k));
+        }
+    }
+
+    @Test
+    void aFlatFramesPiecesAndSplitTrianglesKeepTheirTrianglesColour() {
+        // Split into many pieces: edges of at most 2 pixels over a triangle 16 pixels wide.
+        RenderSettings split = SETTINGS.withMode(RenderMode.TESSELLATED).withTessellation(
+                TessellationSettings.defaults().withPolicy(SplitPolicy.EDGE).withMaxEdge(2));
+        Draws draws = draws(Shading.FLAT, null);
+        List<double[]> got = cornerColours(draws, FrameGeometry.FLAT_LIT_LAYOUT, split);
+        assertTrue(got.size() > 6, "pieces and a split input triangle");
+        for (double[] c : got) {
+            assertColour(expected(CORNERS[2]), c);
+        }
+    }
+
+    @Test
+    void theInspectorFindsAFlatFramesColourAtEveryCorner() {
+        Framebuffer frame = new Framebuffer(64, 64);
+        frame.recordUv(true);
+        try (FrameRenderer r = new FrameRenderer(1)) {
+            r.render(draws(Shading.FLAT, null), SETTINGS, frame);
+            // NDC (0.1, 0.1) lies inside the triangle: pixel (35, 28) of 64 x 64, y down.
+            int x = 35;
+            int y = 28;
+            int id = frame.ids()[y * 64 + x] - 1;
+            assertEquals(0, id, "the triangle covers the pixel");
+            PieceInfo piece = r.drawn().pieceAt(x, y, id, frame.depth()[y * 64 + x]);
+            for (int k = 0; k < 3; k++) {
+                assertColour(expected(CORNERS[2]), java.util.Arrays.copyOfRange(piece.colours(), 3 * k, 3 * k + 3));
+            }
+        }
+    }
+
+    @Test
     void anUnlitMaterialInALitFrameIsWhite() {
-        List<double[]> got = cornerColours(draws(Shading.SMOOTH, Surface.UNLIT));
+        List<double[]> got = cornerColours(draws(Shading.SMOOTH, Surface.UNLIT), FrameGeometry.LIT_LAYOUT);
+        assertEquals(6, got.size());
+        for (int k = 3; k < 6; k++) {
+            assertColour(new double[] {1, 1, 1}, got.get(k));
+        }
+        got = cornerColours(draws(Shading.FLAT, Surface.UNLIT), FrameGeometry.FLAT_LIT_LAYOUT);
         assertEquals(6, got.size());
         for (int k = 3; k < 6; k++) {
             assertColour(new double[] {1, 1, 1}, got.get(k));
