@@ -3,17 +3,18 @@
 # smooth: PSNR (dB) of `compare` on demo, boxes, sphere (each exported to OBJ with its camera) and the
 # head of LightAgainstOpenGlTest (src/test/resources/dev/trisect/light/head.obj, its camera there),
 # lit by a directional light, a coloured point light with attenuation 1,0.2,0.05 and a coloured
-# ambient (the tests' "both-smooth"), nearest sampling. Each scene three times: unlit with its textures
+# ambient (the tests' "both-smooth"), nearest sampling (or FILTER's). Each scene three times: unlit with its textures
 # (what the texel flips alone give), lit with its textures, and lit with a white texture on every
 # material, so that only the light's interpolation differs between the paths (no texel flips). Prints
 # one line per scene, case and path.
 #
-#   scripts/light/psnr.sh [WxH] [MAX_ERROR]     (default 1280x720, 0.5)
+#   [FILTER=nearest|bilinear|trilinear] scripts/light/psnr.sh [WxH] [MAX_ERROR]     (default nearest, 1280x720, 0.5)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 JAR=${JAR:-target/trisect.jar}
 size=${1:-1280x720}
 err=${2:-0.5}
+filter=${FILTER:-nearest}
 [[ -f $JAR ]] || mvn -B -q package -DskipTests
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 printf 'P3\n1 1\n255\n255 255 255\n' >"$tmp/white.ppm"
@@ -34,7 +35,7 @@ grep '^frame ' src/test/resources/dev/trisect/light/frames.txt | while read -r _
     if [[ $case == unlit ]]; then lit=(--size "$size" --max-error "$err"); fi
     if [[ $case == lit-white ]]; then tex=(--texture "$tmp/white.ppm"); else tex=("${textured[@]}"); fi
     for mode in spans tessellated; do
-      extra=(); [[ $mode == tessellated ]] && extra=(--split error)
+      extra=(--filter "$filter"); [[ $mode == tessellated ]] && extra+=(--split error)
       psnr=$(java -jar "$JAR" compare --obj "$obj" "${tex[@]}" --eye "$eye" --target "$target" --far "$far" \
         "${lit[@]}" --mode "$mode" "${extra[@]}" | sed -n 's/.*"psnr_db":\([^,}]*\).*/\1/p')
       # Identical images have no PSNR (compare prints null): infinite.
