@@ -207,6 +207,13 @@ public final class LoopGenerator {
         return b.append(header.substring(end)).toString();
     }
 
+    /**
+     * The dispatch: {@code fill} chooses by source, a method per source by pixel state, a method per
+     * source and state by division and recording, each small enough for C2 to inline where it is hot,
+     * so that the per-triangle code calls the loop itself. One method of them all (a switch over every
+     * loop, 5 kB of bytecode) was never inlined: a call more per triangle and band, with arguments on
+     * the stack (docs/performance.md, "All four paths, three filters, four scenes").
+     */
     private static String dispatcher(String params, boolean divides, boolean hasIds, boolean stated,
                                      List<LoopPart.Combination> all) {
         StringBuilder args = new StringBuilder();
@@ -214,46 +221,59 @@ public final class LoopGenerator {
             String[] words = p.trim().split(" ");
             args.append(args.length() == 0 ? "" : ", ").append(words[words.length - 1]);
         }
+        String choice = ("boolean uv, " + (hasIds ? "boolean ids, " : "") + (divides ? "boolean divide," : "")).trim();
+        String choiceArgs = "uv, " + (hasIds ? "ids, " : "") + (divides ? "divide, " : "");
         StringBuilder b = new StringBuilder("\n");
         b.append("    /**\n     * The loop of colour source {@code source} ({@link ColourSources})")
                 .append(stated ? " and pixel state {@code state}\n     * ({@link PixelState})" : "")
                 .append(", with the UV output when {@code uv}").append(hasIds ? " (and the ids), else the ids when {@code ids}" : "")
                 .append(stated ? " (when the write has them)" : "")
                 .append(divides ? ",\n     * dividing by the interpolated 1/w when {@code divide}" : "")
-                .append(": chosen once per triangle.\n     *\n     * @return pixels written\n     */\n");
-        b.append("    static long fill(int source, ").append(stated ? "int state, " : "").append("boolean uv, ")
-                .append(hasIds ? "boolean ids, " : "")
-                .append(divides ? "boolean divide," : "").append("\n            ").append(params).append(") {\n");
-        b.append("        switch (source) {\n");
-        String indent = stated ? "                        " : "                ";
-        LoopPart last = null;
+                .append(": chosen once per triangle,\n     * by source, then by state, then by the rest, each step small")
+                .append(" enough to be inlined.\n     *\n     * @return pixels written\n     */\n");
+        b.append("    static long fill(int source, ").append(stated ? "int state, " : "").append(choice)
+                .append("\n            ").append(params).append(") {\n        switch (source) {\n");
+        List<LoopPart> sources = new ArrayList<>();
         for (LoopPart.Combination k : all) {
-            if (k.source() != last) {
-                if (last != null && stated) {
-                    b.append("                    default:\n                        throw new IllegalArgumentException(")
-                            .append("\"no loop for pixel state \" + state);\n                }\n");
+            if (!sources.contains(k.source())) {
+                sources.add(k.source());
+                b.append("            case ColourSources.").append(k.source().constant()).append(":\n")
+                        .append("                return fill").append(k.source().name()).append("(")
+                        .append(stated ? "state, " : "").append(choiceArgs).append(args).append(");\n");
+            }
+        }
+        b.append("            default:\n                throw new IllegalArgumentException(\"no colour source \" + source);\n")
+                .append("        }\n    }\n");
+        for (LoopPart s : sources) {
+            b.append("\n    /** {@link #fill} of source ").append(s.name()).append(stated ? ", by pixel state" : "")
+                    .append(". */\n    private static long fill").append(s.name()).append("(")
+                    .append(stated ? "int state, " : "").append(choice).append("\n            ").append(params)
+                    .append(") {\n");
+            b.append(stated ? "        switch (state) {\n" : "");
+            for (LoopPart.Combination k : all) {
+                if (k.source() == s) {
+                    String call = "fill" + k.source().name() + k.colour().name() + k.write().name() + "(" + choiceArgs
+                            + args + ")";
+                    b.append(stated ? "            case " + k.state() + ":\n                return " + call + ";\n"
+                            : "        return " + call + ";\n");
                 }
-                last = k.source();
-                b.append("            case ColourSources.").append(k.source().constant()).append(":\n");
-                b.append(stated ? "                switch (state) {\n" : "");
             }
-            if (stated) {
-                b.append("                    case ").append(k.state()).append(":\n");
-            }
+            b.append(stated ? "            default:\n                throw new IllegalArgumentException("
+                    + "\"no loop for pixel state \" + state);\n        }\n" : "").append("    }\n");
+        }
+        for (LoopPart.Combination k : all) {
+            String indent = "        ";
+            b.append("\n    /** {@link #fill} of ").append(k.source().name()).append(", ").append(k.colour().name())
+                    .append(", ").append(k.write().name()).append(". */\n    private static long fill")
+                    .append(k.source().name()).append(k.colour().name()).append(k.write().name()).append("(")
+                    .append(choice).append("\n            ").append(params).append(") {\n");
             if (divides) {
                 b.append(indent).append("if (divide) {\n").append(indent).append("    return ")
                         .append(call(k.dividing(true), divides, args, indent + "            ")).append(";\n")
                         .append(indent).append("}\n");
             }
-            b.append(indent).append("return ").append(call(k, divides, args, indent + "        ")).append(";\n");
+            b.append(indent).append("return ").append(call(k, divides, args, indent + "        ")).append(";\n    }\n");
         }
-        if (stated) {
-            b.append("                    default:\n                        throw new IllegalArgumentException(")
-                    .append("\"no loop for pixel state \" + state);\n                }\n");
-        }
-        b.append("            default:\n");
-        b.append("                throw new IllegalArgumentException(\"no colour source \" + source);\n");
-        b.append("        }\n    }\n");
         return b.toString();
     }
 
