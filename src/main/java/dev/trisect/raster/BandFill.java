@@ -36,34 +36,49 @@ public final class BandFill {
      */
     public long fill(Framebuffer frame, Commands list, int band, Texture[] textures, boolean perspective,
                      int x0, int y0, int x1, int y1) {
+        if (probe >= 0) {
+            return fillProbed(frame, list, band, textures, perspective, x0, y0, x1, y1);
+        }
+        int[] items = list.bins().items();
+        long written = 0;
+        for (int k = list.bins().start(band), end = list.bins().start(band + 1); k < end; k++) {
+            written += draw(list.command(items[k]), frame, list, textures, perspective, x0, y0, x1, y1);
+        }
+        return written;
+    }
+
+    /** {@link #fill} noting which command writes the probed pixel last. */
+    private long fillProbed(Framebuffer frame, Commands list, int band, Texture[] textures, boolean perspective,
+                            int x0, int y0, int x1, int y1) {
         int[] items = list.bins().items();
         long written = 0;
         int[] colour = frame.colour();
         for (int k = list.bins().start(band), end = list.bins().start(band + 1); k < end; k++) {
-            int command = list.command(items[k]);
-            int ref = Commands.ref(command);
             // The probed pixel's alpha is cleared before each command: every write sets it to 255 (and none
             // reads it), so a command wrote the pixel exactly when the alpha is back; else it is restored.
-            int saved = probe < 0 ? 0 : colour[probe];
-            if (probe >= 0) {
-                colour[probe] = saved & 0xFFFFFF;
-            }
-            written += switch (Commands.kind(command)) {
-                case Commands.TRIANGLE -> rasterizer.fillOne(frame, list.triangles(), ref, textures, perspective,
-                        x0, y0, x1, y1);
-                case Commands.TREE -> rasterizer.fillTree(frame, list.trees(), ref, textures, x0, y0, x1, y1);
-                case Commands.LINE -> LineRaster.rows(list.segments(), ref, frame.colour(), frame.depth(), y0, y1);
-                default -> list.quads().rows(ref, frame.colour(), frame.depth(), y0, y1);
-            };
-            if (probe >= 0) {
-                if (colour[probe] >>> 24 != 0) {
-                    probeWriter = items[k];
-                } else {
-                    colour[probe] = saved;
-                }
+            int saved = colour[probe];
+            colour[probe] = saved & 0xFFFFFF;
+            written += draw(list.command(items[k]), frame, list, textures, perspective, x0, y0, x1, y1);
+            if (colour[probe] >>> 24 != 0) {
+                probeWriter = items[k];
+            } else {
+                colour[probe] = saved;
             }
         }
         return written;
+    }
+
+    /** Draws {@code command} of {@code list} by the loop of its kind; returns the pixels written. */
+    private long draw(int command, Framebuffer frame, Commands list, Texture[] textures, boolean perspective,
+                      int x0, int y0, int x1, int y1) {
+        int ref = Commands.ref(command);
+        return switch (Commands.kind(command)) {
+            case Commands.TRIANGLE -> rasterizer.fillOne(frame, list.triangles(), ref, textures, perspective,
+                    x0, y0, x1, y1);
+            case Commands.TREE -> rasterizer.fillTree(frame, list.trees(), ref, textures, x0, y0, x1, y1);
+            case Commands.LINE -> LineRaster.rows(list.segments(), ref, frame.colour(), frame.depth(), y0, y1);
+            default -> list.quads().rows(ref, frame.colour(), frame.depth(), y0, y1);
+        };
     }
 
     /**

@@ -29,8 +29,12 @@ public final class Rasterizer {
     private final TriangleSetup setup = new TriangleSetup();
     private final SpanSolver solver = new SpanSolver();
     private final TreeFill trees = new TreeFill();
-    /** How {@link #fill} samples textures. */
-    private TextureFilter filter = TextureFilter.NEAREST;
+    /**
+     * The {@link ColourSources} of the texture filter (nearest until {@link #filter} sets one) for a
+     * texture whose sides are powers of two, and for any other: chosen per filter, not per triangle.
+     */
+    private int potSource = ColourSources.NEAREST_POT;
+    private int anySource = ColourSources.NEAREST_ANY;
     /** The span path's largest displacement between knots, pixels; 0: perspective fills divide per pixel. */
     private double knotError;
     /** The {@link PixelState} of each material index, or null: state 0 for every material. */
@@ -45,7 +49,16 @@ public final class Rasterizer {
         if (f == null) {
             throw new IllegalArgumentException("texture filter must not be null");
         }
-        filter = f;
+        potSource = switch (f) {
+            case BILINEAR -> ColourSources.BILINEAR_POT;
+            case TRILINEAR -> ColourSources.TRILINEAR_POT;
+            default -> ColourSources.NEAREST_POT;
+        };
+        anySource = switch (f) {
+            case BILINEAR -> ColourSources.BILINEAR_ANY;
+            case TRILINEAR -> ColourSources.TRILINEAR_ANY;
+            default -> ColourSources.NEAREST_ANY;
+        };
     }
 
     /**
@@ -188,15 +201,7 @@ public final class Rasterizer {
     private int source(Texture texture) {
         int tw = texture.width();
         int th = texture.height();
-        boolean pot = (tw & (tw - 1)) == 0 && (th & (th - 1)) == 0;
-        switch (filter) {
-            case BILINEAR:
-                return pot ? ColourSources.BILINEAR_POT : ColourSources.BILINEAR_ANY;
-            case TRILINEAR:
-                return pot ? ColourSources.TRILINEAR_POT : ColourSources.TRILINEAR_ANY;
-            default:
-                return pot ? ColourSources.NEAREST_POT : ColourSources.NEAREST_ANY;
-        }
+        return (tw & (tw - 1)) == 0 && (th & (th - 1)) == 0 ? potSource : anySource;
     }
 
     /**
