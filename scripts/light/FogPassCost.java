@@ -16,13 +16,13 @@ import java.util.Locale;
 /**
  * What the fog pass alone costs: the scene is drawn once without fog (per-pixel path, one thread),
  * then each round fogs a copy of it with each fog (linear 5..60, exp 0.05, exp2 0.05, haze as
- * LightCost's), timing only {@code FogPass.apply} over the frame, 16 rows a call as the renderer's
- * bands (so the JIT compiles it as it does in a frame), in the thread's CPU time
- * (steadier than wall time on a loaded machine). Prints per fog the median, lowest and highest ms and
- * the median ns per covered pixel. It calls the pass as every build has it ({@code apply(frame, y0,
- * y1)}), so running it on two jars compares two builds' passes; in builds whose pass works on row
- * buffers, that form allocates them at each call where the renderer keeps one set per thread, so
- * their figures include three int arrays of a row's width a call (an upper bound on the pass):
+ * LightCost's), 16 rows a call as the renderer's bands (so the JIT compiles it as it does in a frame)
+ * with one set of working rows kept across calls, as each of the renderer's threads keeps one. Each
+ * band's rows are copied in from the unfogged frame just before the pass (so they are in cache, as
+ * the band's fill leaves them) and only the pass is timed, in the thread's CPU time (steadier than wall
+ * time on a loaded machine). Prints per fog the median, lowest and highest ms and the median ns per
+ * covered pixel. Running it on two jars compares two builds' passes (builds with
+ * {@code FogPass.Rows}, from a15d08d on):
  *
  *   java -cp target/trisect.jar scripts/light/FogPassCost.java SCENE WxH ROUNDS
  */
@@ -50,18 +50,24 @@ public final class FogPassCost {
         Colour haze = new Colour(0.6, 0.7, 0.8);
         Fog[] fogs = {Fog.linear(5, 60, haze), Fog.exp(0.05, haze), Fog.exp2(0.05, haze)};
         Framebuffer frame = new Framebuffer(w, h);
-        System.arraycopy(plain.depth(), 0, frame.depth(), 0, w * h);
         ThreadMXBean cpu = ManagementFactory.getThreadMXBean();
         double[][] ms = new double[fogs.length][rounds];
+        FogPass.Rows[] rows = new FogPass.Rows[fogs.length];
+        for (int f = 0; f < fogs.length; f++) {
+            rows[f] = new FogPass.Rows();
+        }
         for (int round = -10; round < rounds; round++) {
             for (int f = 0; f < fogs.length; f++) {
                 FogPass pass = new FogPass(fogs[f]);
-                System.arraycopy(plain.colour(), 0, frame.colour(), 0, w * h);
-                long t0 = cpu.getCurrentThreadCpuTime();
+                long t = 0;
                 for (int y = 0; y < h; y += BAND) {
-                    pass.apply(frame, y, Math.min(h, y + BAND));
+                    int y1 = Math.min(h, y + BAND);
+                    System.arraycopy(plain.colour(), y * w, frame.colour(), y * w, (y1 - y) * w);
+                    System.arraycopy(plain.depth(), y * w, frame.depth(), y * w, (y1 - y) * w);
+                    long t0 = cpu.getCurrentThreadCpuTime();
+                    pass.apply(frame, y, y1, rows[f]);
+                    t += cpu.getCurrentThreadCpuTime() - t0;
                 }
-                long t = cpu.getCurrentThreadCpuTime() - t0;
                 if (round >= 0) {
                     ms[f][round] = t / 1e6;
                 }

@@ -3,6 +3,7 @@ package dev.trisect.light;
 import dev.trisect.render.Colour;
 import dev.trisect.render.Fog;
 import dev.trisect.render.Framebuffer;
+import java.util.Arrays;
 
 /**
  * Fog over filled rows of a frame, per pixel: each covered pixel's colour C becomes
@@ -14,48 +15,62 @@ import dev.trisect.render.Framebuffer;
  * <p>For opaque surfaces this is fogging every fragment before the depth test, as OpenGL does: the
  * surviving fragment is the pixel's, and its depth is the stored one.
  *
- * <p>A row at a time, in two steps. The first finds each pixel's f in 4096ths into a row of
- * factors; the second blends a copy of the row's colours by them in three small loops of integer
- * arithmetic over arrays at one index, which C2 (JDK 17) compiles to vector instructions (it
- * vectorizes no float-to-int conversion and no table look-up, so the first step stays scalar). Linear
- * fog divides: 4096 f = 4096 (end - z)/(end - start) = a - b/(1/w) in floats (z = w, the eye depth),
- * rounded to the nearest 4096th and clamped; with E = end/(end - start), a's rounding is at most
- * E·2^-12 of a 4096th and the quotient's (b's and the division's) at most E·2^-11, so the floats move
- * it by at most 1.5·E·2^-11 of a 4096th (under 0.5 of one while E is under 680). Exp and exp2 look f up in a table
- * indexed by the stored 1/w's float bits, {@link #STEPS_PER_OCTAVE} entries for each doubling of 1/w,
- * holding round(4096 f) at the middle of each entry, in chars (120 KB, of which a scene's depths touch
- * a few octaves, 4 KB each). An entry spans at most 2^-11 of its 1/w, so at most 2^-12 of ln z from
- * its middle, and f changes with ln z by at most 1/e (exp: zd·e^(-zd)) or 2/e (exp2:
- * 2(zd)²·e^(-(zd)²)): f is within 0.74/4096 of exact, 1.24/4096 with the entry's rounding. Every
- * channel is then within 0.1 of the exact blend of the stored colour (the fog's colour in 16ths of a
- * step) before rounding to the nearest of 255 steps. 1/w outside the table (z below 2^-10 or above
- * 2^20 view-space units) is taken at the table's nearest end. One instance per fog: immutable, shared
+ * <p>A row at a time, between its first and last covered pixels (found by {@link Arrays#mismatch}
+ * against a row of zeros, which the JDK compares many pixels at a time), in loops over arrays at one
+ * index that C2 (JDK 17) compiles to vector instructions, all but one: C2 vectorizes no conversion
+ * between floats and ints (not even the reading of a float's bits), no table look-up and no float
+ * minimum or maximum. So the factor is found in floats as the sum {@code 4096 f + 1.5·2^23}: adding
+ * 1.5·2^23 to a float from 0 to 2^22 rounds it to the nearest integer (ties to even), which the sum's
+ * low bits then hold. One scalar loop reads the sums' bits (a move a pixel, the pass's only scalar
+ * step); the first of the blend's loops turns them into f in 4096ths by integer operations
+ * ({@link #factor}), and the blend is integer arithmetic, one loop a channel.
+ *
+ * <p>Linear fog: 4096 f = 4096 (end - z)/(end - start) = a - b/(1/w) in floats (z = w, the eye depth),
+ * below 0 taken as 0 by {@code (x + |x|)/2} (exact), then rounded to the nearest integer. With
+ * E = end/(end - start), a's rounding is at most E·2^-12 of a 4096th, the quotient's (b's and the
+ * division's) at most E·2^-11 and the difference's at most 2^-12, so the floats move 4096 f by at most
+ * 1.5·E·2^-11 + 2^-12 before it is rounded: under 0.1 of a 4096th while E is under 130. The
+ * background's b/0 is infinite, and its sum NaN.
+ * <br>Exp: f = e^-x, x = density·z. With u = (16/density)/z = 16/x (one multiply: z is 1/(1/w)), e^(x/16)
+ * = e^(1/u) is taken by its Taylor polynomial of degree 4, p(1/u) = 1 + 1/u + 1/(2u²) + 1/(6u³) + 1/(24u⁴),
+ * so e^(-x/16) = u⁴/Q(u) with Q(u) = u⁴ + u³ + u²/2 + u/6 + 1/24, computed as u⁵/(u·Q(u)) (one division;
+ * 0/0, NaN, for the background's u = 0), and raised to the 16th power by four squarings.
+ * <br>Exp2: f = e^-(x²); with s = (density/4)/(1/w) = x/4 (a division, infinite for the background,
+ * which is marked by adding s - s, NaN there and 0 elsewhere), e^(x²/16) = e^(s²) by the same polynomial,
+ * f = 1/p(s²)^16 (a second division).
+ * <br>The polynomial falls short of e^v (v = x/16 or x²/16) by at most v⁵/120·e^v, so f is at most
+ * e^-16v·16·v⁵/120 too large relatively: in 4096ths at most 4096·16/120·max(e^-16v·v⁵) = 0.011 (at
+ * v = 5/16); the floats' roundings (some 20, each 2^-24 relatively, most doubled by the squarings) add
+ * at most 0.03, so 4096 f is within 0.05 of exact before it is rounded (measured: within 0.52 of exact
+ * after). An overflowing power (far pixels) gives f = 0.
+ *
+ * <p>So f is within 0.6/4096 of the equation (linear: while E is under 130), and every channel is
+ * within 0.1 of the exact blend of the stored colour (the fog's colour in 16ths of a step) before
+ * rounding to the nearest of 255 steps. Depths whose floats overflow or underflow (z beyond 2^100 view
+ * units: no scene reaches them) may read as the background. One instance per fog: immutable, shared
  * by the threads; each thread brings its {@link Rows}.
  */
 public final class FogPass {
-    /** Table entries per doubling of 1/w (exp, exp2). */
-    static final int STEPS_PER_OCTAVE = 2048;
-    /** Float bits below the table's index: 23 mantissa bits less log2 of the steps. */
-    private static final int SHIFT = 23 - 11;
-    /** The smallest 1/w in the table, 2^-20 (z = 2^20), and the largest, 2^10 (z = 2^-10). */
-    private static final int FIRST = Float.floatToRawIntBits(0x1p-20f) >> SHIFT;
-    private static final int LAST = Float.floatToRawIntBits(0x1p10f) >> SHIFT;
     /** The blend's fixed point: f in 4096ths. */
     private static final int ONE = 4096;
+    /** 1.5·2^23: a float from 0 to 2^22 added to it is rounded to an integer, held in the sum's low bits. */
+    private static final float ROUND = 0x1.8p23f;
+    private static final int ROUND_BITS = Float.floatToRawIntBits(ROUND);
 
     private final Fog fog;
-    /** Exp, exp2: round(4096 f) at the middle of each entry; null for linear fog. */
-    private final char[] table;
-    /** Linear fog: 4096 f + 1/2 = near - far / (1/w). */
-    private final float near;
-    private final float far;
+    /** Linear: 4096 end/(end - start) and 4096/(end - start); exp: 16/density, 0; exp2: density/4, 0. */
+    private final float a;
+    private final float b;
     /** The fog colour in 16ths of a step of 1/255. */
     private final int fr;
     private final int fg;
     private final int fb;
 
-    /** A thread's working rows: the factors, the colours and the fogged colours of one frame row. */
+    /** A thread's working rows: one frame row's depths (then sums), factors, colours and fogged colours. */
     public static final class Rows {
+        private float[] depths = new float[0];
+        /** A row of zeros, to find a row's first covered pixel against. */
+        private float[] zeros = new float[0];
         private int[] factors = new int[0];
         private int[] colours = new int[0];
         private int[] out = new int[0];
@@ -66,6 +81,8 @@ public final class FogPass {
 
         private void fit(int width) {
             if (factors.length < width) {
+                depths = new float[width];
+                zeros = new float[width];
                 factors = new int[width];
                 colours = new int[width];
                 out = new int[width];
@@ -80,19 +97,19 @@ public final class FogPass {
         fr = channel(c.r());
         fg = channel(c.g());
         fb = channel(c.b());
-        if (fog.mode() == Fog.Mode.LINEAR) {
-            table = null;
-            near = (float) (ONE * fog.end() / (fog.end() - fog.start()) + 0.5);
-            far = (float) (ONE / (fog.end() - fog.start()));
-        } else {
-            table = new char[LAST - FIRST + 1];
-            for (int k = 0; k < table.length; k++) {
-                double q0 = Float.intBitsToFloat((FIRST + k) << SHIFT);
-                double q1 = Float.intBitsToFloat((FIRST + k + 1) << SHIFT);
-                table[k] = (char) Math.round(ONE * fog.factor(2 / (q0 + q1)));
+        switch (fog.mode()) {
+            case LINEAR -> {
+                a = (float) (ONE * fog.end() / (fog.end() - fog.start()));
+                b = (float) (ONE / (fog.end() - fog.start()));
             }
-            near = 0;
-            far = 0;
+            case EXP -> {
+                a = (float) (16 / fog.density());
+                b = 0;
+            }
+            default -> {
+                a = (float) (fog.density() / 4);
+                b = 0;
+            }
         }
     }
 
@@ -114,9 +131,9 @@ public final class FogPass {
      * @return f in 4096ths, 0..4096
      */
     public int weight(float q) {
-        int[] k = new int[1];
-        factors(new float[] {q}, 0, 1, k);
-        return k[0];
+        float[] sum = {q};
+        sums(sum, 1);
+        return factor(Float.floatToRawIntBits(sum[0]));
     }
 
     /**
@@ -165,48 +182,87 @@ public final class FogPass {
             // The background at the row's ends (the sky around a scene, empty rows) is skipped.
             int from = y * width;
             int to = from + width;
-            while (from < to && depth[from] == 0) {
-                from++;
+            int first = Arrays.mismatch(depth, from, to, rows.zeros, 0, width);
+            if (first < 0) {
+                continue;
             }
-            while (to > from && depth[to - 1] == 0) {
+            from += first;
+            while (to - 64 > from && Arrays.mismatch(depth, to - 64, to, rows.zeros, 0, 64) < 0) {
+                to -= 64;
+            }
+            while (depth[to - 1] == 0) {
                 to--;
             }
             int n = to - from;
-            if (n > 0) {
-                factors(depth, from, n, k);
-                System.arraycopy(color, from, c, 0, n);
-                blend(c, k, out, n);
-                System.arraycopy(out, 0, color, from, n);
-            }
-        }
-    }
-
-    /** The factors of depths {@code [from, from + n)}, in 4096ths, into {@code k[0, n)}; 1 for the background. */
-    private void factors(float[] depth, int from, int n, int[] k) {
-        if (table == null) {
-            float a = near;
-            float b = far;
-            for (int x = 0; x < n; x++) {
-                float q = depth[from + x];
-                if (q > 0) {
-                    k[x] = Math.min(Math.max((int) (a - b / q), 0), ONE);
-                } else {
-                    k[x] = ONE;
-                }
-            }
-        } else {
-            char[] t = table;
-            int last = t.length - 1;
-            for (int x = 0; x < n; x++) {
-                float q = depth[from + x];
-                int e = Math.min(Math.max((Float.floatToRawIntBits(q) >> SHIFT) - FIRST, 0), last);
-                k[x] = q > 0 ? t[e] : ONE;
-            }
+            System.arraycopy(depth, from, rows.depths, 0, n);
+            sums(rows.depths, n);
+            bits(rows.depths, k, n);
+            System.arraycopy(color, from, c, 0, n);
+            blend(c, k, out, n);
+            System.arraycopy(out, 0, color, from, n);
         }
     }
 
     /**
-     * Blends colours {@code c[0, n)} towards the fog by factors {@code k[0, n)} into {@code out[0, n)},
+     * Replaces depths {@code q[0, n)} by the sums {@code 4096 f + 1.5·2^23}, in floats (see the class
+     * comment); NaN for the background. One loop per equation, vectorized.
+     */
+    private void sums(float[] q, int n) {
+        float a = this.a;
+        switch (fog.mode()) {
+            case LINEAR -> {
+                float b = this.b;
+                for (int x = 0; x < n; x++) {
+                    float f = a - b / q[x];
+                    q[x] = (f + Math.abs(f)) * 0.5f + ROUND;
+                }
+            }
+            case EXP -> {
+                for (int x = 0; x < n; x++) {
+                    float u = q[x] * a;
+                    float u2 = u * u;
+                    float e = (u2 * u2 * u) / (u * (1 / 24f + u * (1 / 6f + u * (1 / 2f + u * (1 + u)))));
+                    e *= e;
+                    e *= e;
+                    e *= e;
+                    q[x] = ONE * (e * e) + ROUND;
+                }
+            }
+            default -> {
+                for (int x = 0; x < n; x++) {
+                    float s = a / q[x];
+                    float v = s * s;
+                    float p = 1 + v * (1 + v * (1 / 2f + v * (1 / 6f + v * (1 / 24f))));
+                    p *= p;
+                    p *= p;
+                    p *= p;
+                    q[x] = ONE / (p * p) + ROUND + (s - s);
+                }
+            }
+        }
+    }
+
+    /** The bits of {@code sum[0, n)} into {@code k[0, n)}: the pass's one scalar loop (a move a pixel). */
+    private static void bits(float[] sum, int[] k, int n) {
+        for (int x = 0; x < n; x++) {
+            k[x] = Float.floatToRawIntBits(sum[x]);
+        }
+    }
+
+    /**
+     * The factor in 4096ths, 0..4096, from the bits of a sum {@code 4096 f + 1.5·2^23}, by integer
+     * operations only: sums from 1.5·2^23 to 1.5·2^23 + 4096 give their integer part, greater sums
+     * 4096, and so does NaN (the background), whatever its sign.
+     */
+    private static int factor(int bits) {
+        int k = bits - ROUND_BITS;
+        int above = ((ONE - k) | k) >> 31;
+        return k ^ ((k ^ ONE) & above);
+    }
+
+    /**
+     * Blends colours {@code c[0, n)} towards the fog by the factors whose sums' bits are {@code k[0, n)}
+     * (the first loop turns them into factors, {@link #factor}, in place) into {@code out[0, n)},
      * per channel {@code (16·C·k + F·(4096 - k) + 2^15) >> 16} with F the fog's channel in 16ths,
      * written as {@code ((16·C - F)·k + F·4096 + 2^15) >> 16}: one multiply a channel; k = 4096 leaves C
      * as it is. One small loop a channel over arrays at one index: C2 (JDK 17) vectorizes each, where
@@ -216,7 +272,9 @@ public final class FogPass {
         int f = fr;
         int half = ONE * 8 + f * ONE;
         for (int x = 0; x < n; x++) {
-            out[x] = (c[x] & 0xFF000000) | ((((c[x] >> 12) & 0xFF0) - f) * k[x] + half) >> 16 << 16;
+            int w = factor(k[x]);
+            k[x] = w;
+            out[x] = (c[x] & 0xFF000000) | ((((c[x] >> 12) & 0xFF0) - f) * w + half) >> 16 << 16;
         }
         f = fg;
         half = ONE * 8 + f * ONE;

@@ -9,7 +9,7 @@ import dev.trisect.render.Fog;
 import dev.trisect.render.Framebuffer;
 import org.junit.jupiter.api.Test;
 
-/** The fog pass on hand-computed pixels, and its table against OpenGL's equations at every depth. */
+/** The fog pass on hand-computed pixels, and its factor against OpenGL's equations at every depth. */
 class FogPassTest {
     private static int channel(int argb, int shift) {
         return (argb >> shift) & 0xFF;
@@ -62,16 +62,21 @@ class FogPassTest {
     @Test
     void theFactorFollowsEveryEquationWithinItsBound() {
         Fog[] fogs = {Fog.linear(0.5, 40, Colour.BLACK), Fog.exp(0.07, Colour.BLACK), Fog.exp2(0.05, Colour.BLACK),
-            Fog.exp(3, Colour.BLACK), Fog.linear(100, 101, Colour.BLACK)};
+            Fog.exp(3, Colour.BLACK), Fog.linear(100, 101, Colour.BLACK), Fog.exp(1e-4, Colour.BLACK),
+            Fog.exp2(2, Colour.BLACK)};
         for (Fog fog : fogs) {
             FogPass pass = new FogPass(fog);
+            // The background is left as it is; a pixel far beyond the fog is all fog.
+            assertEquals(4096, pass.weight(0f), fog.toString());
+            assertEquals(0, pass.weight(1e-9f), fog.toString());
             for (double z = 0.001; z < 1e6; z *= 1.0007) {
                 float q = (float) (1 / z);
                 double exact = fog.factor(1.0 / q);
                 double tabled = pass.weight(q) / 4096.0;
-                // The bounds FogPass states: rounding to 4096ths, plus the floats' error (linear) or the
-                // nearest entry's (exp, exp2).
-                double bound = (fog.mode() == Fog.Mode.LINEAR ? 0.6 : 1.25) / 4096;
+                // The bound FogPass states: rounding to 4096ths, plus the floats' error (linear: under 0.1
+                // while end/(end - start) is under 130; here at most 101) or the polynomial's and the
+                // floats' (exp, exp2: under 0.05).
+                double bound = 0.6 / 4096;
                 assertTrue(Math.abs(tabled - exact) <= bound, fog + " at z = " + z + ": " + tabled
                         + " for " + exact);
             }
