@@ -17,6 +17,7 @@ import dev.trisect.render.SplitPolicy;
 import dev.trisect.render.TessellationSettings;
 import dev.trisect.texture.Texture;
 import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadMXBean;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
@@ -27,10 +28,10 @@ import java.util.Locale;
  * between the plain frame and each variant (the renderer's threads), so that the shared machine's
  * load falls on both alike. Each frame is timed twice: wall time, and CPU time (steadier than wall
  * time on a loaded machine, as waiting for a core is not counted): with one thread the rendering
- * thread's own (the frame is drawn on the calling thread), else the process's, all threads. Prints per
- * path and variant the median wall ms of each and the median, lowest and highest of the per-round
- * ratios of wall time and of CPU time (with more than one thread, the process's CPU clock ticks too
- * coarsely for one frame: then the ratio of the CPU times summed over the rounds).
+ * thread's own (the frame is drawn on the calling thread), else the sum over the JVM's Java threads
+ * (the renderer's, each by its own clock; not the collector's or the compiler's). Prints per path and
+ * variant the median wall ms of each and the median, lowest and highest of the per-round ratios of
+ * wall time and of CPU time.
  *
  *   java -cp target/trisect.jar scripts/light/LightCost.java SCENE WxH THREADS ROUNDS [VARIANT...]
  *
@@ -49,8 +50,7 @@ import java.util.Locale;
  *   jfr print --stack-depth 64 --events jdk.ExecutionSample flat.jfr
  */
 public final class LightCost {
-    private static final com.sun.management.OperatingSystemMXBean CPU =
-            (com.sun.management.OperatingSystemMXBean) ManagementFactory.getOperatingSystemMXBean();
+    private static final ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
 
     public static void main(String[] args) {
         if (args.length > 0 && args[0].equals("--repeat")) {
@@ -101,8 +101,7 @@ public final class LightCost {
                 }
                 for (int k = 1; k < setups.size(); k++) {
                     double[] ratio = ratios(ms[k], ms[0]);
-                    double[] cpuRatio = threads == 1 ? ratios(cpu[k], cpu[0])
-                            : new double[] {Arrays.stream(cpu[k]).sum() / Arrays.stream(cpu[0]).sum()};
+                    double[] cpuRatio = ratios(cpu[k], cpu[0]);
                     System.out.printf(Locale.ROOT, "%-12s %-16s plain %7.2f ms  variant %7.2f ms  ratio median %.3f "
                                     + "(min %.3f, max %.3f)  cpu ratio %.3f (min %.3f, max %.3f)%n",
                             path.mode().name().toLowerCase(Locale.ROOT), variants.get(k - 1), median(ms[0]),
@@ -199,9 +198,19 @@ public final class LightCost {
         return (System.nanoTime() - t) / 1e6;
     }
 
-    /** CPU time now, ns: the calling thread's with one rendering thread, else the process's. */
+    /**
+     * CPU time now, ns: the calling thread's with one rendering thread, else the sum of every live Java
+     * thread's (the idle ones add nothing between two readings).
+     */
     private static long cpuNanos(int threads) {
-        return threads == 1 ? ManagementFactory.getThreadMXBean().getCurrentThreadCpuTime() : CPU.getProcessCpuTime();
+        if (threads == 1) {
+            return THREADS.getCurrentThreadCpuTime();
+        }
+        long sum = 0;
+        for (long id : THREADS.getAllThreadIds()) {
+            sum += Math.max(0, THREADS.getThreadCpuTime(id));
+        }
+        return sum;
     }
 
     /** The per-round ratios a / b, sorted. */

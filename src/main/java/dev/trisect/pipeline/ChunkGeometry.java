@@ -426,7 +426,13 @@ final class ChunkGeometry {
         w.batchIds[count] = id;
         w.batchMaterials[count] = material;
         int fs = w.flatStride;
-        if (fs != 0) {
+        if (fs == 3) {
+            // A flat-lit frame's colour (FrameGeometry.FLAT_LIT_LAYOUT): three stores, not a copy of
+            // a length the compiler does not know.
+            w.batchFlats[3 * count] = w.flat[0];
+            w.batchFlats[3 * count + 1] = w.flat[1];
+            w.batchFlats[3 * count + 2] = w.flat[2];
+        } else if (fs != 0) {
             System.arraycopy(w.flat, 0, w.batchFlats, count * fs, fs);
         }
         return count + 1;
