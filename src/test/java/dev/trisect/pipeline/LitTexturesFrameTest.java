@@ -32,10 +32,10 @@ import org.junit.jupiter.api.Test;
  * and smooth; and the copies were drawn from (the frames would be equal, and prove nothing, if not).
  */
 class LitTexturesFrameTest {
-    private static final int W = 160;
-    private static final int H = 120;
+    static final int W = 160;
+    static final int H = 120;
     private static final RenderSettings BASE = RenderSettings.defaults();
-    private static final RenderSettings[] PATHS = {BASE.withMode(RenderMode.PERSPECTIVE),
+    static final RenderSettings[] PATHS = {BASE.withMode(RenderMode.PERSPECTIVE),
         BASE.withMode(RenderMode.AFFINE), BASE.withMode(RenderMode.SPANS).withKnotError(0.5),
         BASE.withMode(RenderMode.TESSELLATED).withTessellation(TessellationSettings.defaults()
                 .withPolicy(SplitPolicy.ERROR).withMaxError(0.5))};
@@ -50,9 +50,9 @@ class LitTexturesFrameTest {
     }
 
     /** A floor (64x64 texture), three crates (48x40: not powers of two) and a smooth-shaded globe. */
-    private static final Texture[] TEXTURES = {texture("floor", 64, 64, 1), texture("crate", 48, 40, 2),
+    static final Texture[] TEXTURES = {texture("floor", 64, 64, 1), texture("crate", 48, 40, 2),
         texture("globe", 32, 32, 3)};
-    private static final Mesh MESH = mesh();
+    static final Mesh MESH = mesh();
 
     private static Mesh mesh() {
         MeshBuilder b = new MeshBuilder();
@@ -67,7 +67,7 @@ class LitTexturesFrameTest {
         return b.build();
     }
 
-    private static final Mat4 VIEW_PROJECTION = new Camera(new Vec3(0.5, 1.8, 6), new Vec3(0, 1, -10), Vec3.UP,
+    static final Mat4 VIEW_PROJECTION = new Camera(new Vec3(0.5, 1.8, 6), new Vec3(0, 1, -10), Vec3.UP,
             60, 0.1, 1000).viewProjection(new Viewport(W, H));
 
     private static Framebuffer frame(FrameRenderer r, RenderSettings s, Shading shading, int write) {
