@@ -26,11 +26,14 @@ import java.util.Arrays;
  * ({@link #factor}), and the blend is integer arithmetic, one loop a channel.
  *
  * <p>Linear fog: 4096 f = 4096 (end - z)/(end - start) = a - b/(1/w) in floats (z = w, the eye depth),
- * below 0 taken as 0 by {@code (x + |x|)/2} (exact), then rounded to the nearest integer. With
- * E = end/(end - start), a's rounding is at most E·2^-12 of a 4096th, the quotient's (b's and the
- * division's) at most E·2^-11 and the difference's at most 2^-12, so the floats move 4096 f by at most
- * 1.5·E·2^-11 + 2^-12 before it is rounded: under 0.1 of a 4096th while E is under 130. The
- * background's b/0 is infinite, and its sum NaN.
+ * clamped to [0, 4096] by {@code (x + |x|)/2} (exact) and {@code (x + 4096 - |x - 4096|)/2} (within
+ * 2^-12 below 4096; above it, exactly 4096 after the rounding while x is under 2^24), then rounded to
+ * the nearest integer. With E = end/(end - start), a's rounding is at most E·2^-12 of a 4096th, the
+ * quotient's (b's and the division's) at most E·2^-11, the difference's and the clamp's at most 2^-12
+ * each, so the floats move 4096 f by at most 1.5·E·2^-11 + 2^-11 before it is rounded: under 0.1 of a
+ * 4096th while E is under 130. The background's b/0 is infinite, and its sum NaN. A row all nearer
+ * than the start (its sums all exactly 4096 + 1.5·2^23, found by {@link Arrays#mismatch} against such a
+ * row: the bottom rows of a floor, a scene before the fog begins) is left as it is at once.
  * <br>Exp: f = e^-x, x = density·z. With u = (16/density)/z = 16/x (one multiply: z is 1/(1/w)), e^(x/16)
  * = e^(1/u) is taken by its Taylor polynomial of degree 4, p(1/u) = 1 + 1/u + 1/(2u²) + 1/(6u³) + 1/(24u⁴),
  * so e^(-x/16) = u⁴/Q(u) with Q(u) = u⁴ + u³ + u²/2 + u/6 + 1/24, computed as u⁵/(u·Q(u)) (one division;
@@ -71,6 +74,8 @@ public final class FogPass {
         private float[] depths = new float[0];
         /** A row of zeros, to find a row's first covered pixel against. */
         private float[] zeros = new float[0];
+        /** A row of linear fog's sums for pixels nearer than its start, 4096 + 1.5·2^23. */
+        private float[] near = new float[0];
         private int[] factors = new int[0];
         private int[] colours = new int[0];
         private int[] out = new int[0];
@@ -80,9 +85,11 @@ public final class FogPass {
         }
 
         private void fit(int width) {
-            if (factors.length < width) {
+            if (zeros.length < width) {
                 depths = new float[width];
                 zeros = new float[width];
+                near = new float[width];
+                Arrays.fill(near, ONE + ROUND);
                 factors = new int[width];
                 colours = new int[width];
                 out = new int[width];
@@ -131,9 +138,12 @@ public final class FogPass {
      * @return f in 4096ths, 0..4096
      */
     public int weight(float q) {
-        float[] sum = {q};
-        sums(sum, 1);
-        return factor(Float.floatToRawIntBits(sum[0]));
+        float sum = switch (fog.mode()) {
+            case LINEAR -> linear(a, b, q);
+            case EXP -> exp(a, q);
+            default -> exp2(a, q);
+        };
+        return factor(Float.floatToRawIntBits(sum));
     }
 
     /**
@@ -196,6 +206,9 @@ public final class FogPass {
             int n = to - from;
             System.arraycopy(depth, from, rows.depths, 0, n);
             sums(rows.depths, n);
+            if (fog.mode() == Fog.Mode.LINEAR && Arrays.mismatch(rows.depths, 0, n, rows.near, 0, n) < 0) {
+                continue; // Every pixel is nearer than the fog's start (the sums are exactly 4096 + 1.5·2^23).
+            }
             bits(rows.depths, k, n);
             System.arraycopy(color, from, c, 0, n);
             blend(c, k, out, n);
@@ -204,45 +217,67 @@ public final class FogPass {
     }
 
     /**
-     * Replaces depths {@code q[0, n)} by the sums {@code 4096 f + 1.5·2^23}, in floats (see the class
-     * comment); NaN for the background. One loop per equation, vectorized.
+     * Replaces depths {@code q[0, n)} by the sums {@code 4096 f + 1.5·2^23} (see the class comment);
+     * NaN for the background. One loop per equation, each vectorized.
      */
     private void sums(float[] q, int n) {
         float a = this.a;
+        float b = this.b;
         switch (fog.mode()) {
             case LINEAR -> {
-                float b = this.b;
                 for (int x = 0; x < n; x++) {
-                    float f = a - b / q[x];
-                    q[x] = (f + Math.abs(f)) * 0.5f + ROUND;
+                    q[x] = linear(a, b, q[x]);
                 }
             }
             case EXP -> {
                 for (int x = 0; x < n; x++) {
-                    float u = q[x] * a;
-                    float u2 = u * u;
-                    float e = (u2 * u2 * u) / (u * (1 / 24f + u * (1 / 6f + u * (1 / 2f + u * (1 + u)))));
-                    e *= e;
-                    e *= e;
-                    e *= e;
-                    q[x] = ONE * (e * e) + ROUND;
+                    q[x] = exp(a, q[x]);
                 }
             }
             default -> {
                 for (int x = 0; x < n; x++) {
-                    float s = a / q[x];
-                    float v = s * s;
-                    float p = 1 + v * (1 + v * (1 / 2f + v * (1 / 6f + v * (1 / 24f))));
-                    p *= p;
-                    p *= p;
-                    p *= p;
-                    q[x] = ONE / (p * p) + ROUND + (s - s);
+                    q[x] = exp2(a, q[x]);
                 }
             }
         }
     }
 
-    /** The bits of {@code sum[0, n)} into {@code k[0, n)}: the pass's one scalar loop (a move a pixel). */
+    /**
+     * Linear fog's sum at depth q: {@code a - b/q} clamped to [0, 4096] (by {@code (x + |x|)/2} and
+     * {@code (x + 4096 - |x - 4096|)/2}) and rounded by adding 1.5·2^23; NaN for q = 0.
+     */
+    private static float linear(float a, float b, float q) {
+        float f = a - b / q;
+        f = (f + Math.abs(f)) * 0.5f;
+        return ((f + ONE) - Math.abs(f - ONE)) * 0.5f + ROUND;
+    }
+
+    /** Exp fog's sum at depth q, a = 16/density: {@code 4096 (u⁵/(u·Q(u)))^16 + 1.5·2^23}, u = a·q; NaN for q = 0. */
+    private static float exp(float a, float q) {
+        float u = q * a;
+        float u2 = u * u;
+        float e = (u2 * u2 * u) / (u * (1 / 24f + u * (1 / 6f + u * (1 / 2f + u * (1 + u)))));
+        e *= e;
+        e *= e;
+        e *= e;
+        return ONE * (e * e) + ROUND;
+    }
+
+    /** Exp2 fog's sum at depth q, a = density/4: {@code 4096/p(s²)^16 + 1.5·2^23 + (s - s)}, s = a/q; NaN for q = 0. */
+    private static float exp2(float a, float q) {
+        float s = a / q;
+        float v = s * s;
+        float p = 1 + v * (1 + v * (1 / 2f + v * (1 / 6f + v * (1 / 24f))));
+        p *= p;
+        p *= p;
+        p *= p;
+        return ONE / (p * p) + ROUND + (s - s);
+    }
+
+    /**
+     * The bits of {@code sum[0, n)} into {@code k[0, n)}: the pass's one scalar loop, a move a pixel (it
+     * waits on its stores; anything more in it, even a running minimum, slows it by a third).
+     */
     private static void bits(float[] sum, int[] k, int n) {
         for (int x = 0; x < n; x++) {
             k[x] = Float.floatToRawIntBits(sum[x]);

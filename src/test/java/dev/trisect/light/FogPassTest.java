@@ -37,6 +37,39 @@ class FogPassTest {
     }
 
     @Test
+    void rowsNearerThanTheStartAreLeftAndTheirNeighboursFogged() {
+        // Linear fog from 2 to 10. Row 0: every covered pixel nearer than the start (z 0.5 to 2), so left at
+        // once; row 1: the same with one gap of background, and its last pixel at z = 6 (f = 1/2). Row 0
+        // stays as it was, bit for bit; in row 1 only the last pixel changes.
+        int width = 40;
+        Framebuffer frame = new Framebuffer(width, 2);
+        frame.clearRows(0, 2, 0x102030);
+        int[] c = frame.colour();
+        float[] d = frame.depth();
+        for (int y = 0; y < 2; y++) {
+            for (int x = 3; x < width - 2; x++) {
+                if (x != 17 || y == 0) {
+                    c[y * width + x] = 0xFF000000 | (x * 0x050607);
+                    d[y * width + x] = 1f / (0.5f + 1.5f * x / width);
+                }
+            }
+        }
+        d[width + width - 3] = 1f / 6;
+        int[] before = c.clone();
+        new FogPass(Fog.linear(2, 10, new Colour(1, 1, 1))).apply(frame, 0, 2);
+        for (int i = 0; i < 2 * width; i++) {
+            if (i != 2 * width - 3) {
+                assertEquals(before[i], c[i], "pixel " + i);
+            }
+        }
+        int was = before[2 * width - 3];
+        for (int shift = 0; shift < 24; shift += 8) {
+            double mixed = 0.5 * ((was >> shift) & 0xFF) + 0.5 * 255;
+            assertTrue(Math.abs(channel(c[2 * width - 3], shift) - mixed) <= 0.6, "channel " + shift);
+        }
+    }
+
+    @Test
     void oneThreadsRowsServeFramesOfEveryWidthAlike() {
         FogPass pass = new FogPass(Fog.exp(0.2, new Colour(0.3, 0.9, 0.5)));
         FogPass.Rows rows = new FogPass.Rows();
