@@ -197,8 +197,11 @@ public final class FogPass {
                 continue;
             }
             from += first;
-            while (to - 64 > from && Arrays.mismatch(depth, to - 64, to, rows.zeros, 0, 64) < 0) {
-                to -= 64;
+            // The last covered pixel: from the right in blocks of 512, 128, 32 and 8 pixels, then one by one.
+            for (int block = 512; block >= 8; block >>= 2) {
+                while (to - block > from && Arrays.mismatch(depth, to - block, to, rows.zeros, 0, block) < 0) {
+                    to -= block;
+                }
             }
             while (depth[to - 1] == 0) {
                 to--;
