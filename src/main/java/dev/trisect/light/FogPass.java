@@ -203,7 +203,7 @@ public final class FogPass {
                     to -= block;
                 }
             }
-            while (depth[to - 1] == 0) {
+            while (to > from && depth[to - 1] == 0) { // (a -0 depth, differing in bits only, may end here)
                 to--;
             }
             int n = to - from;

@@ -34,6 +34,14 @@ class FogPassTest {
         assertEquals(0xFF, channel(c[0], 24));
         assertEquals(0xFFC86400, c[1]);
         assertEquals(0xFF102030, c[2]);
+        // A depth of -0 (bits unlike the background's +0, value alike) is background too, wherever it is.
+        for (int at = 0; at < 3; at++) {
+            Framebuffer row = new Framebuffer(3, 1);
+            row.clearRows(0, 1, 0x102030);
+            row.depth()[at] = -0f;
+            new FogPass(Fog.exp(0.5, Colour.BLACK)).apply(row, 0, 1);
+            assertEquals(0xFF102030, row.colour()[at]);
+        }
     }
 
     @Test
