@@ -3,6 +3,10 @@ package dev.trisect.light;
 import dev.trisect.render.Colour;
 import dev.trisect.render.Fog;
 import dev.trisect.render.Framebuffer;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.FloatBuffer;
+import java.nio.IntBuffer;
 import java.util.Arrays;
 
 /**
@@ -17,12 +21,13 @@ import java.util.Arrays;
  *
  * <p>A row at a time, between its first and last covered pixels (found by {@link Arrays#mismatch}
  * against a row of zeros, which the JDK compares many pixels at a time), in loops over arrays at one
- * index that C2 (JDK 17) compiles to vector instructions, all but one: C2 vectorizes no conversion
- * between floats and ints (not even the reading of a float's bits), no table look-up and no float
- * minimum or maximum. So the factor is found in floats as the sum {@code 4096 f + 1.5·2^23}: adding
- * 1.5·2^23 to a float from 0 to 2^22 rounds it to the nearest integer (ties to even), which the sum's
- * low bits then hold. One scalar loop reads the sums' bits (a move a pixel, the pass's only scalar
- * step); the first of the blend's loops turns them into f in 4096ths by integer operations
+ * index that C2 (JDK 17) compiles to vector instructions. C2 vectorizes no conversion between floats
+ * and ints (not even the reading of a float's bits), no table look-up and no float minimum or maximum.
+ * So the factor is found in floats as the sum {@code 4096 f + 1.5·2^23}: adding 1.5·2^23 to a float
+ * from 0 to 2^22 rounds it to the nearest integer (ties to even), which the sum's low bits then hold.
+ * The sums' bits reach an int array by two bulk copies through a direct buffer seen as floats and as
+ * ints (the JDK copies memory; a loop of {@code Float.floatToRawIntBits} stays scalar, a pixel a
+ * cycle); the first of the blend's loops turns them into f in 4096ths by integer operations
  * ({@link #factor}), and the blend is integer arithmetic, one loop a channel.
  *
  * <p>Linear fog: 4096 f = 4096 (end - z)/(end - start) = a - b/(1/w) in floats (z = w, the eye depth),
@@ -72,6 +77,9 @@ public final class FogPass {
     /** A thread's working rows: one frame row's depths (then sums), factors, colours and fogged colours. */
     public static final class Rows {
         private float[] depths = new float[0];
+        /** One row of bytes in the platform's order, seen as floats and as ints. */
+        private FloatBuffer floats;
+        private IntBuffer ints;
         /** A row of zeros, to find a row's first covered pixel against. */
         private float[] zeros = new float[0];
         /** A row of linear fog's sums for pixels nearer than its start, 4096 + 1.5·2^23. */
@@ -87,6 +95,9 @@ public final class FogPass {
         private void fit(int width) {
             if (zeros.length < width) {
                 depths = new float[width];
+                ByteBuffer bytes = ByteBuffer.allocateDirect(width * Float.BYTES).order(ByteOrder.nativeOrder());
+                floats = bytes.asFloatBuffer();
+                ints = bytes.asIntBuffer();
                 zeros = new float[width];
                 near = new float[width];
                 Arrays.fill(near, ONE + ROUND);
@@ -212,7 +223,10 @@ public final class FogPass {
             if (fog.mode() == Fog.Mode.LINEAR && Arrays.mismatch(rows.depths, 0, n, rows.near, 0, n) < 0) {
                 continue; // Every pixel is nearer than the fog's start (the sums are exactly 4096 + 1.5·2^23).
             }
-            bits(rows.depths, k, n);
+            // The sums' bits into ints: a float-to-int move that C2 does not vectorize as a loop, done as
+            // two bulk copies through a buffer seen as floats and as ints (memory copies in the JDK).
+            rows.floats.put(0, rows.depths, 0, n);
+            rows.ints.get(0, k, 0, n);
             System.arraycopy(color, from, c, 0, n);
             blend(c, k, out, n);
             System.arraycopy(out, 0, color, from, n);
@@ -275,16 +289,6 @@ public final class FogPass {
         p *= p;
         p *= p;
         return ONE / (p * p) + ROUND + (s - s);
-    }
-
-    /**
-     * The bits of {@code sum[0, n)} into {@code k[0, n)}: the pass's one scalar loop, a move a pixel (it
-     * waits on its stores; anything more in it, even a running minimum, slows it by a third).
-     */
-    private static void bits(float[] sum, int[] k, int n) {
-        for (int x = 0; x < n; x++) {
-            k[x] = Float.floatToRawIntBits(sum[x]);
-        }
     }
 
     /**
