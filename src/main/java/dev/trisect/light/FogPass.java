@@ -30,32 +30,36 @@ import java.util.Arrays;
  * cycle); the first of the blend's loops turns them into f in 4096ths by integer operations
  * ({@link #factor}), and the blend is integer arithmetic, one loop a channel.
  *
- * <p>Linear fog: 4096 f = 4096 (end - z)/(end - start) = a - b/(1/w) in floats (z = w, the eye depth),
- * clamped to [0, 4096] by {@code (x + |x|)/2} (exact) and {@code (x + 4096 - |x - 4096|)/2} (within
- * 2^-12 below 4096; above it, exactly 4096 after the rounding while x is under 2^24), then rounded to
- * the nearest integer. With E = end/(end - start), a's rounding is at most E·2^-12 of a 4096th, the
- * quotient's (b's and the division's) at most E·2^-11, the difference's and the clamp's at most 2^-12
- * each, so the floats move 4096 f by at most 1.5·E·2^-11 + 2^-11 before it is rounded: under 0.1 of a
- * 4096th while E is under 130. The background's b/0 is infinite, and its sum NaN. A row all nearer
- * than the start (its sums all exactly 4096 + 1.5·2^23, found by {@link Arrays#mismatch} against such a
- * row: the bottom rows of a floor, a scene before the fog begins) is left as it is at once.
+ * <p>Linear fog: 4096 f = 4096 (end - z)/(end - start) = b·(end - z) in floats, z = 1/(1/w) (= w, the
+ * eye depth), the difference clamped at 0 by {@code (x + |x|)/2} (exact; so no far pixel overflows)
+ * and the product at 4096 by {@code (x + 4096 - |x - 4096|)/2} (within 2^-12 below 4096; above it,
+ * exactly 4096 after the rounding while the product is under 2^24, that is end/(end - start) under
+ * 4096), then rounded to the nearest integer. With E = end/(end - start), end's and z's roundings move
+ * 4096 f by at most E·2^-12 of a 4096th each, the difference's, b's, the product's and the clamp's by
+ * at most 2^-12 each, so by at most E·2^-11 + 2^-10 before it is rounded: under 0.1 of a 4096th while E
+ * is under 200. The background's 1/0 is infinite, and its sum NaN. A row all nearer than the start
+ * (its sums all exactly 4096 + 1.5·2^23, found by {@link Arrays#mismatch} against such a row: the
+ * bottom rows of a floor, a scene before the fog begins) is left as it is at once.
  * <br>Exp: f = e^-x, x = density·z. With u = (16/density)/z = 16/x (one multiply: z is 1/(1/w)), e^(x/16)
  * = e^(1/u) is taken by its Taylor polynomial of degree 4, p(1/u) = 1 + 1/u + 1/(2u²) + 1/(6u³) + 1/(24u⁴),
  * so e^(-x/16) = u⁴/Q(u) with Q(u) = u⁴ + u³ + u²/2 + u/6 + 1/24, computed as u⁵/(u·Q(u)) (one division;
- * 0/0, NaN, for the background's u = 0), and raised to the 16th power by four squarings.
- * <br>Exp2: f = e^-(x²); with s = (density/4)/(1/w) = x/4 (a division, infinite for the background,
- * which is marked by adding s - s, NaN there and 0 elsewhere), e^(x²/16) = e^(s²) by the same polynomial,
- * f = 1/p(s²)^16 (a second division).
+ * 0/0, NaN, for the background's u = 0; a far pixel's tiny u gives 0), and raised to the 16th power
+ * by four squarings.
+ * <br>Exp2: f = e^-(x²); with z = 1/(1/w) (infinite only for the background, which is marked by adding
+ * z - z, NaN there and 0 elsewhere) and s = (density/4)·z = x/4, e^(x²/16) = e^(s²) by the same
+ * polynomial, f = 1/p(s²)^16 (a second division; an overflowing s or power gives f = 0).
  * <br>The polynomial falls short of e^v (v = x/16 or x²/16) by at most v⁵/120·e^v, so f is at most
- * e^-16v·16·v⁵/120 too large relatively: in 4096ths at most 4096·16/120·max(e^-16v·v⁵) = 0.011 (at
- * v = 5/16); the floats' roundings (some 20, each 2^-24 relatively, most doubled by the squarings) add
- * at most 0.03, so 4096 f is within 0.05 of exact before it is rounded (measured: within 0.52 of exact
- * after). An overflowing power (far pixels) gives f = 0.
+ * e^-16v·16·v⁵/120 too large absolutely: in 4096ths at most 4096·16/120·max(e^-16v·v⁵) = 0.011 (at
+ * v = 5/16). The floats round some 17 times before the squarings, each by at most 2^-24 relatively and
+ * each multiplied by 16 by them, and 15 times in them: at most 290·2^-24 relatively, 0.071 of a 4096th.
+ * So 4096 f is within 0.082 of exact before it is rounded (measured over z, in float arithmetic: at
+ * most 0.027 exp, 0.009 exp2), within 0.59 after.
  *
- * <p>So f is within 0.6/4096 of the equation (linear: while E is under 130), and every channel is
- * within 0.1 of the exact blend of the stored colour (the fog's colour in 16ths of a step) before
- * rounding to the nearest of 255 steps. Depths whose floats overflow or underflow (z beyond 2^100 view
- * units: no scene reaches them) may read as the background. One instance per fog: immutable, shared
+ * <p>So f is within 0.59/4096 of the equation (linear: 0.5 + E·2^-11 + 2^-10, under 0.6 while E is
+ * under 200), and every channel is within 0.1 of the exact blend of the stored colour (the fog's colour
+ * in 16ths of a step) before rounding to the nearest of 255 steps. Every depth z below 2^127 view
+ * units gives a finite 1/(1/w), so no covered pixel reads as the background (under exp fog, none while
+ * also density·z is under 2^149·16: u = 16/(density·z) stays above 0). One instance per fog: immutable, shared
  * by the threads; each thread brings its {@link Rows}.
  */
 public final class FogPass {
@@ -66,7 +70,7 @@ public final class FogPass {
     private static final int ROUND_BITS = Float.floatToRawIntBits(ROUND);
 
     private final Fog fog;
-    /** Linear: 4096 end/(end - start) and 4096/(end - start); exp: 16/density, 0; exp2: density/4, 0. */
+    /** Linear: end and 4096/(end - start); exp: 16/density, 0; exp2: density/4, 0. */
     private final float a;
     private final float b;
     /** The fog colour in 16ths of a step of 1/255. */
@@ -117,7 +121,7 @@ public final class FogPass {
         fb = channel(c.b());
         switch (fog.mode()) {
             case LINEAR -> {
-                a = (float) (ONE * fog.end() / (fog.end() - fog.start()));
+                a = (float) fog.end();
                 b = (float) (ONE / (fog.end() - fog.start()));
             }
             case EXP -> {
@@ -260,12 +264,13 @@ public final class FogPass {
     }
 
     /**
-     * Linear fog's sum at depth q: {@code a - b/q} clamped to [0, 4096] (by {@code (x + |x|)/2} and
-     * {@code (x + 4096 - |x - 4096|)/2}) and rounded by adding 1.5·2^23; NaN for q = 0.
+     * Linear fog's sum at depth q, a = end: {@code b·(end - 1/q)} with the difference clamped at 0 by
+     * {@code (x + |x|)/2} (so a far pixel's product cannot overflow) and the product at 4096 by
+     * {@code (x + 4096 - |x - 4096|)/2}, rounded by adding 1.5·2^23; NaN for q = 0 (1/q infinite).
      */
     private static float linear(float a, float b, float q) {
-        float f = a - b / q;
-        f = (f + Math.abs(f)) * 0.5f;
+        float t = a - 1 / q;
+        float f = (t + Math.abs(t)) * 0.5f * b;
         return ((f + ONE) - Math.abs(f - ONE)) * 0.5f + ROUND;
     }
 
@@ -280,15 +285,19 @@ public final class FogPass {
         return ONE * (e * e) + ROUND;
     }
 
-    /** Exp2 fog's sum at depth q, a = density/4: {@code 4096/p(s²)^16 + 1.5·2^23 + (s - s)}, s = a/q; NaN for q = 0. */
+    /**
+     * Exp2 fog's sum at depth q, a = density/4: {@code 4096/p(s²)^16 + 1.5·2^23 + (z - z)}, z = 1/q,
+     * s = a·z; NaN for q = 0 (z infinite), 0 when only s or p overflows (far pixels).
+     */
     private static float exp2(float a, float q) {
-        float s = a / q;
+        float z = 1 / q;
+        float s = a * z;
         float v = s * s;
         float p = 1 + v * (1 + v * (1 / 2f + v * (1 / 6f + v * (1 / 24f))));
         p *= p;
         p *= p;
         p *= p;
-        return ONE / (p * p) + ROUND + (s - s);
+        return ONE / (p * p) + ROUND + (z - z);
     }
 
     /**

@@ -104,25 +104,28 @@ class FogPassTest {
     void theFactorFollowsEveryEquationWithinItsBound() {
         Fog[] fogs = {Fog.linear(0.5, 40, Colour.BLACK), Fog.exp(0.07, Colour.BLACK), Fog.exp2(0.05, Colour.BLACK),
             Fog.exp(3, Colour.BLACK), Fog.linear(100, 101, Colour.BLACK), Fog.exp(1e-4, Colour.BLACK),
-            Fog.exp2(2, Colour.BLACK)};
+            Fog.exp2(2, Colour.BLACK), Fog.linear(1, 1.001, Colour.BLACK), Fog.exp2(40, Colour.BLACK)};
         for (Fog fog : fogs) {
             FogPass pass = new FogPass(fog);
-            // The background is left as it is; a pixel far beyond the fog is all fog.
+            // The background is left as it is; a pixel far beyond the fog is all fog, however far (no
+            // quotient or product overflows into the background's mark).
             assertEquals(4096, pass.weight(0f), fog.toString());
-            assertEquals(0, pass.weight(1e-9f), fog.toString());
+            for (float q : new float[] {1e-9f, 1e-30f, 1e-37f, Float.MIN_NORMAL, 1 / Float.MAX_VALUE * 2}) {
+                assertEquals(0, pass.weight(q), fog + " at 1/w = " + q);
+            }
+            // The bounds FogPass states: rounding to 4096ths, plus the floats' error, linear
+            // E·2^-11 + 2^-10 with E = end/(end - start), exp and exp2 the polynomial's and the floats' 0.082.
+            double bound = (fog.mode() == Fog.Mode.LINEAR
+                    ? 0.5 + fog.end() / (fog.end() - fog.start()) / 2048 + 1.0 / 1024 : 0.59) / 4096;
             for (double z = 0.001; z < 1e6; z *= 1.0007) {
                 float q = (float) (1 / z);
                 double exact = fog.factor(1.0 / q);
-                double tabled = pass.weight(q) / 4096.0;
-                // The bound FogPass states: rounding to 4096ths, plus the floats' error (linear: under 0.1
-                // while end/(end - start) is under 130; here at most 101) or the polynomial's and the
-                // floats' (exp, exp2: under 0.05).
-                double bound = 0.6 / 4096;
-                assertTrue(Math.abs(tabled - exact) <= bound, fog + " at z = " + z + ": " + tabled
-                        + " for " + exact);
+                double found = pass.weight(q) / 4096.0;
+                assertTrue(Math.abs(found - exact) <= bound, fog + " at z = " + z + ": " + found + " for " + exact);
             }
         }
     }
+
 
     @Test
     void fogFactorsAreOpenGLs() {
