@@ -22,8 +22,9 @@ import java.util.Locale;
  * One hash per lit frame of the built-in scenes, to show that a change leaves lit pixels as they were:
  * run it on two builds and compare the outputs ({@code diff}). Per scene, thread count (1, 2), path
  * (per pixel, spans at 0.5 px, tessellated at error 0.5, affine, tessellated with borders), filter and
- * lighting — every material flat under a directional light, flat under another light and ambient,
- * smooth, and a mix of unlit, flat and smooth materials (a quarter of the flat ones unlit) — four
+ * lighting — "flat" and "flat-tinted" (every fourth material unlit, the others flat, under a white
+ * directional light and under a tinted one with a tinted ambient), "smooth", and "mixed" (material m
+ * unlit, flat or smooth by m mod 3, so a scene of one material is unlit there) — four
  * frames are drawn (lit copies of textures are built from the third) and their colour, depth, UV and
  * ids buffers hashed together. 640x360.
  *
@@ -45,7 +46,11 @@ public final class LitFrameHashes {
                 base.withMode(RenderMode.TESSELLATED).withBorders(true)};
         String[] pathNames = {"perspective", "spans", "tessellated", "affine", "tessellated-borders"};
         for (String scene : scenes) {
-            SceneAsset s = DemoScenes.byName(scene).orElseThrow(() -> new IllegalArgumentException("no scene " + scene));
+            if (DemoScenes.byName(scene).isEmpty()) {
+                System.err.println("LitFrameHashes: no built-in scene '" + scene + "' (scenes: " + DemoScenes.names() + ")");
+                System.exit(2);
+            }
+            SceneAsset s = DemoScenes.byName(scene).get();
             Mat4 vp = s.camera().viewProjection(new Viewport(w, h));
             for (int threads = 1; threads <= 2; threads++) {
                 try (FrameRenderer r = new FrameRenderer(threads)) {

@@ -13,6 +13,7 @@ import static dev.trisect.tessellate.VertexLayout.Z;
 import dev.trisect.light.Surface;
 import dev.trisect.math.Viewport;
 import dev.trisect.raster.Commands;
+import dev.trisect.raster.PixelState;
 import dev.trisect.raster.ScreenTriangles;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.tessellate.PieceBudget;
@@ -47,13 +48,6 @@ final class ChunkGeometry {
     static final double LARGE = 0x1p26;
     /** Doubles between the corners of the triangle being culled: room for the largest layout's clip vertex. */
     private static final int CORNER = VertexLayout.FIRST_VARYING + VertexLayout.MAX_VARYINGS;
-    /** The varying slot of a lit frame's red; green and blue follow it. */
-    static final int COLOUR_SLOT = 2;
-    /**
-     * The flat value of a flat-lit frame's red ({@link FrameGeometry#FLAT_LIT_LAYOUT}); green and blue
-     * follow it: the triangle's one colour, held once per triangle instead of in each corner.
-     */
-    static final int FLAT_COLOUR = 0;
     /** Triangles per timing batch inside a chunk. */
     private static final int BATCH = 1024;
 
@@ -212,8 +206,8 @@ final class ChunkGeometry {
         Clipper clipper = w.clipper;
         double[] corner = w.corners;
         VertexColours colours = in.colours();
-        boolean carriesColour = in.layout().varyings() > COLOUR_SLOT;
-        boolean flatColour = in.layout().flats() >= FLAT_COLOUR + 3;
+        boolean carriesColour = in.layout().varyings() > PixelState.COLOUR_SLOT;
+        boolean flatColour = in.layout().flats() >= PixelState.FLAT_COLOUR + 3;
         Surface[] surfaces = draws.surfaces();
         int c1 = CORNER;
         int c2 = 2 * CORNER;
@@ -323,18 +317,18 @@ final class ChunkGeometry {
         VertexColours lit = surface.lit() ? colours : null;
         boolean flat = surface.shading() == Shading.FLAT;
         for (int k = 0; k < 3; k++) {
-            putColour(dst, k * CORNER + VertexLayout.varying(COLOUR_SLOT), lit, d, c + k, flat);
+            putColour(dst, k * CORNER + VertexLayout.varying(PixelState.COLOUR_SLOT), lit, d, c + k, flat);
         }
     }
 
     /**
      * Writes the lit colour r, g, b of the last of mesh corners {@code c .. c+2} of draw {@code d} (OpenGL's
-     * provoking vertex, {@link Shading#FLAT}) into flat values {@link #FLAT_COLOUR}.. of {@code dst}, or
+     * provoking vertex, {@link Shading#FLAT}) into flat values {@link PixelState#FLAT_COLOUR}.. of {@code dst}, or
      * white for an unlit material ({@code colours} null in a frame without a lit one). Only frames whose
      * lit materials are all flat carry their colour so ({@link FrameGeometry#FLAT_LIT_LAYOUT}).
      */
     private static void loadFlatColour(double[] dst, VertexColours colours, int d, int c, Surface surface) {
-        putColour(dst, FLAT_COLOUR, surface.lit() ? colours : null, d, c + 2, true);
+        putColour(dst, PixelState.FLAT_COLOUR, surface.lit() ? colours : null, d, c + 2, true);
     }
 
     /**

@@ -1,6 +1,7 @@
 package dev.trisect.pipeline;
 
 import dev.trisect.raster.OutlineProbe;
+import dev.trisect.raster.PixelState;
 import dev.trisect.raster.RowKnots;
 import dev.trisect.raster.ScreenTriangles;
 import java.util.Arrays;
@@ -49,15 +50,15 @@ final class PieceLookup {
         // or, without a smooth material, once per triangle in flat values 0..2, every corner's.
         double[] rgb = null;
         int fs = t.layout().flats();
-        if (t.layout().varyings() > ChunkGeometry.COLOUR_SLOT) {
+        if (t.layout().varyings() > PixelState.COLOUR_SLOT) {
             rgb = new double[9];
             for (int k = 0; k < 3; k++) {
-                System.arraycopy(t.attributes(), a + k * cs + 1 + ChunkGeometry.COLOUR_SLOT, rgb, 3 * k, 3);
+                System.arraycopy(t.attributes(), a + k * cs + 1 + PixelState.COLOUR_SLOT, rgb, 3 * k, 3);
             }
-        } else if (fs >= ChunkGeometry.FLAT_COLOUR + 3) {
+        } else if (fs >= PixelState.FLAT_COLOUR + 3) {
             rgb = new double[9];
             for (int k = 0; k < 3; k++) {
-                System.arraycopy(t.flats(), i * fs + ChunkGeometry.FLAT_COLOUR, rgb, 3 * k, 3);
+                System.arraycopy(t.flats(), i * fs + PixelState.FLAT_COLOUR, rgb, 3 * k, 3);
             }
         }
         return new PieceInfo(index, t.ids()[i], t.levels()[i], t.perPixel()[i],

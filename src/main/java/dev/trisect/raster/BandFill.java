@@ -83,8 +83,9 @@ public final class BandFill {
 
     /**
      * Notes which command of the next {@link #fill} calls writes frame pixel {@code pixel} last (for the
-     * pixel inspector: a line or a label over a triangle), or stops noting with -1. Costs a branch per
-     * command, none per pixel.
+     * pixel inspector: a line or a label over a triangle), or stops noting with -1. Costs one test per
+     * band while nothing is noted (a noting band runs its commands through a loop of its own), none per
+     * pixel.
      *
      * @param pixel index of the pixel in the frame ({@code y * width + x}), within the rows filled, or -1
      */

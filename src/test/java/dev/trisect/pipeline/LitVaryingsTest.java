@@ -9,6 +9,7 @@ import dev.trisect.light.Surface;
 import dev.trisect.math.Mat4;
 import dev.trisect.mesh.Mesh;
 import dev.trisect.mesh.MeshBuilder;
+import dev.trisect.raster.PixelState;
 import dev.trisect.raster.ScreenTriangles;
 import dev.trisect.render.Colour;
 import dev.trisect.render.CullMode;
@@ -77,8 +78,8 @@ class LitVaryingsTest {
                     double[] a = st.attributes();
                     double[] f = st.flats();
                     for (int k = 0; k < 3 * st.count(); k++) {
-                        int o = layout.flats() > 0 ? k / 3 * layout.flats() + ChunkGeometry.FLAT_COLOUR
-                                : k * st.cornerStride() + 1 + ChunkGeometry.COLOUR_SLOT;
+                        int o = layout.flats() > 0 ? k / 3 * layout.flats() + PixelState.FLAT_COLOUR
+                                : k * st.cornerStride() + 1 + PixelState.COLOUR_SLOT;
                         double[] from = layout.flats() > 0 ? f : a;
                         out.add(new double[] {from[o], from[o + 1], from[o + 2]});
                     }
