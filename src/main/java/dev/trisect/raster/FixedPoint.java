@@ -18,6 +18,21 @@ public final class FixedPoint {
     private FixedPoint() {
     }
 
+    /**
+     * The first pixel (row or column) whose centre is at or after {@code v} sub-pixel steps:
+     * ceil((v - HALF) / ONE), by a shift (an arithmetic shift is floor division by a power of two for
+     * every int, where {@link Math#floorDiv} by the constant costs a division's fix-ups and a branch, per
+     * triangle and band).
+     */
+    static int firstCentre(int v) {
+        return -((HALF - v) >> BITS);
+    }
+
+    /** One past the last pixel whose centre is at or before {@code v} sub-pixel steps: floor((v - HALF) / ONE) + 1. */
+    static int endCentre(int v) {
+        return ((v - HALF) >> BITS) + 1;
+    }
+
     /** A screen coordinate in pixels snapped to the grid, rounding to nearest (ties to even, as lrint). */
     public static int snap(double pixels) {
         return (int) Math.rint(pixels * ONE);

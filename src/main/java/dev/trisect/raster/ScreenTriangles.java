@@ -354,18 +354,14 @@ public final class ScreenTriangles {
     public int firstRow(int triangle) {
         int f = triangle * FIXED_STRIDE;
         int minY = Math.min(fixed[f + 1], Math.min(fixed[f + 3], fixed[f + 5]));
-        return ceilDiv(minY - FixedPoint.HALF, FixedPoint.ONE);
+        return FixedPoint.firstCentre(minY);
     }
 
     /** One past the largest pixel row whose centre the triangle can cover. */
     public int endRow(int triangle) {
         int f = triangle * FIXED_STRIDE;
         int maxY = Math.max(fixed[f + 1], Math.max(fixed[f + 3], fixed[f + 5]));
-        return Math.floorDiv(maxY - FixedPoint.HALF, FixedPoint.ONE) + 1;
-    }
-
-    static int ceilDiv(int a, int b) {
-        return -Math.floorDiv(-a, b);
+        return FixedPoint.endCentre(maxY);
     }
 
     /**

@@ -119,8 +119,9 @@ final class SpanSolver {
         lowerEdge = (top + 1) % 3;
         long midY = c[2 * mid + 1];
         // Rows before midRow have centres above mid; midRow's centre is at mid's height if exact.
-        midRow = (int) -Math.floorDiv(HALF - midY, (long) ONE);
-        midExact = Math.floorMod(midY - HALF, (long) ONE) == 0;
+        // Floor division and remainder by ONE as a shift and a mask (exact for every long).
+        midRow = (int) -((HALF - midY) >> FixedPoint.BITS);
+        midExact = ((midY - HALF) & (ONE - 1)) == 0;
     }
 
     /**

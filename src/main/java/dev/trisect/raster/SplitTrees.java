@@ -284,7 +284,7 @@ public final class SplitTrees {
         for (int p = from; p < to; p++) {
             int o = p * ScreenTriangles.FIXED_STRIDE;
             int minX = Math.min(f[o], Math.min(f[o + 2], f[o + 4]));
-            firstColumns[p] = ScreenTriangles.ceilDiv(minX - FixedPoint.HALF, FixedPoint.ONE);
+            firstColumns[p] = FixedPoint.firstCentre(minX);
             // The piece's affine planes exactly as the piece-by-piece fill set them up; a piece whose
             // snapped corners enclose no area (which that fill gave no pixel) has none: a pixel centre
             // its region holds takes the input triangle's perspective-correct mapping.

@@ -11,7 +11,6 @@ import dev.trisect.tessellate.VertexLayout;
  */
 final class TriangleSetup {
     private static final int ONE = FixedPoint.ONE;
-    private static final int HALF = FixedPoint.HALF;
     /** Texel coordinates below this magnitude fit 32.32 fixed point with room for stepping. */
     private static final double FIXED_POINT_LIMIT = 1 << 30;
 
@@ -107,11 +106,11 @@ final class TriangleSetup {
         int maxX = (int) Math.max(ax, Math.max(bx, cx));
         int minY = (int) Math.min(ay, Math.min(by, cy));
         int maxY = (int) Math.max(ay, Math.max(by, cy));
-        firstColumn = ScreenTriangles.ceilDiv(minX - HALF, ONE);
+        firstColumn = FixedPoint.firstCentre(minX);
         colStart = Math.max(x0, firstColumn);
-        colEnd = Math.min(x1, Math.floorDiv(maxX - HALF, ONE) + 1);
-        rowStart = Math.max(y0, ScreenTriangles.ceilDiv(minY - HALF, ONE));
-        rowEnd = Math.min(y1, Math.floorDiv(maxY - HALF, ONE) + 1);
+        colEnd = Math.min(x1, FixedPoint.endCentre(maxX));
+        rowStart = Math.max(y0, FixedPoint.firstCentre(minY));
+        rowEnd = Math.min(y1, FixedPoint.endCentre(maxY));
         if (colStart >= colEnd || rowStart >= rowEnd) {
             return false;
         }
