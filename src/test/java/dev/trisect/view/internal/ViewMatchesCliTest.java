@@ -31,6 +31,8 @@ import org.junit.jupiter.api.io.TempDir;
 class ViewMatchesCliTest {
     @TempDir
     Path dir;
+    /** Renders made so far: each writes a file of its own. */
+    private int renders;
 
     /** Runs the render loop until it has drawn a frame with {@code settings}; returns that frame. */
     private static FrameSlot viewFrame(ViewState state, ViewSettings settings) throws Exception {
@@ -58,7 +60,7 @@ class ViewMatchesCliTest {
 
     /** Pixels of the view's frame that differ from {@code render} of the same frame on the command line. */
     private int differingPixels(SceneAsset scene, FrameSlot f) throws Exception {
-        Path out = dir.resolve("cli-" + System.nanoTime() + ".png");
+        Path out = dir.resolve("cli-" + renders++ + ".png");
         List<String> args = new ArrayList<>(CliArgs.render(scene, f.camera, f.drawnRender, f.width(), f.height()));
         args.add("--out");
         args.add(out.toString());
