@@ -3,8 +3,11 @@
 # then B A, ...), each timed by the rendering thread's CPU time, one thread. Steadier than timing
 # separate runs on a shared machine, since both builds see the same load at the same moments.
 # THREADS=2 renders with two threads instead: each pair interleaves the builds frame by frame
-# (A B B A ...) and times every frame by the wall clock (the table) and by the process's CPU time
-# (a second table), since the rendering thread's own CPU time misses its helper's work.
+# (A B B A ...) and times every frame by the wall clock (the table) and by the CPU time of that
+# build's rendering threads (a second table): the calling thread's and the helpers its renderers
+# started, each by its own clock, named in the output. Not the process clock, which would count the
+# JIT compiler's and the collector's threads (serving both builds in this one JVM) into whichever
+# frame is running, and ticks too coarsely for a frame.
 # Prints per path the median CPU ms per frame of each build and the B/A ratio of each pair (median
 # and range), and with the affine path listed, the CPU time per extra piece of the tessellated
 # paths (their frames fill the affine frame's pixels).

@@ -4,12 +4,14 @@ import java.net.URL;
 import java.net.URLClassLoader;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Set;
 import java.util.function.LongSupplier;
 
 /**
  * Two builds in one JVM, their frames interleaved, timed by the rendering thread's CPU time (one
- * thread) or by the wall clock and the process's CPU time (more threads): see
+ * thread) or by the wall clock and the CPU time of the frame's rendering threads (more threads): see
  * side-by-side.sh. Arguments: frame-classes-A frame-classes-B A.jar B.jar scene WxH reps frames threads path...
  */
 public final class SideBySide {
@@ -28,7 +30,15 @@ public final class SideBySide {
         List<String> paths = Arrays.asList(args).subList(9, args.length);
         LongSupplier[][] frame = new LongSupplier[2][paths.size()];
         long[][] pieces = new long[2][paths.size()];
+        // Each build's rendering threads: this thread and the helpers its renderers started.
+        ThreadMXBean cpu = ManagementFactory.getThreadMXBean();
+        long[][] renderers = new long[2][];
+        String[] helperNames = new String[2];
         for (int b = 0; b < 2; b++) {
+            Set<Long> before = new HashSet<>();
+            for (long id : cpu.getAllThreadIds()) {
+                before.add(id);
+            }
             URL[] urls = {Path.of(args[b]).toUri().toURL(), Path.of(jars[b]).toUri().toURL()};
             Class<?> c = new URLClassLoader(urls, ClassLoader.getPlatformClassLoader()).loadClass("Frame");
             for (int p = 0; p < paths.size(); p++) {
@@ -38,20 +48,31 @@ public final class SideBySide {
                     pieces[b][p] = frame[b][p].getAsLong();
                 }
             }
+            List<Long> ids = new java.util.ArrayList<>(List.of(Thread.currentThread().getId()));
+            Set<String> names = new java.util.TreeSet<>();
+            for (java.lang.management.ThreadInfo t : cpu.getThreadInfo(cpu.getAllThreadIds())) {
+                if (t != null && !before.contains(t.getThreadId())) {
+                    ids.add(t.getThreadId());
+                    names.add(t.getThreadName());
+                }
+            }
+            renderers[b] = ids.stream().mapToLong(Long::longValue).toArray();
+            helperNames[b] = names.size() + " helpers " + names;
         }
         double[][][] ms = new double[2][paths.size()][reps];
         double[][][] cpuMs = new double[2][paths.size()][reps];
         if (threads == 1) {
             oneThread(frame, frames, ms);
         } else {
-            threads(frame, frames, ms, cpuMs);
+            threads(frame, frames, ms, cpuMs, renderers);
         }
         System.out.printf("%s %s, %s, %d pairs of %d frames; A = %s, B = %s%n", scene, args[5],
                 threads == 1 ? "one thread, CPU ms per frame" : threads + " threads, wall ms per frame", reps, frames,
                 jars[0], jars[1]);
         table("path", paths, pieces, ms);
         if (threads > 1) {
-            System.out.println("CPU ms per frame, all Java threads (the renderers' helpers among them):");
+            System.out.printf("CPU ms per frame of the frame's rendering threads (this thread and its build's %s,"
+                    + " B's %s; not the compiler's, the collector's or the other build's):%n", helperNames[0], helperNames[1]);
             table("cpu", paths, pieces, cpuMs);
         }
         int affine = paths.indexOf("affine");
@@ -109,14 +130,16 @@ public final class SideBySide {
     /**
      * Renderers of several threads, whose work the calling thread's CPU time does not hold: each pair
      * interleaves the builds frame by frame (A B B A A B ..., so that neither is always first after the
-     * other) and times each frame by the wall clock and by the CPU time of all the JVM's Java threads
-     * (the renderers' helpers among them; per-thread clocks, as the process clock counts in 10 ms ticks).
+     * other) and times each frame by the wall clock and by the CPU time of that build's rendering threads
+     * ({@code renderers[b]}: this thread and the helpers its renderers started, each by its own clock;
+     * the process clock would count the compiler's and the collector's threads, which serve both
+     * builds, and ticks in 10 ms).
      * A pair's figure per build is the median of its frames, so that a frame stalled by another
      * process on this shared machine does not move it.
      */
-    private static void threads(LongSupplier[][] frame, int frames, double[][][] ms, double[][][] cpuMs) {
+    private static void threads(LongSupplier[][] frame, int frames, double[][][] ms, double[][][] cpuMs,
+                                long[][] renderers) {
         ThreadMXBean cpu = ManagementFactory.getThreadMXBean();
-        long[] ids = cpu.getAllThreadIds();
         double[][] wall = new double[2][frames];
         double[][] used = new double[2][frames];
         for (int r = 0; r < ms[0][0].length; r++) {
@@ -124,11 +147,11 @@ public final class SideBySide {
                 for (int f = 0; f < frames; f++) {
                     for (int k = 0; k < 2; k++) {
                         int b = (r + f) % 2 == 0 ? k : 1 - k;
-                        long c0 = cpuTime(cpu, ids);
+                        long c0 = cpuTime(cpu, renderers[b]);
                         long t0 = System.nanoTime();
                         frame[b][p].getAsLong();
                         wall[b][f] = (System.nanoTime() - t0) / 1e6;
-                        used[b][f] = (cpuTime(cpu, ids) - c0) / 1e6;
+                        used[b][f] = (cpuTime(cpu, renderers[b]) - c0) / 1e6;
                     }
                 }
                 for (int b = 0; b < 2; b++) {
