@@ -48,6 +48,8 @@ final class ChunkGeometry {
     static final double LARGE = 0x1p26;
     /** Doubles between the corners of the triangle being culled: room for the largest layout's clip vertex. */
     private static final int CORNER = VertexLayout.FIRST_VARYING + VertexLayout.MAX_VARYINGS;
+    /** The flat colour of an unlit material in a flat-lit frame: white, the texel unchanged. */
+    private static final double WHITE = PixelState.flatColour(1, 1, 1);
     /** Triangles per timing batch inside a chunk. */
     private static final int BATCH = 1024;
 
@@ -64,7 +66,8 @@ final class ChunkGeometry {
      * @param layout          the vertices' varyings (s, t first), carried on to the pixel loops
      * @param colours         the lit vertices' colours when a material is lit, else null; a layout with
      *                        more than two varyings carries r, g, b in varyings 2..4 (white where unlit),
-     *                        one with flat values the provoking corner's r, g, b in flat values 0..2
+     *                        one with flat values the provoking corner's colour in flat value
+     *                        {@link PixelState#FLAT_COLOUR} ({@link PixelState#flatColour})
      */
     record Input(Draws draws, double[] clip, boolean[] invalidPosition, RenderSettings settings,
                  Viewport viewport, double guardX, double guardY, boolean split, PieceBudget budget,
@@ -207,8 +210,13 @@ final class ChunkGeometry {
         double[] corner = w.corners;
         VertexColours colours = in.colours();
         boolean carriesColour = in.layout().varyings() > PixelState.COLOUR_SLOT;
-        boolean flatColour = in.layout().flats() >= PixelState.FLAT_COLOUR + 3;
+        boolean flatColour = in.layout().flats() > PixelState.FLAT_COLOUR;
         Surface[] surfaces = draws.surfaces();
+        // A flat-lit frame's colours: per vertex, packed once when lit (VertexColours), and the
+        // provoking vertex of each triangle.
+        double[] flatColours = flatColour && colours != null ? colours.flatColours() : null;
+        int[] provoking = flatColours != null ? colours.provoking(d) : null;
+        int vertexBase = flatColours != null ? colours.base(d) : 0;
         int c1 = CORNER;
         int c2 = 2 * CORNER;
         for (int t = from; t < to; t++) {
@@ -260,7 +268,9 @@ final class ChunkGeometry {
             if (carriesColour) {
                 loadColours(corner, colours, d, c, surfaces[material]);
             } else if (flatColour) {
-                loadFlatColour(w.flat, colours, d, c, surfaces[material]);
+                // OpenGL's provoking vertex, the last corner's (Shading.FLAT), or white for an unlit material.
+                w.flat[PixelState.FLAT_COLOUR] = flatColours != null && surfaces[material].lit()
+                        ? flatColours[vertexBase + provoking[t]] : WHITE;
             }
             int g = clipper.clipCode(corner[X], corner[Y], corner[Z], corner[W])
                     | clipper.clipCode(corner[c1 + X], corner[c1 + Y], corner[c1 + Z], corner[c1 + W])
@@ -319,16 +329,6 @@ final class ChunkGeometry {
         for (int k = 0; k < 3; k++) {
             putColour(dst, k * CORNER + VertexLayout.varying(PixelState.COLOUR_SLOT), lit, d, c + k, flat);
         }
-    }
-
-    /**
-     * Writes the lit colour r, g, b of the last of mesh corners {@code c .. c+2} of draw {@code d} (OpenGL's
-     * provoking vertex, {@link Shading#FLAT}) into flat values {@link PixelState#FLAT_COLOUR}.. of {@code dst}, or
-     * white for an unlit material ({@code colours} null in a frame without a lit one). Only frames whose
-     * lit materials are all flat carry their colour so ({@link FrameGeometry#FLAT_LIT_LAYOUT}).
-     */
-    private static void loadFlatColour(double[] dst, VertexColours colours, int d, int c, Surface surface) {
-        putColour(dst, PixelState.FLAT_COLOUR, surface.lit() ? colours : null, d, c + 2, true);
     }
 
     /**
@@ -420,12 +420,10 @@ final class ChunkGeometry {
         w.batchIds[count] = id;
         w.batchMaterials[count] = material;
         int fs = w.flatStride;
-        if (fs == 3) {
-            // A flat-lit frame's colour (FrameGeometry.FLAT_LIT_LAYOUT): three stores, not a copy of
-            // a length the compiler does not know.
-            w.batchFlats[3 * count] = w.flat[0];
-            w.batchFlats[3 * count + 1] = w.flat[1];
-            w.batchFlats[3 * count + 2] = w.flat[2];
+        if (fs == 1) {
+            // A flat-lit frame's colour (FrameGeometry.FLAT_LIT_LAYOUT): one store, not a copy of a
+            // length the compiler does not know.
+            w.batchFlats[count] = w.flat[0];
         } else if (fs != 0) {
             System.arraycopy(w.flat, 0, w.batchFlats, count * fs, fs);
         }

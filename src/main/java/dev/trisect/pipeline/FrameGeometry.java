@@ -28,10 +28,11 @@ final class FrameGeometry {
     /** The layout of a lit frame: s, t, then the lit colour r, g, b (0..1) in varyings 2..4. */
     static final VertexLayout LIT_LAYOUT = VertexLayout.of(5);
     /**
-     * The layout of a lit frame without a smooth material: s, t, and the triangle's one colour r, g, b
-     * (0..1) as flat values 0..2, once per triangle instead of in each corner, clipped and split never.
+     * The layout of a lit frame without a smooth material: s, t, and the triangle's one colour as one
+     * flat value ({@link dev.trisect.raster.PixelState#flatColour}: r, g, b packed), once per triangle
+     * instead of in each corner, clipped and split never.
      */
-    static final VertexLayout FLAT_LIT_LAYOUT = VertexLayout.of(2, 3);
+    static final VertexLayout FLAT_LIT_LAYOUT = VertexLayout.of(2, 1);
 
     private final ClipSpace clipSpace = new ClipSpace();
     private final VertexColours vertexColours = new VertexColours();

@@ -47,7 +47,7 @@ final class PieceLookup {
             System.arraycopy(t.attributes(), a + k * cs, qst, 3 * k, 3);
         }
         // A frame carrying colours holds r, g, b in varyings 2..4: corner slots 3..5 after 1/w, s, t;
-        // or, without a smooth material, once per triangle in flat values 0..2, every corner's.
+        // or, without a smooth material, once per triangle in a flat value, packed: every corner's.
         double[] rgb = null;
         int fs = t.layout().flats();
         if (t.layout().varyings() > PixelState.COLOUR_SLOT) {
@@ -55,10 +55,11 @@ final class PieceLookup {
             for (int k = 0; k < 3; k++) {
                 System.arraycopy(t.attributes(), a + k * cs + 1 + PixelState.COLOUR_SLOT, rgb, 3 * k, 3);
             }
-        } else if (fs >= PixelState.FLAT_COLOUR + 3) {
+        } else if (fs > PixelState.FLAT_COLOUR) {
             rgb = new double[9];
-            for (int k = 0; k < 3; k++) {
-                System.arraycopy(t.flats(), i * fs + PixelState.FLAT_COLOUR, rgb, 3 * k, 3);
+            double flat = t.flats()[i * fs + PixelState.FLAT_COLOUR];
+            for (int k = 0; k < 9; k++) {
+                rgb[k] = PixelState.flatChannel(flat, k % 3);
             }
         }
         return new PieceInfo(index, t.ids()[i], t.levels()[i], t.perPixel()[i],

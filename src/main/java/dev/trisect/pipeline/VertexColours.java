@@ -5,6 +5,7 @@ import dev.trisect.light.Lights;
 import dev.trisect.light.Surface;
 import dev.trisect.math.Mat4;
 import dev.trisect.mesh.Mesh;
+import dev.trisect.raster.PixelState;
 import dev.trisect.render.Shading;
 import java.util.Arrays;
 import java.util.HashMap;
@@ -25,8 +26,11 @@ final class VertexColours {
     /** Lit vertices per task. */
     private static final int BLOCK = 4096;
 
-    /** One mesh's vertices: distinct (position, normal, material) of its corners. */
-    private record Vertices(int[] ofCorner, int[] corner) {
+    /**
+     * One mesh's vertices: distinct (position, normal, material) of its corners; per corner its
+     * vertex, per vertex its first corner, per triangle its last corner's vertex (the provoking one).
+     */
+    private record Vertices(int[] ofCorner, int[] corner, int[] provoking) {
         int count() {
             return corner.length;
         }
@@ -37,6 +41,8 @@ final class VertexColours {
     /** Per draw and one past the last: its first vertex in {@link #colours}. */
     private int[] base = new int[5];
     private float[] colours = new float[0];
+    /** Per vertex its colour as a flat value ({@link PixelState#flatColour}), beside {@link #colours}. */
+    private double[] flatColours = new double[0];
     private double[] factors = new double[0];
     private boolean lit;
     /** Unlit frames in a row since the last lit one. */
@@ -89,6 +95,7 @@ final class VertexColours {
         int total = base[n];
         if (colours.length < 3 * total) {
             colours = new float[3 * total];
+            flatColours = new double[total];
         }
         Surface[] surfaces = draws.surfaces();
         int materials = draws.firstMaterial(n);
@@ -180,6 +187,7 @@ final class VertexColours {
             }
             LightingEquation.colour(lights, p[0] / w, p[1] / w, p[2] / w, p[3], p[4], p[5], factors,
                     LightingEquation.MATERIAL_STRIDE * material, colours, 3 * v);
+            flatColours[v] = PixelState.flatColour(colours[3 * v], colours[3 * v + 1], colours[3 * v + 2]);
         }
     }
 
@@ -200,6 +208,27 @@ final class VertexColours {
     int index(int d, int corner, boolean flat) {
         int c = flat ? corner - corner % 3 + 2 : corner;
         return 3 * (base[d] + drawTables[d].ofCorner()[c]);
+    }
+
+    /**
+     * The colours of every vertex as flat values ({@link PixelState#flatColour}), draw {@code d}'s
+     * vertex v's at {@code base(d) + v}; read-only.
+     */
+    double[] flatColours() {
+        return flatColours;
+    }
+
+    /** Where draw {@code d}'s vertices start in {@link #flatColours()}. */
+    int base(int d) {
+        return base[d];
+    }
+
+    /**
+     * Per triangle of draw {@code d}'s mesh, the vertex of its last corner (OpenGL's provoking vertex,
+     * {@link Shading#FLAT}), counted from {@link #base(int)}; read-only.
+     */
+    int[] provoking(int d) {
+        return drawTables[d].provoking();
     }
 
     /** The distinct (position, normal, material) of a mesh's corners, in order of first use. */
@@ -224,7 +253,11 @@ final class VertexColours {
                 ofCorner[c] = v;
             }
         }
-        return new Vertices(ofCorner, Arrays.copyOf(first, count));
+        int[] provoking = new int[corners / 3];
+        for (int t = 0; t < provoking.length; t++) {
+            provoking[t] = ofCorner[3 * t + 2];
+        }
+        return new Vertices(ofCorner, Arrays.copyOf(first, count), provoking);
     }
 
     private record Key(int position, int normal, int material) {

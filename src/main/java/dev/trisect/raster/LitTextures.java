@@ -238,9 +238,9 @@ public final class LitTextures {
 
     /** {@code t} with every texel modulated by {@code colour} ({@link #colourKey}), alpha kept. */
     static Texture build(Texture t, long colour) {
-        int r16 = (int) (colour >>> 34);
-        int g16 = (int) (colour >>> 17) & 0x1FFFF;
-        int b16 = (int) colour & 0x1FFFF;
+        int r16 = channel16(colour, 0);
+        int g16 = channel16(colour, 1);
+        int b16 = channel16(colour, 2);
         int[] src = t.argb();
         int[] lit = new int[src.length];
         for (int i = 0; i < src.length; i++) {
@@ -252,6 +252,11 @@ public final class LitTextures {
     /** Colour (r16, g16, b16), each 0..{@link Modulate#ONE}, as one number: 17 bits each. */
     static long colourKey(int r16, int g16, int b16) {
         return (long) r16 << 34 | (long) g16 << 17 | b16;
+    }
+
+    /** Channel {@code k} (0 red, 1 green, 2 blue) of a {@link #colourKey}: 0..{@link Modulate#ONE}. */
+    static int channel16(long colour, int k) {
+        return (int) (colour >>> 17 * (2 - k)) & 0x1FFFF;
     }
 
     /** The fewest covered pixels a run of triangles showing {@code t} must have to be counted. */
@@ -319,12 +324,12 @@ public final class LitTextures {
         }
 
         /**
-         * The copy of {@code material}'s texture modulated by the colour in {@code t} (its red16, green16,
-         * blue16), or null when there is none: the triangle's covered pixels, from {@code spans}, are
+         * The copy of {@code material}'s texture modulated by the colour in {@code t} (its colourKey),
+         * or null when there is none: the triangle's covered pixels, from {@code spans}, are
          * then counted as demand for it.
          */
         Texture lit(int material, TriangleSetup t, int[] spans) {
-            Texture copy = start(material, colourKey(t.red16, t.green16, t.blue16));
+            Texture copy = start(material, t.colourKey);
             if (copy == null) {
                 long covered = 0;
                 for (int j = 0, rows = 2 * (t.rowEnd - t.rowStart); j < rows; j += 2) {

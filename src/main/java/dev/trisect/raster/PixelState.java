@@ -32,8 +32,8 @@ public final class PixelState {
     /** The first varying slot a {@link #MODULATE} colour reads (r; g and b follow). */
     public static final int COLOUR_SLOT = 2;
     /**
-     * The first flat value ({@link VertexLayout#flats()}) holding a triangle's one colour (r; g and b
-     * follow) in a layout with no colour varyings: what a {@link #MODULATE} colour reads there.
+     * The flat value ({@link VertexLayout#flats()}) holding a triangle's one colour in a layout with no
+     * colour varyings: what a {@link #MODULATE} colour reads there, as {@link #flatColour} packs it.
      */
     public static final int FLAT_COLOUR = 0;
 
@@ -86,10 +86,30 @@ public final class PixelState {
 
     /**
      * Whether triangles of {@code layout} can be filled in {@code state}: a modulating state needs a
-     * colour, in varyings ({@link #varyingsNeeded}) or once per triangle in flat values
-     * {@link #FLAT_COLOUR}..+2.
+     * colour, in varyings ({@link #varyingsNeeded}) or once per triangle in flat value
+     * {@link #FLAT_COLOUR}.
      */
     public static boolean carried(int state, VertexLayout layout) {
-        return varyingsNeeded(state) <= layout.varyings() || layout.flats() >= FLAT_COLOUR + 3;
+        return varyingsNeeded(state) <= layout.varyings() || layout.flats() > FLAT_COLOUR;
+    }
+
+    /**
+     * The flat value {@link #FLAT_COLOUR} of a triangle of colour r, g, b (0..1): the three channels in
+     * the 16 fractional bits the modulation takes them in (kept within 0..2<sup>16</sup>, as a
+     * {@link #MODULATE} pixel rounds its colour), packed 17 bits each into one integer below
+     * 2<sup>51</sup>, which a double holds exactly. One number per triangle instead of three: the
+     * geometry copies it, the setup unpacks it with shifts ({@link TriangleSetup}), and it is the key of
+     * the triangle's lit copy of its texture ({@link LitTextures}).
+     */
+    public static double flatColour(double r, double g, double b) {
+        return LitTextures.colourKey(Modulate.f16(r), Modulate.f16(g), Modulate.f16(b));
+    }
+
+    /**
+     * Channel {@code k} (0 red, 1 green, 2 blue) of a {@link #flatColour}, 0..1: the colour a pixel
+     * is modulated by, within 2<sup>-17</sup> of the channel packed.
+     */
+    public static double flatChannel(double flatColour, int k) {
+        return LitTextures.channel16((long) flatColour, k) / (double) Modulate.ONE;
     }
 }

@@ -82,7 +82,7 @@ public final class Rasterizer {
         if (!PixelState.carried(state, triangles.layout())) {
             throw new IllegalStateException("material " + material + " modulates by a colour (pixel state "
                     + state + ") but its triangles carry " + triangles.layout().varyings()
-                    + " varyings and no flat colour: the frame needs VertexLayout.of(5) or VertexLayout.of(2, 3)");
+                    + " varyings and no flat colour: the frame needs VertexLayout.of(5) or VertexLayout.of(2, 1)");
         }
         return state;
     }

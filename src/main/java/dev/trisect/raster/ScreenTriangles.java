@@ -267,13 +267,10 @@ public final class ScreenTriangles {
         int o = append(v[a + sx], v[a + sx + 1], v[b + sx], v[b + sx + 1], v[c + sx], v[c + sx + 1], id, material,
                 fallback, level, link0, link1, link2);
         int fs = flatStride;
-        if (fs == 3) {
-            // A flat-lit frame's colour, once per triangle: three stores, not a copy of a length the
-            // compiler does not know.
-            int f = 3 * (count - 1);
-            flats[f] = flat[flatAt];
-            flats[f + 1] = flat[flatAt + 1];
-            flats[f + 2] = flat[flatAt + 2];
+        if (fs == 1) {
+            // A flat-lit frame's colour (PixelState.flatColour), once per triangle: one store, not a
+            // copy of a length the compiler does not know.
+            flats[count - 1] = flat[flatAt];
         } else if (fs != 0) {
             System.arraycopy(flat, flatAt, flats, fs * (count - 1), fs);
         }

@@ -168,6 +168,7 @@ final class TreeFill {
         one.red16 = input.red16;
         one.green16 = input.green16;
         one.blue16 = input.blue16;
+        one.colourKey = input.colourKey;
         one.firstColumn = trees.firstColumns()[piece];
         one.fixedPointSafe = false;
         one.rowStart = y;

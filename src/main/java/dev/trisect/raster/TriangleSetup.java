@@ -69,6 +69,8 @@ final class TriangleSetup {
     int red16;
     int green16;
     int blue16;
+    /** The same colour as one number ({@link LitTextures#colourKey}), where {@link #constantColour}. */
+    long colourKey;
 
     /**
      * Sets up triangle {@code tri} of {@code triangles} for filling pixels {@code [x0, x1) x [y0, y1)}:
@@ -208,14 +210,15 @@ final class TriangleSetup {
                 tPlane.fit(x0, y0, ex1, ey1, ex2, ey2, inv, t0, t1, t2);
             }
             int fs = triangles.layout().flats();
-            if (oneColour && fs >= PixelState.FLAT_COLOUR + 3) {
-                // A flat-lit frame's colour, once per triangle: one colour by construction.
-                double[] flat = triangles.flats();
-                int f = tri * fs + PixelState.FLAT_COLOUR;
+            if (oneColour && fs > PixelState.FLAT_COLOUR) {
+                // A flat-lit frame's colour, once per triangle and packed (PixelState.flatColour): one
+                // colour by construction, unpacked by shifts.
+                long key = (long) triangles.flats()[tri * fs + PixelState.FLAT_COLOUR];
                 constantColour = true;
-                red16 = Modulate.f16(flat[f]);
-                green16 = Modulate.f16(flat[f + 1]);
-                blue16 = Modulate.f16(flat[f + 2]);
+                colourKey = key;
+                red16 = LitTextures.channel16(key, 0);
+                green16 = LitTextures.channel16(key, 1);
+                blue16 = LitTextures.channel16(key, 2);
             }
             return;
         }
@@ -228,6 +231,7 @@ final class TriangleSetup {
             red16 = Modulate.f16(at[c0 + skipFrom]);
             green16 = Modulate.f16(at[c0 + skipFrom + 1]);
             blue16 = Modulate.f16(at[c0 + skipFrom + 2]);
+            colourKey = LitTextures.colourKey(red16, green16, blue16);
             skipTo = skipFrom + 3;
         }
         for (int k = 1; k < cs; k++) {

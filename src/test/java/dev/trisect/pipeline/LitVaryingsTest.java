@@ -78,10 +78,14 @@ class LitVaryingsTest {
                     double[] a = st.attributes();
                     double[] f = st.flats();
                     for (int k = 0; k < 3 * st.count(); k++) {
-                        int o = layout.flats() > 0 ? k / 3 * layout.flats() + PixelState.FLAT_COLOUR
-                                : k * st.cornerStride() + 1 + PixelState.COLOUR_SLOT;
-                        double[] from = layout.flats() > 0 ? f : a;
-                        out.add(new double[] {from[o], from[o + 1], from[o + 2]});
+                        if (layout.flats() > 0) {
+                            double flat = f[k / 3 * layout.flats() + PixelState.FLAT_COLOUR];
+                            out.add(new double[] {PixelState.flatChannel(flat, 0), PixelState.flatChannel(flat, 1),
+                                    PixelState.flatChannel(flat, 2)});
+                        } else {
+                            int o = k * st.cornerStride() + 1 + PixelState.COLOUR_SLOT;
+                            out.add(new double[] {a[o], a[o + 1], a[o + 2]});
+                        }
                     }
                 }
             }
@@ -102,8 +106,20 @@ class LitVaryingsTest {
     }
 
     private static void assertColour(double[] want, double[] got) {
+        assertColour(want, got, 1e-6);
+    }
+
+    /**
+     * A colour carried once per triangle, packed in 16 fractional bits a channel (PixelState.flatColour):
+     * within half a step of them, 2^-17, of the lit colour (plus its float's rounding).
+     */
+    private static void assertFlatColour(double[] want, double[] got) {
+        assertColour(want, got, 0x1p-17 + 1e-6);
+    }
+
+    private static void assertColour(double[] want, double[] got, double tolerance) {
         for (int i = 0; i < 3; i++) {
-            assertEquals(want[i], got[i], 1e-6, "channel " + i);
+            assertEquals(want[i], got[i], tolerance, "channel " + i);
         }
     }
 
@@ -121,7 +137,7 @@ class LitVaryingsTest {
         List<double[]> got = cornerColours(draws(Shading.FLAT, null), FrameGeometry.FLAT_LIT_LAYOUT);
         assertEquals(3, got.size());
         for (double[] c : got) {
-            assertColour(expected(CORNERS[2]), c);
+            assertFlatColour(expected(CORNERS[2]), c);
         }
     }
 
@@ -145,7 +161,7 @@ class LitVaryingsTest {
         List<double[]> got = cornerColours(draws, FrameGeometry.FLAT_LIT_LAYOUT, split);
         assertTrue(got.size() > 6, "pieces and a split input triangle");
         for (double[] c : got) {
-            assertColour(expected(CORNERS[2]), c);
+            assertFlatColour(expected(CORNERS[2]), c);
         }
     }
 
@@ -162,7 +178,7 @@ class LitVaryingsTest {
             assertEquals(0, id, "the triangle covers the pixel");
             PieceInfo piece = r.drawn().pieceAt(x, y, id, frame.depth()[y * 64 + x]);
             for (int k = 0; k < 3; k++) {
-                assertColour(expected(CORNERS[2]), java.util.Arrays.copyOfRange(piece.colours(), 3 * k, 3 * k + 3));
+                assertFlatColour(expected(CORNERS[2]), java.util.Arrays.copyOfRange(piece.colours(), 3 * k, 3 * k + 3));
             }
         }
     }
@@ -177,7 +193,7 @@ class LitVaryingsTest {
         got = cornerColours(draws(Shading.FLAT, Surface.UNLIT), FrameGeometry.FLAT_LIT_LAYOUT);
         assertEquals(6, got.size());
         for (int k = 3; k < 6; k++) {
-            assertColour(new double[] {1, 1, 1}, got.get(k));
+            assertFlatColour(new double[] {1, 1, 1}, got.get(k));
         }
     }
 

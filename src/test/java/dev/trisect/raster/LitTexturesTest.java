@@ -47,6 +47,25 @@ class LitTexturesTest {
     }
 
     @Test
+    void aFlatColourIsTheKeyOfItsChannelsInSixteenBitsAndUnpacksToThem() {
+        Random random = new Random(27);
+        for (int i = 0; i < 10_000; i++) {
+            // Some channels beyond [0, 1]: a colour a hair outside is clamped as the modulation clamps it.
+            double r = random.nextDouble() * 1.2 - 0.1;
+            double g = i == 0 ? 1 : random.nextDouble();
+            double b = i == 0 ? 0 : random.nextDouble();
+            int[] want = {Modulate.f16(r), Modulate.f16(g), Modulate.f16(b)};
+            double flat = PixelState.flatColour(r, g, b);
+            assertEquals(LitTextures.colourKey(want[0], want[1], want[2]), (long) flat);
+            assertEquals(flat, Math.rint(flat), "an integer, exact in a double");
+            for (int k = 0; k < 3; k++) {
+                assertEquals(want[k], LitTextures.channel16((long) flat, k));
+                assertEquals(want[k] / 65536.0, PixelState.flatChannel(flat, k));
+            }
+        }
+    }
+
+    @Test
     void aKeyIsBuiltOnItsSecondAskingAndUsedFromTheNextFrame() {
         LitTextures cache = new LitTextures(1, LitTextures.DEFAULT_BUDGET);
         assertNull(frame(cache, A, GREY, 256));
