@@ -17,7 +17,9 @@ import dev.trisect.texture.Texture;
  * threads; then fogs the band, outlines it when the borders are on (the tasks of an {@link Outlines}
  * pass come first), and draws the band's commands of the lists that come after the triangles — the
  * frame's lines ({@link LineGeometry}), then its quads ({@link QuadGeometry}) — all while its rows are
- * in cache. One {@link BandFill} per thread dispatches each command by its kind.
+ * in cache. With fog, a thread fogs (and then outlines and finishes) its bands {@link #FOG_GROUP} at a
+ * time, after filling them, and the bands left at the end in one more run of the pool. One
+ * {@link BandFill} per thread dispatches each command by its kind.
  */
 final class BandPass {
     /**
@@ -42,7 +44,19 @@ final class BandPass {
         long overlayNanos;
         long[] afterPixels = new long[0];
         long[] afterNanos = new long[0];
+        /** With fog: this thread's filled bands not yet fogged, in the order filled. */
+        int[] unfogged = new int[0];
+        int unfoggedCount;
     }
+
+    /**
+     * With fog, how many bands a thread fills before it fogs them (then each in turn). The fog pass's
+     * wide vector arithmetic lowers the core's clock for a while after it on processors with AVX-512
+     * frequency licences, so fogging each band as soon as it was filled slowed the fill of every band
+     * after it; 8 bands (128 rows, 2 MB of colour and depth at 1920 pixels) are still in the last-level
+     * cache when fogged (docs/performance.md, "Fog").
+     */
+    private static final int FOG_GROUP = 8;
 
     private final Lane[] lanes;
     /** The frame pixel whose last writer among the after-lists is noted ({@link #probe}), or -1. */
@@ -111,14 +125,16 @@ final class BandPass {
             }
             java.util.Arrays.fill(lane.afterPixels, 0);
             java.util.Arrays.fill(lane.afterNanos, 0);
+            int bandCount = BandBins.bandCount(frame.height(), FrameRenderer.BAND_ROWS);
+            if (lane.unfogged.length < bandCount) {
+                lane.unfogged = new int[bandCount];
+            }
+            lane.unfoggedCount = 0;
         }
         probeList = -1;
         probeCommand = -1;
-        boolean perspective = settings.mode().divides();
         double knotError = settings.mode().knots() ? settings.knotError() : 0;
-        int width = frame.width();
         int height = frame.height();
-        int background = settings.background();
         boolean borders = settings.borders();
         if (borders) {
             outlines.begin(chunkCount);
@@ -126,49 +142,49 @@ final class BandPass {
         }
         int prepTasks = borders ? chunkCount : 0;
         int bands = BandBins.bandCount(height, FrameRenderer.BAND_ROWS);
+        Band band = new Band(frame, chunks, chunkCount, textures, states, lit, settings, fog, outlines, after,
+                foggedLists, pool);
         pool.run(prepTasks + bands, (thread, task) -> {
             Lane lane = lanes[thread];
-            long t0 = System.nanoTime();
             if (task < prepTasks) {
+                long t0 = System.nanoTime();
                 outlines.prepare(task, chunks.get(task).out, settings.borderStyle(), settings.tessellation(), height);
                 lane.overlayNanos += System.nanoTime() - t0;
                 return;
             }
             int b = task - prepTasks;
-            int y0 = b * FrameRenderer.BAND_ROWS;
-            int y1 = Math.min(height, y0 + FrameRenderer.BAND_ROWS);
-            frame.clearRows(y0, y1, background);
-            BandFill fill = lane.fill;
-            Rasterizer rasterizer = fill.rasterizer();
-            rasterizer.filter(settings.filter());
-            rasterizer.spans(knotError);
-            rasterizer.states(states);
-            rasterizer.lit(lit == null ? null : lit.lane(thread));
-            for (int c = 0; c < chunkCount; c++) {
-                lane.pixels += fill.fill(frame, chunks.get(c).commands, b, textures, perspective, 0, y0, width, y1);
+            band.fill(lane, thread, b);
+            if (fog == null) {
+                band.finish(lane, thread, b);
+                return;
             }
-            long foggedNanos = 0;
-            if (fog != null) {
-                // The lists fogged with the triangles (the lines) come before the pass: each of their
-                // pixels is then fogged by its own depth, which it has written.
-                for (int l = 0; l < foggedLists; l++) {
-                    foggedNanos += drawAfter(lane, fill, frame, after, l, b, textures, perspective, width, y0, y1);
-                }
-                fog.apply(frame, y0, y1, lane.fogRows);
-            }
-            lane.fillNanos += System.nanoTime() - t0 - foggedNanos;
-            // The wait for the preparations is neither filling nor outlining: it is left out of both measures.
-            if (borders && outlines.awaitPrepared(pool)) {
-                long t2 = System.nanoTime();
-                outlines.drawBand(thread, frame, b, y0, y1);
-                lane.overlayNanos += System.nanoTime() - t2;
-            }
-            // The lines, then the quads, after the band's triangles, fog and outlines, as they were submitted
-            // (with fog, the lines came before it).
-            for (int l = fog != null ? foggedLists : 0; l < after.length; l++) {
-                drawAfter(lane, fill, frame, after, l, b, textures, perspective, width, y0, y1);
+            lane.unfogged[lane.unfoggedCount++] = b;
+            if (lane.unfoggedCount == FOG_GROUP) {
+                band.fogAndFinish(lane, thread);
             }
         });
+        if (fog != null) {
+            // The bands left unfogged at the end, fogged and finished each by any thread.
+            int left = 0;
+            for (Lane lane : lanes) {
+                left += lane.unfoggedCount;
+            }
+            if (left > 0) {
+                int[] rest = new int[left];
+                int n = 0;
+                for (Lane lane : lanes) {
+                    System.arraycopy(lane.unfogged, 0, rest, n, lane.unfoggedCount);
+                    n += lane.unfoggedCount;
+                    lane.unfoggedCount = 0;
+                }
+                pool.run(left, (thread, i) -> {
+                    Lane lane = lanes[thread];
+                    lane.unfogged[0] = rest[i];
+                    lane.unfoggedCount = 1;
+                    band.fogAndFinish(lane, thread);
+                });
+            }
+        }
         long pixels = 0;
         long fill = 0;
         long overlay = 0;
@@ -184,6 +200,119 @@ final class BandPass {
             }
         }
         return new Result(pixels, fill, overlay, afterPixels, afterNanos);
+    }
+
+    /** One frame's draw: what every band task needs. */
+    private final class Band {
+        private final Framebuffer frame;
+        private final Chunks chunks;
+        private final int chunkCount;
+        private final Texture[] textures;
+        private final int[] states;
+        private final LitTextures lit;
+        private final RenderSettings settings;
+        private final FogPass fog;
+        private final Outlines outlines;
+        private final Commands[] after;
+        private final int foggedLists;
+        private final WorkerPool pool;
+        private final boolean perspective;
+        private final double knotError;
+        private final int width;
+        private final int height;
+
+        Band(Framebuffer frame, Chunks chunks, int chunkCount, Texture[] textures, int[] states, LitTextures lit,
+             RenderSettings settings, FogPass fog, Outlines outlines, Commands[] after, int foggedLists,
+             WorkerPool pool) {
+            this.frame = frame;
+            this.chunks = chunks;
+            this.chunkCount = chunkCount;
+            this.textures = textures;
+            this.states = states;
+            this.lit = lit;
+            this.settings = settings;
+            this.fog = fog;
+            this.outlines = outlines;
+            this.after = after;
+            this.foggedLists = foggedLists;
+            this.pool = pool;
+            perspective = settings.mode().divides();
+            knotError = settings.mode().knots() ? settings.knotError() : 0;
+            width = frame.width();
+            height = frame.height();
+        }
+
+        private int y0(int b) {
+            return b * FrameRenderer.BAND_ROWS;
+        }
+
+        private int y1(int b) {
+            return Math.min(height, y0(b) + FrameRenderer.BAND_ROWS);
+        }
+
+        /** Sets thread {@code thread}'s rasterizer to this frame's state. */
+        private BandFill setUp(Lane lane, int thread) {
+            BandFill fill = lane.fill;
+            Rasterizer rasterizer = fill.rasterizer();
+            rasterizer.filter(settings.filter());
+            rasterizer.spans(knotError);
+            rasterizer.states(states);
+            rasterizer.lit(lit == null ? null : lit.lane(thread));
+            return fill;
+        }
+
+        /**
+         * Clears band {@code b} and fills the commands of every chunk into it; with fog, then the lists
+         * fogged with the triangles (the lines), so that each of their pixels is fogged by its own depth.
+         */
+        void fill(Lane lane, int thread, int b) {
+            long t0 = System.nanoTime();
+            int y0 = y0(b);
+            int y1 = y1(b);
+            frame.clearRows(y0, y1, settings.background());
+            BandFill fill = setUp(lane, thread);
+            for (int c = 0; c < chunkCount; c++) {
+                lane.pixels += fill.fill(frame, chunks.get(c).commands, b, textures, perspective, 0, y0, width, y1);
+            }
+            long foggedNanos = 0;
+            if (fog != null) {
+                for (int l = 0; l < foggedLists; l++) {
+                    foggedNanos += drawAfter(lane, fill, frame, after, l, b, textures, perspective, width, y0, y1);
+                }
+            }
+            lane.fillNanos += System.nanoTime() - t0 - foggedNanos;
+        }
+
+        /** Fogs the bands {@code lane} holds unfogged, then finishes each ({@link #finish}). */
+        void fogAndFinish(Lane lane, int thread) {
+            setUp(lane, thread);
+            for (int i = 0; i < lane.unfoggedCount; i++) {
+                int b = lane.unfogged[i];
+                long t0 = System.nanoTime();
+                    fog.apply(frame, y0(b), y1(b), lane.fogRows);
+                lane.fillNanos += System.nanoTime() - t0;
+                finish(lane, thread, b);
+            }
+            lane.unfoggedCount = 0;
+        }
+
+        /**
+         * Outlines band {@code b} when the borders are on, then draws its commands of the lists that come
+         * after the triangles, fog and outlines (with fog, the lines came before it), as submitted.
+         */
+        void finish(Lane lane, int thread, int b) {
+            int y0 = y0(b);
+            int y1 = y1(b);
+            // The wait for the preparations is neither filling nor outlining: it is left out of both measures.
+            if (settings.borders() && outlines.awaitPrepared(pool)) {
+                long t2 = System.nanoTime();
+                outlines.drawBand(thread, frame, b, y0, y1);
+                lane.overlayNanos += System.nanoTime() - t2;
+            }
+            for (int l = fog != null ? foggedLists : 0; l < after.length; l++) {
+                drawAfter(lane, lane.fill, frame, after, l, b, textures, perspective, width, y0, y1);
+            }
+        }
     }
 
     /**
