@@ -53,10 +53,11 @@ final class BandPass {
      * With fog, how many bands a thread fills before it fogs them (then each in turn). The fog pass's
      * wide vector arithmetic lowers the core's clock for a while after it on processors with AVX-512
      * frequency licences, so fogging each band as soon as it was filled slowed the fill of every band
-     * after it; 8 bands (128 rows, 2 MB of colour and depth at 1920 pixels) are still in the last-level
-     * cache when fogged (docs/performance.md, "Fog").
+     * after it. 16 bands are 256 rows, 4 MB of colour and depth at 1920 pixels: still in a last-level
+     * cache when fogged. (Fogging the whole frame at its end saved a little more on this machine, but
+     * rereads from memory the rows of any frame larger than the cache; docs/performance.md, "Fog".)
      */
-    private static final int FOG_GROUP = 8;
+    private static final int FOG_GROUP = 16;
 
     private final Lane[] lanes;
     /** The frame pixel whose last writer among the after-lists is noted ({@link #probe}), or -1. */
