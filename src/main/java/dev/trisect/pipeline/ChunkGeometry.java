@@ -155,11 +155,7 @@ final class ChunkGeometry {
                 int o = i * stride;
                 int firstPiece = chunk.out.count();
                 tess.process(b, o, o + clipStride, o + 2 * clipStride, split, w.sink);
-                if (!split) {
-                    for (int p = firstPiece; p < chunk.out.count(); p++) {
-                        chunk.commands.add(Commands.TRIANGLE, p, chunk.out.firstRow(p), chunk.out.endRow(p));
-                    }
-                } else if (tess.splitTree().complete() && tess.splitTree().leaves() > 0) {
+                if (split && tess.splitTree().complete() && tess.splitTree().leaves() > 0) {
                     if (tess.splitTree().nodes() == 0) {
                         // Not split: its one piece is the input triangle, filled as the other paths fill one.
                         chunk.commands.add(Commands.TRIANGLE, firstPiece, chunk.out.firstRow(firstPiece),
@@ -178,6 +174,16 @@ final class ChunkGeometry {
             long t2 = System.nanoTime();
             chunk.clipNanos += t1 - t0;
             chunk.tessellateNanos += t2 - t1;
+        }
+        if (!split) {
+            // An unsplit frame's commands are its screen triangles in order: added in a loop of their
+            // own, as in the per-triangle loop above C2 kept this one's values on the stack.
+            long t0 = System.nanoTime();
+            ScreenTriangles out = chunk.out;
+            for (int p = 0, n = out.count(); p < n; p++) {
+                chunk.commands.add(Commands.TRIANGLE, p, out.firstRow(p), out.endRow(p));
+            }
+            chunk.tessellateNanos += System.nanoTime() - t0;
         }
         chunk.pieces = tess.pieces();
         chunk.offScreen = tess.culledOffScreen();
