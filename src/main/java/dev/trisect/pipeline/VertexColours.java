@@ -41,8 +41,13 @@ final class VertexColours {
     /** Per draw and one past the last: its first vertex in {@link #colours}. */
     private int[] base = new int[5];
     private float[] colours = new float[0];
-    /** Per vertex its colour as a flat value ({@link PixelState#flatColour}), beside {@link #colours}. */
+    /**
+     * Per vertex its colour as a flat value ({@link PixelState#flatColour}), beside {@link #colours}:
+     * made only for frames without a smooth material ({@link #flatValues}).
+     */
     private double[] flatColours = new double[0];
+    /** Whether {@link #flatColours} holds the values of {@link #colours}. */
+    private boolean flatValues;
     private double[] factors = new double[0];
     private boolean lit;
     /** Unlit frames in a row since the last lit one. */
@@ -105,9 +110,12 @@ final class VertexColours {
         for (int m = 0; m < materials; m++) {
             surfaces[m].factors(factors, LightingEquation.MATERIAL_STRIDE * m);
         }
-        if (unchanged(draws, materials)) {
+        // The packed colours only for a frame without a smooth material, the one layout that reads them.
+        boolean flat = !draws.anySmooth();
+        if (unchanged(draws, materials) && (flatValues || !flat)) {
             return;
         }
+        flatValues = flat;
         Mat4[] normalMatrices = new Mat4[n];
         for (int d = 0; d < n; d++) {
             try {
@@ -120,7 +128,7 @@ final class VertexColours {
         int blocks = (total + BLOCK - 1) / BLOCK;
         double[][] scratch = new double[pool.threads()][6];
         pool.run(blocks, (thread, b) -> light(draws, lights, normalMatrices, scratch[thread], b * BLOCK,
-                Math.min(total, (b + 1) * BLOCK)));
+                Math.min(total, (b + 1) * BLOCK), flat));
     }
 
     /**
@@ -158,8 +166,9 @@ final class VertexColours {
         return false;
     }
 
-    /** Lights frame vertices from..to-1. */
-    private void light(Draws draws, Lights lights, Mat4[] normalMatrices, double[] p, int from, int to) {
+    /** Lights frame vertices from..to-1, and with {@code flat} packs their colours as flat values too. */
+    private void light(Draws draws, Lights lights, Mat4[] normalMatrices, double[] p, int from, int to,
+                       boolean flat) {
         int d = Math.max(0, Arrays.binarySearch(base, 0, draws.size() + 1, from));
         while (base[d + 1] <= from) {
             d++;
@@ -187,7 +196,9 @@ final class VertexColours {
             }
             LightingEquation.colour(lights, p[0] / w, p[1] / w, p[2] / w, p[3], p[4], p[5], factors,
                     LightingEquation.MATERIAL_STRIDE * material, colours, 3 * v);
-            flatColours[v] = PixelState.flatColour(colours[3 * v], colours[3 * v + 1], colours[3 * v + 2]);
+            if (flat) {
+                flatColours[v] = PixelState.flatColour(colours[3 * v], colours[3 * v + 1], colours[3 * v + 2]);
+            }
         }
     }
 

@@ -68,7 +68,11 @@ class LitVaryingsTest {
      * input triangle) of the frame, in {@code layout}: its r, g, b varyings, or its triangle's flat ones.
      */
     private static List<double[]> cornerColours(Draws draws, VertexLayout layout, RenderSettings settings) {
-        FrameGeometry geometry = new FrameGeometry(1);
+        return cornerColours(new FrameGeometry(1), draws, layout, settings);
+    }
+
+    private static List<double[]> cornerColours(FrameGeometry geometry, Draws draws, VertexLayout layout,
+                                                RenderSettings settings) {
         List<double[]> out = new ArrayList<>();
         try (WorkerPool pool = new WorkerPool(1, "lit-varyings-test")) {
             FrameGeometry.Result r = geometry.run(draws, settings, 64, 64, pool);
@@ -149,6 +153,20 @@ class LitVaryingsTest {
         for (int k = 0; k < 3; k++) {
             assertColour(expected(CORNERS[2]), got.get(k));
             assertColour(expected(CORNERS[k]), got.get(3 + k));
+        }
+    }
+
+    @Test
+    void aFlatFrameAfterASmoothOneUnderTheSameLightsCarriesItsColour() {
+        // The vertex colours are kept between the two frames (same lights, meshes and factors); only
+        // the flat frame needs them packed.
+        FrameGeometry geometry = new FrameGeometry(1);
+        cornerColours(geometry, draws(Shading.SMOOTH, null), FrameGeometry.LIT_LAYOUT, SETTINGS);
+        List<double[]> got = cornerColours(geometry, draws(Shading.FLAT, null), FrameGeometry.FLAT_LIT_LAYOUT,
+                SETTINGS);
+        assertEquals(3, got.size());
+        for (double[] c : got) {
+            assertFlatColour(expected(CORNERS[2]), c);
         }
     }
 
