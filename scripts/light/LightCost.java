@@ -9,6 +9,7 @@ import dev.trisect.pipeline.Draws;
 import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.render.Colour;
 import dev.trisect.render.Fog;
+import dev.trisect.render.FrameStats;
 import dev.trisect.render.Framebuffer;
 import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
@@ -31,7 +32,8 @@ import java.util.Locale;
  * thread's own (the frame is drawn on the calling thread), else the sum over the JVM's Java threads
  * (the renderer's, each by its own clock; not the collector's or the compiler's). Prints per path and
  * variant the median wall ms of each and the median, lowest and highest of the per-round ratios of
- * wall time and of CPU time.
+ * wall time and of CPU time; then the median ms of each stage of the frame as FrameStats times it
+ * (transform, clip, tessellate, fill) in the plain frame and the variant, and their median ratio.
  *
  *   java -cp target/trisect.jar scripts/light/LightCost.java SCENE WxH THREADS ROUNDS [VARIANT...]
  *
@@ -87,6 +89,7 @@ public final class LightCost {
                 }
                 double[][] ms = new double[setups.size()][rounds];
                 double[][] cpu = new double[setups.size()][rounds];
+                double[][][] stage = new double[setups.size()][STAGES.length][rounds];
                 for (int warm = 0; warm < 10; warm++) {
                     for (int k = 0; k < setups.size(); k++) {
                         frame(renderers.get(k), draws, s, vp, setups.get(k), path, fb);
@@ -97,6 +100,7 @@ public final class LightCost {
                         long c = cpuNanos(threads);
                         ms[k][round] = frame(renderers.get(k), draws, s, vp, setups.get(k), path, fb);
                         cpu[k][round] = (cpuNanos(threads) - c) / 1e6;
+                        stages(lastStats, stage[k], round);
                     }
                 }
                 for (int k = 1; k < setups.size(); k++) {
@@ -107,6 +111,13 @@ public final class LightCost {
                             path.mode().name().toLowerCase(Locale.ROOT), variants.get(k - 1), median(ms[0]),
                             median(ms[k]), ratio[rounds / 2], ratio[0], ratio[rounds - 1], cpuRatio[cpuRatio.length / 2], cpuRatio[0],
                             cpuRatio[cpuRatio.length - 1]);
+                    StringBuilder line = new StringBuilder(String.format(Locale.ROOT, "%-12s %-16s stages",
+                            path.mode().name().toLowerCase(Locale.ROOT), variants.get(k - 1)));
+                    for (int i = 0; i < STAGES.length; i++) {
+                        line.append(String.format(Locale.ROOT, "  %s %.2f/%.2f ms (%.3f)", STAGES[i],
+                                median(stage[0][i]), median(stage[k][i]), ratios(stage[k][i], stage[0][i])[rounds / 2]));
+                    }
+                    System.out.println(line);
                 }
                 System.out.printf(Locale.ROOT, "%-12s lit copies kept: %d, %.1f MB%n",
                         path.mode().name().toLowerCase(Locale.ROOT), r.litTextures().size(),
@@ -194,8 +205,26 @@ public final class LightCost {
         draws.clear();
         setup.add(draws, s.mesh(), s.textureArray(), vp);
         long t = System.nanoTime();
-        r.render(draws, path, fb);
+        lastStats = r.render(draws, path, fb);
         return (System.nanoTime() - t) / 1e6;
+    }
+
+    /**
+     * The frame's stages as {@link FrameStats} times them: the transform (with the vertex colours and
+     * the lit copies' bookkeeping between frames), culling and clipping, splitting and projecting, and
+     * the fill; the middle two summed over the threads' chunks.
+     */
+    private static final String[] STAGES = {"transform", "clip", "tessellate", "fill"};
+
+    /** The stages of the frame last drawn ({@link #frame}). */
+    private static FrameStats lastStats;
+
+    /** Puts {@code f}'s stage times, ms, at {@code round} of {@code into}'s rows, in {@link #STAGES} order. */
+    private static void stages(FrameStats f, double[][] into, int round) {
+        into[0][round] = f.transformNanos() / 1e6;
+        into[1][round] = f.clipNanos() / 1e6;
+        into[2][round] = f.tessellateNanos() / 1e6;
+        into[3][round] = f.rasterNanos() / 1e6;
     }
 
     /**
