@@ -57,7 +57,7 @@ final class PieceLookup {
             }
         } else if (fs > PixelState.FLAT_COLOUR) {
             rgb = new double[9];
-            double flat = t.flats()[i * fs + PixelState.FLAT_COLOUR];
+            double flat = t.attributes()[a + t.flatOffset() + PixelState.FLAT_COLOUR];
             for (int k = 0; k < 9; k++) {
                 rgb[k] = PixelState.flatChannel(flat, k % 3);
             }

@@ -210,7 +210,7 @@ public final class SplitTrees {
     }
 
     /**
-     * As the other form, with the input triangle's flat values ({@link ScreenTriangles#flats()}) from
+     * As the other form, with the input triangle's flat values ({@link ScreenTriangles#flatOffset()}) from
      * {@code flat[flatAt..]}, as many as the layout has.
      */
     public int add(double[] v, int a, int b, int c, int id, int material, double[] flat, int flatAt, SplitTree tree,

@@ -213,7 +213,7 @@ final class TriangleSetup {
             if (oneColour && fs > PixelState.FLAT_COLOUR) {
                 // A flat-lit frame's colour, once per triangle and packed (PixelState.flatColour): one
                 // colour by construction, unpacked by shifts.
-                long key = (long) triangles.flats()[tri * fs + PixelState.FLAT_COLOUR];
+                long key = (long) at[a + triangles.flatOffset() + PixelState.FLAT_COLOUR];
                 constantColour = true;
                 colourKey = key;
                 red16 = LitTextures.channel16(key, 0);

@@ -80,10 +80,9 @@ class LitVaryingsTest {
                 for (ScreenTriangles st : List.of(geometry.chunks().get(c).out, geometry.chunks().get(c).trees.inputs())) {
                     assertSame(layout, st.layout());
                     double[] a = st.attributes();
-                    double[] f = st.flats();
                     for (int k = 0; k < 3 * st.count(); k++) {
                         if (layout.flats() > 0) {
-                            double flat = f[k / 3 * layout.flats() + PixelState.FLAT_COLOUR];
+                            double flat = a[k / 3 * st.attributeStride() + st.flatOffset() + PixelState.FLAT_COLOUR];
                             out.add(new double[] {PixelState.flatChannel(flat, 0), PixelState.flatChannel(flat, 1),
                                     PixelState.flatChannel(flat, 2)});
                         } else {
