@@ -41,6 +41,8 @@ trap 'rm -rf "$tmp"' EXIT
 frame_for "$a" "$tmp/a"
 frame_for "$b" "$tmp/b"
 javac -d "$tmp/run" "$src/PerfPair.java"
+# The frames are checked before perf runs, so that a bad scene or path is one line, not a profile.
+java -cp "$tmp/run" PerfPair "$tmp/a" "$a" "$tmp/b" "$b" "$scene" 1920x1080 "$path" "$threads" 0 -
 perf record -q -k mono -F 2000 -o "$tmp/perf.data" -- java -XX:+UnlockDiagnosticVMOptions -XX:+DumpPerfMapAtExit \
   -cp "$tmp/run" PerfPair "$tmp/a" "$a" "$tmp/b" "$b" "$scene" 1920x1080 "$path" "$threads" "$pairs" "$tmp/frames.txt"
 perf script -i "$tmp/perf.data" -F comm,time,ip,sym -G --ns 2>/dev/null \
@@ -64,6 +66,9 @@ for line in sys.stdin:
 n = len(frames) // 2
 a, b = count
 ta, tb = sum(a.values()), sum(b.values())
+if ta == 0 or tb == 0:
+    sys.exit("side-by-side-perf: perf gave no samples of a rendering thread inside the frames of "
+             + ("A" if ta == 0 else "B") + " (may perf sample the threads of this user?)")
 print(f"{sys.argv[2]} {sys.argv[3]}, {sys.argv[4]} threads, {n} frames each; samples per frame (0.5 ms each): "
       f"A {ta / n:.2f}, B {tb / n:.2f}, B/A {tb / ta:.3f}")
 print("%8s %8s %6s  method (samples per frame; B-A: samples in all)" % ("A", "B", "B-A"))

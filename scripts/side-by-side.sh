@@ -44,6 +44,10 @@ pairs=${5:-15}
 frames=${6:-5}
 threads=${THREADS:-1}
 [[ $threads =~ ^[1-9][0-9]*$ ]] || { echo "$0: THREADS must be a positive whole number, not '$threads'" >&2; exit 2; }
+[[ $size =~ ^[1-9][0-9]*x[1-9][0-9]*$ ]] || { echo "$0: the size must be WxH, as 1920x1080, not '$size'" >&2; exit 2; }
+for n in "$pairs" "$frames"; do
+  [[ $n =~ ^[1-9][0-9]*$ ]] || { echo "$0: pairs and frames must be positive whole numbers, not '$n'" >&2; exit 2; }
+done
 shift $(( $# < 6 ? $# : 6 ))
 paths=("$@")
 [[ ${#paths[@]} -gt 0 ]] || paths=(affine edge error perspective)

@@ -46,6 +46,17 @@ jvms=${JVMS:-1}
 for c in $counts; do
   [[ $c == 1 || $c == 2 ]] || { echo "$0: COUNTS holds 1 and/or 2, not '$c'" >&2; exit 2; }
 done
+for p in ${PATHS:-}; do
+  [[ $p =~ ^(perspective|affine|edge|spans)$ ]] \
+    || { echo "$0: PATHS holds perspective, affine, edge and/or spans, not '$p'" >&2; exit 2; }
+done
+for f in ${FILTERS:-}; do
+  [[ $f =~ ^(nearest|bilinear|trilinear)$ ]] \
+    || { echo "$0: FILTERS holds nearest, bilinear and/or trilinear, not '$f'" >&2; exit 2; }
+done
+for n in "$pairs" "$frames" "$pairs2" "$frames2"; do
+  [[ $n =~ ^[1-9][0-9]*$ ]] || { echo "$0: PAIRS, FRAMES, PAIRS2 and FRAMES2 must be positive whole numbers, not '$n'" >&2; exit 2; }
+done
 if [[ -n ${OUT:-} ]]; then
   mkdir -p "$OUT"
   out=$OUT

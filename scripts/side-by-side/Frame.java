@@ -69,7 +69,13 @@ public final class Frame {
         }
         String[] filtered = parts[0].split("@", 2);
         if (filtered.length == 2) {
-            base = base.withFilter(TextureFilter.valueOf(filtered[1].toUpperCase(Locale.ROOT)));
+            TextureFilter filter;
+            try {
+                filter = TextureFilter.valueOf(filtered[1].toUpperCase(Locale.ROOT));
+            } catch (IllegalArgumentException e) {
+                throw new IllegalArgumentException("no filter " + filtered[1] + " in path " + path);
+            }
+            base = base.withFilter(filter);
         }
         RenderSettings settings = switch (filtered[0]) {
             case "perspective" -> base.withMode(RenderMode.PERSPECTIVE);

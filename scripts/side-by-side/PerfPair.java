@@ -1,4 +1,5 @@
 import java.io.PrintWriter;
+import java.lang.reflect.InvocationTargetException;
 import java.net.URL;
 import java.net.URLClassLoader;
 import java.nio.file.Path;
@@ -9,14 +10,30 @@ import java.util.function.LongSupplier;
  * alternating (A B, then B A, ...), each frame's start and end on the monotonic clock
  * ({@link System#nanoTime}, which perf's {@code -k mono} samples share) written to a file as
  * "start end build", so that every sample perf takes can be given to the frame, and so the build, it
- * fell in. Arguments: frame-classes-A A.jar frame-classes-B B.jar scene WxH path threads pairs out-file
+ * fell in. Arguments: frame-classes-A A.jar frame-classes-B B.jar scene WxH path threads pairs out-file;
+ * with 0 pairs it only makes both frames, to check the scene and path (a bad one is a one-line message
+ * and exit status 2).
  */
 public final class PerfPair {
     private PerfPair() {
     }
 
     public static void main(String[] args) throws Exception {
+        try {
+            run(args);
+        } catch (InvocationTargetException e) {
+            System.err.println("side-by-side-perf: " + e.getCause().getMessage());
+            System.exit(2);
+        } catch (IllegalArgumentException e) {
+            System.err.println("side-by-side-perf: " + e.getMessage());
+            System.exit(2);
+        }
+        System.exit(0);
+    }
+
+    private static void run(String[] args) throws Exception {
         String[] size = args[5].split("x");
+        int pairs = Integer.parseInt(args[8]);
         LongSupplier[] frame = new LongSupplier[2];
         for (int b = 0; b < 2; b++) {
             URL[] urls = {Path.of(args[2 * b]).toUri().toURL(), Path.of(args[2 * b + 1]).toUri().toURL()};
@@ -24,11 +41,13 @@ public final class PerfPair {
             frame[b] = (LongSupplier) c.getMethod("make", String.class, String.class, int.class, int.class, int.class)
                     .invoke(null, args[4], args[6], Integer.parseInt(size[0]), Integer.parseInt(size[1]),
                             Integer.parseInt(args[7]));
-            for (int k = 0; k < 60; k++) {
+            for (int k = 0; pairs > 0 && k < 60; k++) {
                 frame[b].getAsLong();
             }
         }
-        int pairs = Integer.parseInt(args[8]);
+        if (pairs == 0) {
+            return;
+        }
         long[] start = new long[2 * pairs];
         long[] end = new long[2 * pairs];
         int[] build = new int[2 * pairs];
@@ -46,6 +65,5 @@ public final class PerfPair {
                 w.println(start[i] + " " + end[i] + " " + build[i]);
             }
         }
-        System.exit(0);
     }
 }

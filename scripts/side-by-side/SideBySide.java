@@ -1,5 +1,6 @@
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
+import java.lang.reflect.InvocationTargetException;
 import java.net.URL;
 import java.net.URLClassLoader;
 import java.nio.file.Path;
@@ -19,6 +20,20 @@ public final class SideBySide {
     }
 
     public static void main(String[] args) throws Exception {
+        try {
+            run(args);
+        } catch (InvocationTargetException e) {
+            // A scene, path or filter the build does not have: Frame.make says which.
+            System.err.println("side-by-side: " + e.getCause().getMessage());
+            System.exit(2);
+        } catch (IllegalArgumentException e) {
+            System.err.println("side-by-side: " + e.getMessage());
+            System.exit(2);
+        }
+        System.exit(0);
+    }
+
+    private static void run(String[] args) throws Exception {
         String[] jars = {args[2], args[3]};
         String scene = args[4];
         String[] size = args[5].split("x");
