@@ -90,12 +90,53 @@ class FogFrameTest {
     }
 
     /**
+     * A frame of more bands than a thread fogs at once (720 rows: 45 bands of 16 against groups of 16)
+     * goes through both ways the fill pass fogs: groups fogged inside the run and the bands left over
+     * after it. Every band is fogged exactly once (a second pass would move each fogged pixel again,
+     * none would leave a pixel as it was), and one thread and two give the same frame.
+     */
+    @Test
+    void framesOfManyBandsAreFoggedOnceOnOneThreadAndOnTwo() {
+        int w = 400;
+        int h = 720;
+        SceneAsset scene = DemoScenes.byName("demo").orElseThrow();
+        Mat4 vp = scene.camera().viewProjection(new Viewport(w, h));
+        Colour haze = new Colour(0.6, 0.7, 0.8);
+        Fog fog = Fog.linear(3, 40, haze);
+        RenderSettings path = RenderSettings.defaults().withBackground(0x102030).withMode(RenderMode.SPANS);
+        Draws draws = new Draws();
+        Framebuffer clear = new Framebuffer(w, h);
+        try (FrameRenderer r = new FrameRenderer(1)) {
+            draws.add(scene.mesh(), scene.textureArray(), vp);
+            r.render(draws, path, clear);
+        }
+        Framebuffer[] fogged = new Framebuffer[2];
+        for (int threads = 1; threads <= 2; threads++) {
+            try (FrameRenderer r = new FrameRenderer(threads)) {
+                draws.clear();
+                draws.add(scene.mesh(), scene.textureArray(), vp);
+                draws.setFog(fog);
+                fogged[threads - 1] = new Framebuffer(w, h);
+                r.render(draws, path, fogged[threads - 1]);
+            }
+            int changed = checkFogged(clear, fogged[threads - 1], fog, haze, threads + " threads", w * h);
+            assertTrue(changed > w * h / 4, threads + " threads changed only " + changed + " pixels");
+        }
+        assertTrue(java.util.Arrays.equals(fogged[0].colour(), fogged[1].colour()), "one thread and two differ");
+    }
+
+    /**
      * Asserts that every pixel of {@code fogged} is {@code clear}'s blended towards the haze by the fog
      * factor of its own depth (depths unchanged, the background not fogged); returns how many changed.
      */
     private static int checkFogged(Framebuffer clear, Framebuffer fogged, Fog fog, Colour haze, String what) {
+        return checkFogged(clear, fogged, fog, haze, what, W * H);
+    }
+
+    private static int checkFogged(Framebuffer clear, Framebuffer fogged, Fog fog, Colour haze, String what,
+                                   int pixels) {
         int changed = 0;
-        for (int i = 0; i < W * H; i++) {
+        for (int i = 0; i < pixels; i++) {
             float q = clear.depth()[i];
             assertEquals(Float.floatToRawIntBits(q), Float.floatToRawIntBits(fogged.depth()[i]));
             int c = clear.colour()[i];
