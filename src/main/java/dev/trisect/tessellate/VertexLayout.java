@@ -16,7 +16,9 @@ package dev.trisect.tessellate;
  *
  * <p>A layout may also carry <em>flat</em> values ({@link #flats()}): values constant over a triangle,
  * as GLSL's {@code flat} qualifier and OpenGL's flat shading take the provoking vertex's, held once
- * per triangle beside it instead of in every vertex (a flat-shaded triangle's lit colour r, g, b).
+ * per triangle beside it instead of in every vertex. A flat-lit frame's one flat value is the
+ * triangle's lit colour packed into one number ({@code raster.PixelState.flatColour}: each channel rounded to
+ * 65536ths, clamped to 0..65536, in 17 bits; exact in a double), which the setup unpacks by shifts.
  * They are in no vertex, so the clipper and the tessellator never see them: a clipped or split
  * triangle's pieces keep their triangle's.
  *
