@@ -40,7 +40,9 @@ public final class FrameDemand {
     private Seen drawn;
     /** Whether an update hook asked for the next frame. Render thread. */
     private boolean animating;
-    /** {@link System#nanoTime} when the last frame started, for the pace. Render thread. */
+    /** The time the pace and the update hooks' steps are read from; set before the loop starts. */
+    volatile FrameClock clock = FrameClock.SYSTEM;
+    /** {@link #clock} when the last frame started, for the pace. Render thread. */
     private long lastStart;
     private boolean started;
 
@@ -94,8 +96,9 @@ public final class FrameDemand {
         }
         long next = lastStart + (long) (1e9 / cap);
         long wait;
-        while (!loop.stopping() && (wait = next - System.nanoTime()) > 0) {
-            java.util.concurrent.locks.LockSupport.parkNanos(wait);
+        FrameClock c = clock;
+        while (!loop.stopping() && (wait = next - c.nanos()) > 0) {
+            c.park(wait);
         }
     }
 

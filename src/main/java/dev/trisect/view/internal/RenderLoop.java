@@ -115,9 +115,9 @@ public final class RenderLoop implements Runnable {
 
     @Override
     public void run() {
-        long last = System.nanoTime();
-        FrameRate rate = new FrameRate();
         FrameDemand demand = state.demand;
+        long last = demand.clock.nanos();
+        FrameRate rate = new FrameRate();
         try {
             while (running) {
                 // Read before looking for work: a change made while looking still wakes the wait below.
@@ -139,7 +139,7 @@ public final class RenderLoop implements Runnable {
                 }
                 demand.pace(state, this);
                 ViewSettings settings = state.settings();
-                long now = System.nanoTime();
+                long now = demand.clock.nanos();
                 // Measured, never negative, and capped after a pause (idle, frozen, hidden, a slow frame).
                 double step = Math.max(0, Math.min(MAX_STEP_SECONDS, (now - last) / 1e9));
                 double dt = Math.min(0.1, step);

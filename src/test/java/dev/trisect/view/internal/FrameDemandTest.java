@@ -11,14 +11,17 @@ import dev.trisect.scene.Material;
 import dev.trisect.scene.Scene;
 import dev.trisect.scene.SceneObject;
 import dev.trisect.texture.ProceduralTextures;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.Test;
 
 /**
  * Frames only when needed: the render loop draws a still scene once and then idles, and draws again
  * for each change (scene, settings, size, camera) or while something animates; the cap bounds the
- * frame rate. Counts frames, never times them (the cap is checked as an upper bound only).
+ * frame rate. Counts frames, never times them (the cap and the steps are checked on a stepped clock).
  */
 class FrameDemandTest {
     private static long frames(ViewState state) {
@@ -112,29 +115,76 @@ class FrameDemandTest {
         assertTrue(!t.isAlive(), "an idle loop stops when asked, without a look to wait for");
     }
 
+    /**
+     * A clock that moves only when read (a microsecond a reading) and when the loop waits (by the
+     * wait): the pace and the steps it gives are then exact, however fast the machine runs.
+     */
+    private static final class SteppedClock implements FrameClock {
+        private final AtomicLong now = new AtomicLong(1_000_000_000L);
+
+        @Override
+        public long nanos() {
+            return now.addAndGet(1_000);
+        }
+
+        @Override
+        public void park(long nanos) {
+            now.addAndGet(nanos);
+        }
+    }
+
+    /**
+     * Frames that keep coming (an animation) start at least 1/cap apart, and the update hooks' steps
+     * add up to the time between them: both read from the loop's clock, a stepped one here, so the
+     * test times nothing.
+     */
     @Test
-    void animatedFramesKeepToTheCap() throws Exception {
+    void animatedFramesKeepToTheCapAndTheStepsAddUpToTheClock() throws Exception {
         ViewState state = new ViewState(dev.trisect.content.DemoScenes.floor());
         state.viewSize(32, 24);
         state.maxFrameRate(20);
+        SteppedClock clock = new SteppedClock();
+        state.demand.clock = clock;
         state.demand.keepDrawing("test", true);
+        List<double[]> calls = new CopyOnWriteArrayList<>();
         RenderLoop loop = new RenderLoop(state, new TripleBuffer(), () -> { }, 1);
+        loop.listener(new RenderLoop.LoopListener() {
+            @Override
+            public void frameDone(FrameReport report) {
+                loop.framePainted(report.frame());
+            }
+
+            @Override
+            public void problem(String message) {
+                throw new AssertionError(message);
+            }
+
+            @Override
+            public boolean update(double seconds, long frame) {
+                calls.add(new double[] {seconds, frame, clock.nanos()});
+                return false;
+            }
+        });
         Thread t = new Thread(loop, "test-render");
         t.start();
         try {
-            waitFor("the first frame", () -> frames(state) >= 1);
-            long f0 = frames(state);
-            long t0 = System.nanoTime();
-            Thread.sleep(1000);
-            long f1 = frames(state);
-            double seconds = (System.nanoTime() - t0) / 1e9;
-            // An upper bound only: a busy machine draws fewer, never more. One frame of slack at each end.
-            assertTrue(f1 - f0 <= 20 * seconds + 2, (f1 - f0) + " frames in " + seconds + " s at a cap of 20");
-            assertTrue(f1 > f0, "frames keep coming while asked for");
+            waitFor("thirty frames", () -> calls.size() >= 30);
         } finally {
             loop.stop();
             t.join(5000);
         }
+        List<double[]> c = List.copyOf(calls);
+        double sum = 0;
+        for (int i = 1; i < c.size(); i++) {
+            double step = c.get(i)[0];
+            assertTrue(step >= 1 / 20.0, "frame " + (long) c.get(i)[1] + " came " + step + " s after the one before, under a cap of 20");
+            assertTrue(step < 1 / 20.0 + 0.001, "step " + step + ": the loop waited longer than the cap asks");
+            assertEquals(c.get(i - 1)[1] + 1, c.get(i)[1], "one call per frame, numbered in order");
+            sum += step;
+        }
+        double elapsed = (c.get(c.size() - 1)[2] - c.get(0)[2]) / 1e9;
+        // Each step is read a few clock readings (microseconds) before its hook reads the clock.
+        assertEquals(elapsed, sum, 1e-4, c.size() + " steps against the clock");
     }
 
     @Test
