@@ -243,14 +243,6 @@ final class BandPass {
             height = frame.height();
         }
 
-        private int y0(int b) {
-            return b * FrameRenderer.BAND_ROWS;
-        }
-
-        private int y1(int b) {
-            return Math.min(height, y0(b) + FrameRenderer.BAND_ROWS);
-        }
-
         /** Sets thread {@code thread}'s rasterizer to this frame's state. */
         private BandFill setUp(Lane lane, int thread) {
             BandFill fill = lane.fill;
@@ -268,8 +260,8 @@ final class BandPass {
          */
         void fill(Lane lane, int thread, int b) {
             long t0 = System.nanoTime();
-            int y0 = y0(b);
-            int y1 = y1(b);
+            int y0 = firstRow(b);
+            int y1 = endRow(b, height);
             frame.clearRows(y0, y1, settings.background());
             BandFill fill = setUp(lane, thread);
             for (int c = 0; c < chunkCount; c++) {
@@ -290,7 +282,7 @@ final class BandPass {
             for (int i = 0; i < lane.unfoggedCount; i++) {
                 int b = lane.unfogged[i];
                 long t0 = System.nanoTime();
-                    fog.apply(frame, y0(b), y1(b), lane.fogRows);
+                fog.apply(frame, firstRow(b), endRow(b, height), lane.fogRows);
                 lane.fillNanos += System.nanoTime() - t0;
                 finish(lane, thread, b);
             }
@@ -302,8 +294,8 @@ final class BandPass {
          * after the triangles, fog and outlines (with fog, the lines came before it), as submitted.
          */
         void finish(Lane lane, int thread, int b) {
-            int y0 = y0(b);
-            int y1 = y1(b);
+            int y0 = firstRow(b);
+            int y1 = endRow(b, height);
             // The wait for the preparations is neither filling nor outlining: it is left out of both measures.
             if (settings.borders() && outlines.awaitPrepared(pool)) {
                 long t2 = System.nanoTime();
@@ -336,6 +328,16 @@ final class BandPass {
         return probeCommand;
     }
 
+    /** Band {@code b}'s first row, frame pixels. */
+    private static int firstRow(int b) {
+        return b * FrameRenderer.BAND_ROWS;
+    }
+
+    /** One past band {@code b}'s last row in a frame {@code height} rows tall. */
+    private static int endRow(int b, int height) {
+        return Math.min(height, firstRow(b) + FrameRenderer.BAND_ROWS);
+    }
+
     /**
      * Counts, per pixel of a {@code width x height} frame, how many screen triangles of chunks
      * 0..chunkCount-1 cover its centre, ignoring depth (see {@link FrameRecord#coverage}).
@@ -344,8 +346,8 @@ final class BandPass {
         int[] counts = new int[width * height];
         int bands = BandBins.bandCount(height, FrameRenderer.BAND_ROWS);
         pool.run(bands, (thread, b) -> {
-            int y0 = b * FrameRenderer.BAND_ROWS;
-            int y1 = Math.min(height, y0 + FrameRenderer.BAND_ROWS);
+            int y0 = firstRow(b);
+            int y1 = endRow(b, height);
             BandFill fill = lanes[thread].fill;
             for (int c = 0; c < chunkCount; c++) {
                 fill.count(counts, width, chunks.get(c).commands, b, 0, y0, width, y1);
