@@ -9,16 +9,11 @@
 #
 # Environment: REPS (default 3), JAVA (default java). Needs python3 for the summary.
 set -euo pipefail
-if [[ $# -lt 2 ]]; then
-  echo "usage: $0 A.jar B.jar [bench options...]" >&2
-  exit 2
-fi
+. "$(dirname "$0")/two-jars.sh"
+two_jars "A.jar B.jar [bench options...]" 2 "" "$@"
 a=$1
 b=$2
 shift 2
-for jar in "$a" "$b"; do
-  [[ -f $jar ]] || { echo "$0: no such jar: $jar" >&2; exit 2; }
-done
 reps=${REPS:-3}
 java=${JAVA:-java}
 out=$(mktemp)

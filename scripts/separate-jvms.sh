@@ -16,15 +16,10 @@
 # PATH as for side-by-side.sh (edge, error@trilinear, edge+borders, ...). Environment: WARMUP
 # (frames per path before timing, default 40), FRAMES (timed frames per path, default 25).
 set -euo pipefail
-if [[ $# -lt 2 ]]; then
-  echo "usage: $0 A.jar B.jar [scene] [WxH] [runs] [path...]" >&2
-  exit 2
-fi
+. "$(dirname "$0")/two-jars.sh"
+two_jars "A.jar B.jar [scene] [WxH] [runs] [path...]" 2 "" "$@"
 a=$1
 b=$2
-for jar in "$a" "$b"; do
-  [[ -f $jar ]] || { echo "$0: no such jar: $jar" >&2; exit 2; }
-done
 scene=${3:-demo}
 size=${4:-1920x1080}
 runs=${5:-8}

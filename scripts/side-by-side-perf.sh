@@ -16,15 +16,10 @@
 # PATH as for side-by-side.sh (perspective, affine, edge, error, spans, each with @bilinear or
 # @trilinear). Defaults: demo, perspective, 1 thread, 300 pairs, the top 30 methods.
 set -euo pipefail
-if [[ $# -lt 2 ]]; then
-  echo "usage: $0 A.jar B.jar [scene] [path] [threads] [pairs] [top]" >&2
-  exit 2
-fi
+. "$(dirname "$0")/two-jars.sh"
+two_jars "A.jar B.jar [scene] [path] [threads] [pairs] [top]" 2 "" "$@"
 a=$1
 b=$2
-for jar in "$a" "$b"; do
-  [[ -f $jar ]] || { echo "$0: no such jar: $jar" >&2; exit 2; }
-done
 command -v perf >/dev/null || { echo "$0: perf is not installed" >&2; exit 2; }
 scene=${3:-demo}
 path=${4:-perspective}

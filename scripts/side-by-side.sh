@@ -29,15 +29,10 @@
 # Both jars must have the API Frame.java uses (DemoScenes in dev.trisect.scene or dev.trisect.content,
 # RenderSettings, FrameRenderer).
 set -euo pipefail
-if [[ $# -lt 2 ]]; then
-  echo "usage: $0 A.jar B.jar [scene] [WxH] [pairs] [frames] [path...]" >&2
-  exit 2
-fi
+. "$(dirname "$0")/two-jars.sh"
+two_jars "A.jar B.jar [scene] [WxH] [pairs] [frames] [path...]" 2 "" "$@"
 a=$1
 b=$2
-for jar in "$a" "$b"; do
-  [[ -f $jar ]] || { echo "$0: no such jar: $jar" >&2; exit 2; }
-done
 scene=${3:-demo}
 size=${4:-1920x1080}
 pairs=${5:-15}

@@ -25,15 +25,10 @@
 # (two threads: the same; 7, 9), SCENES, COUNTS (thread counts: "1 2"), PATHS ("perspective affine
 # edge spans"), FILTERS ("nearest bilinear trilinear"), JVMS (1), OUT.
 set -euo pipefail
-if [[ $# -ne 2 ]]; then
-  echo "usage: $0 OLD.jar NEW.jar" >&2
-  exit 2
-fi
+. "$(dirname "$0")/two-jars.sh"
+two_jars "OLD.jar NEW.jar" 2 "2" "$@"
 a=$1
 b=$2
-for jar in "$a" "$b"; do
-  [[ -f $jar ]] || { echo "$0: no such jar: $jar" >&2; exit 2; }
-done
 here=$(cd "$(dirname "$0")" && pwd)
 pairs=${PAIRS:-7}
 frames=${FRAMES:-3}
