@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Produces every table and chart of docs/performance.md: the machine, each path against Mesa llvmpipe
-# (glref) with the same thread count, thread scaling, time against resolution and against triangle
-# count, the cost/quality sweep charts, the budget controller's trace, and the JMH cost of one extra
-# piece. Tables go to target/performance/tables.md (Markdown), charts to docs/perf-*.png.
+# Produces the tables and charts of docs/performance.md and docs/performance/paths.md: the machine,
+# each path against Mesa llvmpipe (glref) with the same thread count, thread scaling, time against
+# resolution and against triangle count, the cost/quality sweep charts, the budget controller's trace,
+# and the JMH cost of one extra piece. Tables go to target/performance/tables.md (Markdown), charts
+# to docs/perf-*.png.
 #
 # Usage: [FRAMES=100] [WARMUP=100] [THREADS=2] [JMH=1] scripts/performance.sh [glref-binary]
 # Build glref first: gcc -O2 -o /tmp/glref ../shared/tools/glref/glref.c -lEGL -lGL -lGLU -lm

@@ -6,7 +6,7 @@ import java.util.Locale;
  * Intel's AVX-512 frequency licences do (Skylake-SP and Cascade Lake: "heavy" 256- and 512-bit
  * instructions, floating point and integer multiplies, move the core to a lower-clocked licence, which
  * it keeps for a while after the last of them). That is what made the fogged frames slower than their
- * fog pass (docs/performance.md, "Fog").
+ * fog pass (docs/performance/fog.md, "Fog").
  *
  * <p>Times a chain of scalar integer arithmetic (a multiply and an add per step, each step waiting on
  * the last: its time is set by the clock alone, not by memory) in chunks of about a microsecond, for

@@ -212,7 +212,7 @@ public final class LoopGenerator {
      * source and state by division and recording, each small enough for C2 to inline where it is hot,
      * so that the per-triangle code calls the loop itself. One method of them all (a switch over every
      * loop, 5 kB of bytecode) was never inlined: a call more per triangle and band, with arguments on
-     * the stack (docs/performance.md, "All four paths, three filters, four scenes").
+     * the stack (docs/performance/pixel-stage.md, "All four paths, three filters, four scenes").
      */
     private static String dispatcher(String params, boolean divides, boolean hasIds, boolean stated,
                                      List<LoopPart.Combination> all) {

@@ -55,7 +55,7 @@ final class BandPass {
      * frequency licences, so fogging each band as soon as it was filled slowed the fill of every band
      * after it. 16 bands are 256 rows, 4 MB of colour and depth at 1920 pixels: still in a last-level
      * cache when fogged. (Fogging the whole frame at its end saved a little more on this machine, but
-     * rereads from memory the rows of any frame larger than the cache; docs/performance.md, "Fog".)
+     * rereads from memory the rows of any frame larger than the cache; docs/performance/fog.md, "Fog".)
      */
     private static final int FOG_GROUP = 16;
 

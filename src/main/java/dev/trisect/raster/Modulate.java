@@ -10,9 +10,10 @@ package dev.trisect.raster;
  * where {@code c * f} lies within {@code c / 131072} (less than 0.002) of a tie, by one; a colour of
  * exactly 0 or 1 gives 0 or {@code c} exactly. Integers, not a double product, because converting the
  * int channel to a double (cvtsi2sd) writes only part of its register: the pixel loops then wait on
- * the register's last writer, in the per-pixel path a division (docs/performance.md, "The per-pixel
- * loop's false dependency"). The clamp keeps within range a varying a hair outside the corners' range:
- * a pixel centre just beyond its triangle's exact edge (coverage is decided on snapped corners).
+ * the register's last writer, in the per-pixel path a division (docs/performance/filtering.md, "The
+ * per-pixel loop's false dependency"). The clamp keeps within range a varying a hair outside the
+ * corners' range: a pixel centre just beyond its triangle's exact edge (coverage is decided on snapped
+ * corners).
  */
 final class Modulate {
     /** 1 in 16 fractional bits. */

@@ -195,7 +195,7 @@ final class TriangleSetup {
             // The textured layout (s, t alone), every frame but a lit one: two fits written out, with
             // no loop over a count the compiler does not know and no load of the plane from the array
             // (sphere160k, where setup weighs as much as the pixels, is 2-3 % faster so; docs/
-            // performance.md, "The pixel stage as templates, and attributes by layout").
+            // performance/pixel-stage.md, "The pixel stage as templates, and attributes by layout").
             double s0 = at[c0 + 1];
             double s1 = at[c1 + 1];
             double s2 = at[c2 + 1];

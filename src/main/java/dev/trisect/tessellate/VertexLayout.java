@@ -147,7 +147,8 @@ public final class VertexLayout {
      * Copies {@code count} doubles (a clip vertex, or part of one) from {@code src[from..]} to
      * {@code dst[to..]}. The textured layout's six doubles go by {@link System#arraycopy} of a constant
      * length, which the compiler turns into a few moves; a length it does not know costs a call or a
-     * loop per vertex, 5-9 % of a frame of 160,000 small triangles (docs/performance.md).
+     * loop per vertex, 5-9 % of a frame of 160,000 small triangles
+     * (docs/performance/pixel-stage.md, "The pixel stage as templates, and attributes by layout").
      */
     public static void copy(double[] src, int from, double[] dst, int to, int count) {
         if (count == CLIP_STRIDE) {

@@ -26,7 +26,7 @@ import org.openjdk.jmh.annotations.Warmup;
 
 /**
  * What a filtered pixel costs on one core, in nanoseconds per pixel, to set against the budget the
- * per-pixel speed target leaves (docs/performance.md, "Texture filtering").
+ * per-pixel speed target leaves (docs/performance/filtering.md, "Texture filtering").
  *
  * <p>The scene is a floor seen from just above it filling a 1920x1080 frame (two triangles, every
  * pixel covered once, the 512-texel UV grid repeated, lambda from below 0 at the bottom to about 5 at
