@@ -34,7 +34,7 @@ trap 'rm -rf "$tmp"' EXIT
 . "$src/frame-for.sh"
 frame_for "$a" "$tmp/a"
 frame_for "$b" "$tmp/b"
-javac -d "$tmp/run" "$src/OneBuild.java"
+javac -sourcepath "$src" -d "$tmp/run" "$src/OneBuild.java"
 echo "$scene $size, one thread, CPU ms per frame (median of $frames after $warmup warm-up frames per path), $runs JVMs per build"
 echo "A = $a"
 echo "B = $b"

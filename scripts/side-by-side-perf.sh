@@ -35,7 +35,7 @@ trap 'rm -rf "$tmp"' EXIT
 . "$src/frame-for.sh"
 frame_for "$a" "$tmp/a"
 frame_for "$b" "$tmp/b"
-javac -d "$tmp/run" "$src/PerfPair.java"
+javac -sourcepath "$src" -d "$tmp/run" "$src/PerfPair.java"
 # The frames are checked before perf runs, so that a bad scene or path is one line, not a profile.
 java -cp "$tmp/run" PerfPair "$tmp/a" "$a" "$tmp/b" "$b" "$scene" 1920x1080 "$path" "$threads" 0 -
 perf record -q -k mono -F 2000 -o "$tmp/perf.data" -- java -XX:+UnlockDiagnosticVMOptions -XX:+DumpPerfMapAtExit \

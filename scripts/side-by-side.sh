@@ -52,5 +52,5 @@ trap 'rm -rf "$tmp"' EXIT
 . "$src/frame-for.sh"
 frame_for "$a" "$tmp/a"
 frame_for "$b" "$tmp/b"
-javac -d "$tmp/run" "$src/SideBySide.java"
+javac -sourcepath "$src" -d "$tmp/run" "$src/SideBySide.java"
 java -cp "$tmp/run" SideBySide "$tmp/a" "$tmp/b" "$a" "$b" "$scene" "$size" "$pairs" "$frames" "$threads" "${paths[@]}"

@@ -1,8 +1,5 @@
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
-import java.net.URL;
-import java.net.URLClassLoader;
-import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.function.LongSupplier;
 
@@ -16,8 +13,7 @@ public final class OneBuild {
     }
 
     public static void main(String[] args) throws Exception {
-        URL[] urls = {Path.of(args[0]).toUri().toURL(), Path.of(args[1]).toUri().toURL()};
-        Class<?> frameClass = new URLClassLoader(urls, ClassLoader.getPlatformClassLoader()).loadClass("Frame");
+        Class<?> frameClass = Builds.frameClass(args[0], args[1]);
         String[] size = args[3].split("x");
         int warmup = Integer.parseInt(args[4]);
         int frames = Integer.parseInt(args[5]);

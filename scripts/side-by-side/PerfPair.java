@@ -1,8 +1,4 @@
 import java.io.PrintWriter;
-import java.lang.reflect.InvocationTargetException;
-import java.net.URL;
-import java.net.URLClassLoader;
-import java.nio.file.Path;
 import java.util.function.LongSupplier;
 
 /**
@@ -19,16 +15,7 @@ public final class PerfPair {
     }
 
     public static void main(String[] args) throws Exception {
-        try {
-            run(args);
-        } catch (InvocationTargetException e) {
-            System.err.println("side-by-side-perf: " + e.getCause().getMessage());
-            System.exit(2);
-        } catch (IllegalArgumentException e) {
-            System.err.println("side-by-side-perf: " + e.getMessage());
-            System.exit(2);
-        }
-        System.exit(0);
+        Builds.main("side-by-side-perf", () -> run(args));
     }
 
     private static void run(String[] args) throws Exception {
@@ -36,11 +23,8 @@ public final class PerfPair {
         int pairs = Integer.parseInt(args[8]);
         LongSupplier[] frame = new LongSupplier[2];
         for (int b = 0; b < 2; b++) {
-            URL[] urls = {Path.of(args[2 * b]).toUri().toURL(), Path.of(args[2 * b + 1]).toUri().toURL()};
-            Class<?> c = new URLClassLoader(urls, ClassLoader.getPlatformClassLoader()).loadClass("Frame");
-            frame[b] = (LongSupplier) c.getMethod("make", String.class, String.class, int.class, int.class, int.class)
-                    .invoke(null, args[4], args[6], Integer.parseInt(size[0]), Integer.parseInt(size[1]),
-                            Integer.parseInt(args[7]));
+            frame[b] = Builds.frame(Builds.frameClass(args[2 * b], args[2 * b + 1]), args[4], args[6],
+                    Integer.parseInt(size[0]), Integer.parseInt(size[1]), Integer.parseInt(args[7]));
             for (int k = 0; pairs > 0 && k < 60; k++) {
                 frame[b].getAsLong();
             }

@@ -1,9 +1,5 @@
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadMXBean;
-import java.lang.reflect.InvocationTargetException;
-import java.net.URL;
-import java.net.URLClassLoader;
-import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.HashSet;
 import java.util.List;
@@ -20,17 +16,7 @@ public final class SideBySide {
     }
 
     public static void main(String[] args) throws Exception {
-        try {
-            run(args);
-        } catch (InvocationTargetException e) {
-            // A scene, path or filter the build does not have: Frame.make says which.
-            System.err.println("side-by-side: " + e.getCause().getMessage());
-            System.exit(2);
-        } catch (IllegalArgumentException e) {
-            System.err.println("side-by-side: " + e.getMessage());
-            System.exit(2);
-        }
-        System.exit(0);
+        Builds.main("side-by-side", () -> run(args));
     }
 
     private static void run(String[] args) throws Exception {
@@ -54,11 +40,9 @@ public final class SideBySide {
             for (long id : cpu.getAllThreadIds()) {
                 before.add(id);
             }
-            URL[] urls = {Path.of(args[b]).toUri().toURL(), Path.of(jars[b]).toUri().toURL()};
-            Class<?> c = new URLClassLoader(urls, ClassLoader.getPlatformClassLoader()).loadClass("Frame");
+            Class<?> c = Builds.frameClass(args[b], jars[b]);
             for (int p = 0; p < paths.size(); p++) {
-                frame[b][p] = (LongSupplier) c.getMethod("make", String.class, String.class, int.class, int.class,
-                                int.class).invoke(null, scene, paths.get(p), width, height, threads);
+                frame[b][p] = Builds.frame(c, scene, paths.get(p), width, height, threads);
                 for (int k = 0; k < 30; k++) {
                     pieces[b][p] = frame[b][p].getAsLong();
                 }
