@@ -8,13 +8,17 @@
 # material, so that only the light's interpolation differs between the paths (no texel flips). Prints
 # one line per scene, case and path.
 #
-#   [FILTER=nearest|bilinear|trilinear] scripts/light/psnr.sh [WxH] [MAX_ERROR]     (default nearest, 1280x720, 0.5)
+#   [FILTER=nearest|bilinear|trilinear] [SCENES="demo boxes"] scripts/light/psnr.sh [WxH] [MAX_ERROR]
+#
+# Defaults: nearest, every frame of frames.txt (demo boxes sphere head), 1280x720, 0.5. PSNR is
+# compare's: over every pixel of the frame (the sky and the background count, as equal pixels).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 JAR=${JAR:-target/trisect.jar}
 size=${1:-1280x720}
 err=${2:-0.5}
 filter=${FILTER:-nearest}
+scenes=" ${SCENES:-demo boxes sphere head} "
 [[ -f $JAR ]] || mvn -B -q package -DskipTests
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 printf 'P3\n1 1\n255\n255 255 255\n' >"$tmp/white.ppm"
@@ -22,6 +26,7 @@ light=(--light 1,2,3 --light-colour 0.8,0.9,1 --point-colour 1,0.7,0.4 --attenua
   --ambient 0.25,0.2,0.35 --shade smooth --size "$size" --max-error "$err")
 printf '%-7s %-12s %-12s %s\n' scene case path psnr_db
 grep '^frame ' src/test/resources/dev/trisect/light/frames.txt | while read -r _ name scene eye target far point; do
+  [[ $scenes == *" $name "* ]] || continue
   if [[ $scene == head ]]; then
     obj=src/test/resources/dev/trisect/light/head.obj
     textured=(--texture src/test/resources/dev/trisect/lines/checker.ppm)
