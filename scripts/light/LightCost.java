@@ -37,7 +37,10 @@ import java.util.Locale;
  *
  *   java -cp target/trisect.jar scripts/light/LightCost.java SCENE WxH THREADS ROUNDS [VARIANT...]
  *
- * VARIANT: fog-linear, fog-exp, flat, smooth (the default: all four), flat-uncached, smooth-uncached;
+ * VARIANT: fog-linear, fog-exp, flat, smooth (the default: all four), flat-uncached, smooth-uncached,
+ * fog-linear-1-10. Fog is the haze (0.6, 0.7, 0.8): fog-linear from 5 to 60 view units (which leaves
+ * sphere160k, all nearer than 3.1, unfogged: its pass stops after the factors), fog-linear-1-10 from 1
+ * to 10 (blends every pixel of sphere160k), fog-exp of density 0.05;
  * flat and smooth light every material by a white directional light from (0.3, -1, -0.5) and an
  * ambient grey of 0.2, as {@code bench --shade flat|smooth --light 0.3,-1,-0.5} does. The -uncached
  * variants are drawn by a second renderer of as many threads whose lit copies of textures are off
@@ -55,6 +58,17 @@ public final class LightCost {
     private static final ThreadMXBean THREADS = ManagementFactory.getThreadMXBean();
 
     public static void main(String[] args) {
+        try {
+            run(args);
+        } catch (IllegalArgumentException | ArrayIndexOutOfBoundsException e) {
+            // A bad scene, path, variant, size or count: one line, not a stack trace.
+            System.err.println("LightCost: " + (e instanceof NumberFormatException || e instanceof ArrayIndexOutOfBoundsException
+                    ? "bad number or size (" + e.getMessage() + ")" : e.getMessage()));
+            System.exit(2);
+        }
+    }
+
+    private static void run(String[] args) {
         if (args.length > 0 && args[0].equals("--repeat")) {
             repeat(args);
             return;
@@ -67,7 +81,10 @@ public final class LightCost {
                 : List.of("fog-linear", "fog-exp", "flat", "smooth");
         int w = Integer.parseInt(size[0]);
         int h = Integer.parseInt(size[1]);
-        SceneAsset s = DemoScenes.byName(scene).orElseThrow();
+        SceneAsset s = DemoScenes.byName(scene).orElseThrow(() -> new IllegalArgumentException("no scene " + scene));
+        for (String v : variants) {
+            variant(v.replace("-uncached", "")); // an unknown variant fails here, before any frame
+        }
         Mat4 vp = s.camera().viewProjection(new Viewport(w, h));
         RenderSettings base = RenderSettings.defaults();
         RenderSettings[] paths = {base.withMode(RenderMode.PERSPECTIVE), base.withMode(RenderMode.SPANS)
@@ -182,6 +199,10 @@ public final class LightCost {
             case "fog-exp" -> (d, mesh, t, m) -> {
                 d.add(mesh, t, m);
                 d.setFog(Fog.exp(0.05, haze));
+            };
+            case "fog-linear-1-10" -> (d, mesh, t, m) -> {
+                d.add(mesh, t, m);
+                d.setFog(Fog.linear(1, 10, haze));
             };
             case "flat" -> lit(Shading.FLAT);
             case "smooth" -> lit(Shading.SMOOTH);
