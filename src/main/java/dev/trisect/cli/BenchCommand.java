@@ -161,15 +161,9 @@ final class BenchCommand extends SceneCommand {
         if (plot != null) {
             Outputs.checkPng("--plot", plot);
         }
-    }
-
-    @Override
-    List<Path> outputs() {
-        return Arrays.asList(plot);
-    }
-
-    @Override
-    int run(SceneAsset given, Camera camera, OutputBatch batch) throws IOException, InterruptedException {
+        if (glref != null) {
+            Programs.checkRunnable("--glref", glref);
+        }
         if (scatteredLines < 0) {
             throw InputException.usage("--lines must be 0 or more, got " + scatteredLines);
         }
@@ -183,6 +177,15 @@ final class BenchCommand extends SceneCommand {
             throw InputException.usage("--alpha-test times the alpha test alone: give it without --lines, --labels "
                     + "and --glref");
         }
+    }
+
+    @Override
+    List<Path> outputs() {
+        return Arrays.asList(plot);
+    }
+
+    @Override
+    int run(SceneAsset given, Camera camera, OutputBatch batch) throws IOException, InterruptedException {
         SceneAsset scene = scatteredLines == 0 ? given : given.withLines(ScatteredLines.of(camera,
                 frame.size.viewport().aspect(), scatteredLines, 1, 0xFFFFFF));
         Texture[] textures = scene.textureArray();

@@ -61,7 +61,19 @@ final class Converters {
         }
     }
 
-    static final class Vec3Converter implements ITypeConverter<Vec3> {
+    /** Three finite numbers; the message names what they are (a point unless a subclass says otherwise). */
+    static class Vec3Converter implements ITypeConverter<Vec3> {
+        private final String what;
+
+        Vec3Converter() {
+            this("a point: use three finite numbers x,y,z, e.g. 0,1.7,6");
+        }
+
+        /** @param what what the value is and how to write it, after "is not" in the message */
+        Vec3Converter(String what) {
+            this.what = what;
+        }
+
         @Override
         public Vec3 convert(String value) {
             String[] parts = value.split(",", -1);
@@ -76,7 +88,7 @@ final class Converters {
                     // fall through to the message
                 }
             }
-            throw new TypeConversionException(quote(value) + " is not a point: use three finite numbers x,y,z, e.g. 0,1.7,6");
+            throw new TypeConversionException(quote(value) + " is not " + what);
         }
     }
 

@@ -39,7 +39,7 @@ final class ExportCommand implements Callable<Integer> {
         }
         // The frame options export shares with the drawing commands change nothing in what it writes or
         // prints (the mesh, its textures and the camera): given to export, they would be silently lost.
-        for (String unused : List.of("--size", "--cull", "--background")) {
+        for (String unused : List.of("--size", "--cull", "--background", "--line-width")) {
             if (common.spec.commandLine().getParseResult().hasMatchedOption(unused)) {
                 throw dev.trisect.base.InputException.usage(unused + " does not apply to export: it writes the mesh, "
                         + "its textures and the camera, not a frame (give " + unused + " to the renderer)");
@@ -48,6 +48,7 @@ final class ExportCommand implements Callable<Integer> {
         if (to == null) {
             throw dev.trisect.base.InputException.usage("--to FILE.obj is required");
         }
+        light.check();
         Outputs.checkObj("--to", to);
         Outputs.checkNotInput(to, "the --obj input", frame.obj);
         // The folder is made and checked before the scene is read; the MTL and textures go beside the OBJ.

@@ -36,13 +36,14 @@ final class LightOptions {
     @Spec(Spec.Target.MIXEE)
     CommandSpec spec;
 
-    @Option(names = "--light", paramLabel = "dx,dy,dz", converter = Converters.Vec3Converter.class,
+    @Option(names = "--light", paramLabel = "dx,dy,dz", converter = DirectionConverter.class,
             description = "A directional light shining from this world-space direction (lights every material; "
                     + "see --shade).")
     Vec3 light;
 
     @Option(names = "--light-colour", paramLabel = "r,g,b", converter = ColourTriple.class,
-            description = "The directional light's colour, 0..1 per channel (default: 1,1,1).")
+            description = "The directional light's colour, r,g,b or one grey level, each at least 0 (1 is full "
+                    + "intensity; more brightens) (default: 1,1,1).")
     Colour lightColour;
 
     @Option(names = "--point", paramLabel = "x,y,z", converter = Converters.Vec3Converter.class,
@@ -50,10 +51,11 @@ final class LightOptions {
     Vec3 point;
 
     @Option(names = "--point-colour", paramLabel = "r,g,b", converter = ColourTriple.class,
-            description = "The point light's colour, 0..1 per channel (default: 1,1,1).")
+            description = "The point light's colour, r,g,b or one grey level, each at least 0 (1 is full "
+                    + "intensity; more brightens) (default: 1,1,1).")
     Colour pointColour;
 
-    @Option(names = "--attenuation", paramLabel = "kc,kl,kq", converter = Converters.Vec3Converter.class,
+    @Option(names = "--attenuation", paramLabel = "kc,kl,kq", converter = AttenuationConverter.class,
             description = "The point light's attenuation 1/(kc + kl d + kq d^2) (default: 1,0,0).")
     Vec3 attenuation;
 
@@ -70,7 +72,8 @@ final class LightOptions {
     Fog fog;
 
     @Option(names = "--fog-colour", paramLabel = "r,g,b", converter = ColourTriple.class,
-            description = "The fog's colour, 0..1 per channel (default: 0,0,0).")
+            description = "The fog's colour, r,g,b or one grey level, each at least 0 (above 1 acts as 1) "
+                    + "(default: 0,0,0).")
     Colour fogColour;
 
     /** Whether any light is given. */
@@ -97,7 +100,8 @@ final class LightOptions {
             }
         }
         if (light != null && light.length() == 0) {
-            throw InputException.usage("--light needs a direction, not 0,0,0");
+            throw InputException.usage("--light needs a non-zero direction, got " + triple(light.x(), light.y(),
+                    light.z()));
         }
         if (shade != null && shade != Shading.NONE && !anyLight()) {
             throw InputException.usage("--shade " + shade.name().toLowerCase(Locale.ROOT)
@@ -245,6 +249,20 @@ final class LightOptions {
             }
             throw new TypeConversionException(Converters.quote(value) + " is not a colour: use r,g,b (or one grey "
                     + "level), finite numbers at least 0, e.g. 1,0.8,0.5");
+        }
+    }
+
+    /** {@code dx,dy,dz}: the direction towards a light. */
+    static final class DirectionConverter extends Converters.Vec3Converter {
+        DirectionConverter() {
+            super("a direction: use three finite numbers dx,dy,dz, e.g. 1,2,3");
+        }
+    }
+
+    /** {@code kc,kl,kq}: a point light's attenuation (their signs are checked with the other options). */
+    static final class AttenuationConverter extends Converters.Vec3Converter {
+        AttenuationConverter() {
+            super("an attenuation: use three finite numbers kc,kl,kq, e.g. 1,0.2,0.05");
         }
     }
 

@@ -44,6 +44,10 @@ abstract class SceneCommand implements Callable<Integer> {
             return 0;
         }
         checkOutputs();
+        // The option combinations every command shares, checked before the scene is read and anything is
+        // printed: a usage error never follows a bench's header or a long load.
+        light.check();
+        frame.lineWidth();
         for (Path out : outputs()) {
             Outputs.checkNotInput(out, "the --obj input", frame.obj);
             Outputs.checkNotInput(out, "the --texture input", frame.texture);

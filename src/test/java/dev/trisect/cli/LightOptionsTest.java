@@ -1,0 +1,91 @@
+package dev.trisect.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The options every scene command shares (light, fog, line width) are checked before the scene is read
+ * and anything is printed, in every command; each message names what the value is.
+ */
+class LightOptionsTest {
+    @TempDir
+    Path dir;
+
+    private static final String[] BENCH = {"bench", "--scene", "floor", "--size", "8x8", "--frames", "1", "--warmup",
+        "0", "--modes", "perspective"};
+
+    private static String[] with(String[] base, String... more) {
+        String[] all = java.util.Arrays.copyOf(base, base.length + more.length);
+        System.arraycopy(more, 0, all, base.length, more.length);
+        return all;
+    }
+
+    @Test
+    void benchRefusesBadLightBeforePrintingItsTable() {
+        for (String[] bad : new String[][] {{"--light", "0,0,0"}, {"--shade", "smooth"}, {"--fog-colour", "1"},
+            {"--point-colour", "1"}}) {
+            CliRun r = CliRun.of(with(BENCH, bad));
+            assertEquals(2, r.status(), String.join(" ", bad) + ": " + r.err());
+            assertEquals("", r.out(), "nothing measured, nothing printed for " + String.join(" ", bad));
+            r.errLine();
+        }
+    }
+
+    @Test
+    void everyCommandChecksTheLineWidth() {
+        for (String[] run : new String[][] {
+            {"compare", "--scene", "floor", "--size", "8x8", "--line-width", "0"},
+            with(BENCH, "--line-width", "0")}) {
+            CliRun r = CliRun.of(run);
+            assertEquals(2, r.status(), String.join(" ", run) + ": " + r.err());
+            assertTrue(r.errLine().contains("--line-width must be a whole number of pixels from 1 to 255"), r.err());
+            assertEquals("", r.out());
+        }
+        // export writes lines as l elements, which have no width: the option would be silently lost.
+        CliRun r = CliRun.of("export", "--scene", "floor", "--to", dir.resolve("f.obj").toString(), "--line-width", "2");
+        assertEquals(2, r.status(), r.err());
+        assertTrue(r.errLine().contains("--line-width does not apply to export"), r.err());
+        r = CliRun.of("export", "--scene", "floor", "--to", dir.resolve("f.obj").toString(), "--light", "0,0,0");
+        assertEquals(2, r.status(), r.err());
+        assertTrue(!Files.exists(dir.resolve("f.obj")), "export wrote nothing");
+    }
+
+    @Test
+    void benchRefusesAGlrefItCannotRunBeforeMeasuring() throws Exception {
+        Path missing = dir.resolve("no-glref");
+        CliRun r = CliRun.of(with(BENCH, "--glref", missing.toString()));
+        assertEquals(1, r.status(), r.err());
+        assertEquals("", r.out(), "no row measured before the refusal");
+        assertEquals("trisect: " + missing + ": cannot run (--glref): no such file", r.errLine());
+        Path plain = Files.writeString(dir.resolve("plain"), "not a program");
+        r = CliRun.of(with(BENCH, "--glref", plain.toString()));
+        assertEquals(1, r.status(), r.err());
+        assertTrue(r.errLine().endsWith("not an executable file"), r.err());
+        r = CliRun.of(with(BENCH, "--glref", "no-such-glref-program"));
+        assertEquals(1, r.status(), r.err());
+        assertTrue(r.errLine().endsWith("no such program on the PATH"), r.err());
+    }
+
+    @Test
+    void messagesNameWhatTheValueIs() {
+        String out = dir.resolve("a.png").toString();
+        CliRun r = CliRun.of("render", "--scene", "floor", "--size", "8x8", "--out", out, "--light", "1,2");
+        assertEquals(2, r.status());
+        assertTrue(r.errLine().contains("'1,2' is not a direction: use three finite numbers dx,dy,dz"), r.err());
+        r = CliRun.of("render", "--scene", "floor", "--size", "8x8", "--out", out, "--point", "0,1,0",
+                "--attenuation", "1,0");
+        assertEquals(2, r.status());
+        assertTrue(r.errLine().contains("'1,0' is not an attenuation: use three finite numbers kc,kl,kq"), r.err());
+        r = CliRun.of("render", "--scene", "floor", "--size", "8x8", "--out", out, "--eye", "1,2");
+        assertTrue(r.errLine().contains("'1,2' is not a point"), r.err());
+        r = CliRun.of("render", "--scene", "floor", "--size", "8x8", "--out", out, "--light", "0,-0,0");
+        assertEquals(2, r.status());
+        assertTrue(r.errLine().endsWith("--light needs a non-zero direction, got 0.0,-0.0,0.0"), r.err());
+        assertTrue(!Files.exists(Path.of(out)));
+    }
+}
