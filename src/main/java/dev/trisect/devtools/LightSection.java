@@ -34,6 +34,8 @@ final class LightSection implements ToolSection {
     private final JComboBox<String> fog = new JComboBox<>(FOGS);
     /** The fog's values in force: start and end depths, density. */
     private final double[] values = {5, 60, 0.05};
+    /** The fields of {@link #values}, in its order. */
+    private final NumberField[] fields = new NumberField[3];
     private int background;
     private boolean syncing;
 
@@ -60,26 +62,40 @@ final class LightSection implements ToolSection {
                 + "to End, exp or exp2 by Density");
         fog.addActionListener(e -> applyFog());
         form.row(ToolsForm.label("Fog", fog.getToolTipText()), fog);
-        NumberField start = field("Fog start", 1e6, 0);
-        NumberField end = field("Fog end", 1e6, 1);
-        NumberField density = field("Fog density", 100, 2);
-        form.row(ToolsForm.label("Fog start", "Linear fog: the depth where it begins, world units"), start);
-        form.row(ToolsForm.label("Fog end", "Linear fog: the depth where only the fog shows, world units"), end);
-        form.row(ToolsForm.label("Fog density", "Exp and exp2 fog: the density, per world unit"), density);
+        field("Fog start", 1e6, 0);
+        field("Fog end", 1e6, 1);
+        field("Fog density", 100, 2);
+        form.row(ToolsForm.label("Fog start", "Linear fog: the depth where it begins, world units"), fields[0]);
+        form.row(ToolsForm.label("Fog end", "Linear fog: the depth where only the fog shows, world units"), fields[1]);
+        form.row(ToolsForm.label("Fog density", "Exp and exp2 fog: the density, per world unit"), fields[2]);
         // Folded until asked for: the tools keep fitting the screen with the sections used most open.
         form.setOpen(false);
     }
 
-    /** A field for {@code values[index]}: a number typed applies the fog again. */
-    private NumberField field(String name, double max, int index) {
-        NumberField[] f = new NumberField[1];
-        f[0] = new NumberField(name, "", 0, max, v -> {
+    /**
+     * The field of {@code values[index]}: a number typed applies the fog again; one the fog refuses (a
+     * linear start at or beyond its end) is not kept, so the field goes on showing the fog in force.
+     */
+    private void field(String name, double max, int index) {
+        fields[index] = new NumberField(name, "", 0, max, v -> {
+            double before = values[index];
             values[index] = v;
-            f[0].show(v);
-            applyFog();
+            if (!applyFog()) {
+                values[index] = before;
+            }
+            fields[index].show(values[index]);
         }, owner::message);
-        f[0].show(values[index]);
-        return f[0];
+        fields[index].show(values[index]);
+    }
+
+    /** The fog combo's choice, for tests. */
+    String readoutFog() {
+        return (String) fog.getSelectedItem();
+    }
+
+    /** The start, end and density fields, for tests. */
+    NumberField[] fogFields() {
+        return fields.clone();
     }
 
     private Scene scene() {
@@ -91,10 +107,10 @@ final class LightSection implements ToolSection {
         return SceneLighting.lights(scene);
     }
 
-    /** Sets the scene's fog from the controls. */
-    private void applyFog() {
+    /** Sets the scene's fog from the controls; false (and a message) when the fog refuses them. */
+    private boolean applyFog() {
         if (syncing) {
-            return;
+            return true;
         }
         Colour c = Colour.of(background);
         String kind = (String) fog.getSelectedItem();
@@ -108,9 +124,10 @@ final class LightSection implements ToolSection {
             };
         } catch (IllegalArgumentException e) {
             owner.message("Fog: " + e.getMessage());
-            return;
+            return false;
         }
         scene().setFog(f);
+        return true;
     }
 
     @Override
@@ -128,10 +145,31 @@ final class LightSection implements ToolSection {
             lightsOn.setEnabled(!all.isEmpty());
             lightsOn.setSelected(all.stream().anyMatch(Light::isVisible));
             fog.setSelectedItem(s.fog().map(f -> f.mode().name().toLowerCase(Locale.ROOT)).orElse("off"));
+            s.fog().ifPresent(this::showFog);
         } finally {
             syncing = false;
         }
         form.set("Lights", describe(s));
+    }
+
+    /**
+     * Shows the values of {@code f}, the scene's fog, which the demo's G key or the program may have set:
+     * the fields read what is drawn. A field being typed into is left alone.
+     */
+    private void showFog(Fog f) {
+        if (f.mode() == Fog.Mode.LINEAR) {
+            show(0, f.start());
+            show(1, f.end());
+        } else {
+            show(2, f.density());
+        }
+    }
+
+    private void show(int index, double value) {
+        values[index] = value;
+        if (!fields[index].isFocusOwner()) {
+            fields[index].show(value);
+        }
     }
 
     /** The scene's shining lights in a line or two: "ambient 0.20 0.20 0.20; directional 1 1 1; point ...". */

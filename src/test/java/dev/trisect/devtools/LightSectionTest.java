@@ -1,0 +1,72 @@
+package dev.trisect.devtools;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import dev.trisect.content.DemoScenes;
+import dev.trisect.render.Colour;
+import dev.trisect.render.Fog;
+import dev.trisect.scene.Scene;
+import dev.trisect.view.internal.ViewController;
+import dev.trisect.view.internal.ViewState;
+import javax.swing.SwingUtilities;
+import org.junit.jupiter.api.Test;
+
+/** The developer tools' light and fog section, without a window: its fields read the fog drawn. */
+class LightSectionTest {
+    private static ViewController controller() {
+        return new ViewController(new ViewState(DemoScenes.boxes()), new ViewController.Surface() {
+            @Override
+            public void repaint() {
+            }
+
+            @Override
+            public void inspector(boolean on) {
+            }
+
+            @Override
+            public void showDevTools(boolean on) {
+            }
+        }, 1);
+    }
+
+    @Test
+    void theFogFieldsShowTheScenesFogWhoeverSetIt() throws Exception {
+        SwingUtilities.invokeAndWait(() -> {
+            ViewController c = controller();
+            LightSection light = new DevToolsPanel(c).section(LightSection.class);
+            Scene scene = c.state().scene();
+            // As the demo's G key sets it: from the camera's distance to its target to eight times that.
+            scene.setFog(Fog.linear(16.03, 128.25, Colour.WHITE));
+            light.refresh(null, null, null);
+            NumberField[] f = light.fogFields();
+            assertEquals("16.03", f[0].getText(), "Fog start");
+            assertEquals("128.25", f[1].getText(), "Fog end");
+            assertEquals("linear", light.readoutFog());
+            scene.setFog(Fog.exp2(0.25, Colour.WHITE));
+            light.refresh(null, null, null);
+            assertEquals("0.25", f[2].getText(), "Fog density");
+            assertEquals("exp2", light.readoutFog());
+        });
+    }
+
+    @Test
+    void aStartTheFogRefusesIsNotKept() throws Exception {
+        SwingUtilities.invokeAndWait(() -> {
+            ViewController c = controller();
+            LightSection light = new DevToolsPanel(c).section(LightSection.class);
+            Scene scene = c.state().scene();
+            Fog fog = Fog.linear(10, 80, Colour.BLACK);
+            scene.setFog(fog);
+            light.refresh(null, null, null);
+            NumberField start = light.fogFields()[0];
+            start.setText("200");
+            start.commit();
+            assertEquals(fog, scene.fog().orElseThrow(), "the fog in force stays");
+            assertEquals("10.00", start.getText(), "and the field shows it, not the refused start");
+            start.setText("20");
+            start.commit();
+            assertEquals(20, scene.fog().orElseThrow().start());
+            assertEquals("20.00", start.getText());
+        });
+    }
+}
