@@ -13,9 +13,10 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
-/** {@code trisect export}: a scene as OBJ + MTL + PPM textures, for rendering it elsewhere. */
+/** {@code trisect export}: a scene as OBJ + MTL + PPM textures (PAM where a texture has alpha), for rendering it elsewhere. */
 @Command(name = "export", sortOptions = false, mixinStandardHelpOptions = true,
-        description = {"Write a scene as Wavefront OBJ with an MTL file and one PPM texture per material, and "
+        description = {"Write a scene as Wavefront OBJ with an MTL file and one PPM texture per material (PAM, "
+                + "with its alpha, where a texture has alpha), and "
                 + "print its camera, so another renderer (tools/glref, say) can draw the same frame."})
 final class ExportCommand implements Callable<Integer> {
     @Mixin
@@ -73,9 +74,9 @@ final class ExportCommand implements Callable<Integer> {
 
     private int export(OutputBatch batch) {
         SceneAsset scene = frame.loadScene(common::note);
-        // Its MTL and textures go beside the OBJ under names of their own (to.mtl, to-material.ppm): any of
+        // Its MTL and textures go beside the OBJ under names of their own (to.mtl, to-material.ppm or .pam): any of
         // them can be a file the scene was read from (mtllib to.mtl), and is checked before anything is written.
-        for (Path out : ObjWriter.files(to, scene.mesh())) {
+        for (Path out : ObjWriter.files(to, scene.mesh(), scene.textures())) {
             Outputs.checkNotInput(out, "the --texture input", frame.texture);
             Outputs.checkNotSceneInput(out, scene);
         }

@@ -20,8 +20,9 @@ import javax.imageio.stream.ImageOutputStream;
 import javax.imageio.stream.MemoryCacheImageOutputStream;
 
 /**
- * Writes colour images: ARGB {@code int[]}, {@code width * height}, row 0 at the top. The alpha
- * channel is not written (renders are opaque, and PPM has none): both formats store 8-bit RGB.
+ * Writes colour images: ARGB {@code int[]}, {@code width * height}, row 0 at the top. PNG and PPM
+ * store 8-bit RGB without the alpha channel (renders are opaque, and PPM has none); PAM stores it (a
+ * texture's alpha, for export).
  */
 public final class ImageFiles {
     private static final int RED = 0xFF0000;
@@ -33,7 +34,8 @@ public final class ImageFiles {
 
     /**
      * Writes an image in the format its file name's extension names (case-insensitive): {@code .png}
-     * (8-bit RGB PNG) or {@code .ppm} (binary PPM, P6, maximum value 255). The file appears complete or
+     * (8-bit RGB PNG), {@code .ppm} (binary PPM, P6, maximum value 255) or {@code .pam} (PAM, P7, tuple
+     * type RGB_ALPHA, maximum value 255: the alpha kept). The file appears complete or
      * not at all, and an existing file is replaced only once the new one is fully written.
      *
      * @param out    the file to write
@@ -65,8 +67,10 @@ public final class ImageFiles {
             batch.write(out, stream -> writePng(stream, width, height, argb));
         } else if (name.endsWith(".ppm")) {
             batch.write(out, stream -> writePpm(stream, width, height, argb));
+        } else if (name.endsWith(".pam")) {
+            batch.write(out, stream -> writePam(stream, width, height, argb));
         } else {
-            throw InputException.usage(out + ": unsupported output format (use .png or .ppm)");
+            throw InputException.usage(out + ": unsupported output format (use .png, .ppm or .pam)");
         }
     }
 
@@ -92,16 +96,31 @@ public final class ImageFiles {
         }
     }
 
+    /** A PAM (Netpbm P7) of tuple type RGB_ALPHA, maxval 255: the colours with their alpha, row 0 at the top. */
+    private static void writePam(OutputStream stream, int width, int height, int[] argb) throws IOException {
+        writeNetpbm(stream, "P7\nWIDTH " + width + "\nHEIGHT " + height + "\nDEPTH 4\nMAXVAL 255\nTUPLTYPE RGB_ALPHA\nENDHDR\n",
+                4, width, height, argb);
+    }
+
     private static void writePpm(OutputStream stream, int width, int height, int[] argb) throws IOException {
-        stream.write(("P6\n" + width + " " + height + "\n255\n").getBytes(StandardCharsets.US_ASCII));
-        byte[] row = new byte[3 * width];
+        writeNetpbm(stream, "P6\n" + width + " " + height + "\n255\n", 3, width, height, argb);
+    }
+
+    /** A Netpbm header, then per pixel red, green, blue and, with 4 {@code channels}, alpha, a byte each. */
+    private static void writeNetpbm(OutputStream stream, String header, int channels, int width, int height, int[] argb)
+            throws IOException {
+        stream.write(header.getBytes(StandardCharsets.US_ASCII));
+        byte[] row = new byte[channels * width];
         for (int y = 0; y < height; y++) {
             int pixel = y * width;
-            for (int i = 0; i < row.length; i += 3, pixel++) {
+            for (int i = 0; i < row.length; i += channels, pixel++) {
                 int colour = argb[pixel];
                 row[i] = (byte) (colour >> 16);
                 row[i + 1] = (byte) (colour >> 8);
                 row[i + 2] = (byte) colour;
+                if (channels == 4) {
+                    row[i + 3] = (byte) (colour >>> 24);
+                }
             }
             stream.write(row);
         }

@@ -12,7 +12,9 @@ import java.nio.file.Path;
 import java.util.List;
 
 /**
- * Writes a mesh as Wavefront OBJ with an MTL file and one binary PPM texture per material, so that
+ * Writes a mesh as Wavefront OBJ with an MTL file and one texture file per material (binary PPM, or
+ * PAM with tuple type RGB_ALPHA for a texture with alpha below 255 anywhere, so that a cut-out or
+ * translucent texture reads back as it was), so that
  * other renderers (OpenGL through tools/glref, say) can draw exactly the same triangles.
  * Triangles are written in order, so triangle indices are preserved, each corner as {@code v},
  * {@code v/vt}, {@code v/vt/vn} or {@code v//vn} after what it has; the mesh's normals as {@code vn}
@@ -64,7 +66,7 @@ public final class ObjWriter {
      * @param lines the segments, in the mesh's space
      */
     public static List<Path> write(OutputBatch batch, Path obj, Mesh mesh, List<Texture> textures, Lines lines) {
-        List<Path> files = files(obj, mesh);
+        List<Path> files = files(obj, mesh, textures);
         Path mtl = files.get(1);
         Path[] maps = files.subList(2, files.size()).toArray(Path[]::new);
         for (int m = 0; m < maps.length; m++) {
@@ -170,20 +172,23 @@ public final class ObjWriter {
 
     /**
      * The files {@link #write} writes for {@code obj}, known before writing (so that a command can check
-     * them against its inputs first): the OBJ, its MTL beside it, then one PPM per material, in the
-     * mesh's material order, named after the OBJ and the material.
+     * them against its inputs first): the OBJ, its MTL beside it, then one texture per material, in the
+     * mesh's material order, named after the OBJ and the material: {@code .pam} for a texture with
+     * alpha ({@link Texture#alpha()} not {@code OPAQUE}), else {@code .ppm}.
      *
-     * @param obj  the OBJ file to write
-     * @param mesh the mesh, for its material names
+     * @param obj      the OBJ file to write
+     * @param mesh     the mesh, for its material names
+     * @param textures one per material
      * @return the OBJ, the MTL and the textures, absolute
      */
-    public static List<Path> files(Path obj, Mesh mesh) {
+    public static List<Path> files(Path obj, Mesh mesh, List<Texture> textures) {
         Path dir = obj.toAbsolutePath().getParent();
         String base = obj.getFileName().toString().replaceFirst("\\.[^.]*$", "");
         List<Path> files = new java.util.ArrayList<>(List.of(obj.toAbsolutePath(), dir.resolve(base + ".mtl")));
         java.util.Set<String> taken = new java.util.HashSet<>();
-        for (String material : mesh.materialNames()) {
-            files.add(dir.resolve(unique(base + "-" + safe(material), taken) + ".ppm"));
+        for (int m = 0; m < mesh.materialNames().size(); m++) {
+            String extension = textures.get(m).alpha() == Texture.Alpha.OPAQUE ? ".ppm" : ".pam";
+            files.add(dir.resolve(unique(base + "-" + safe(mesh.materialNames().get(m)), taken) + extension));
         }
         return files;
     }

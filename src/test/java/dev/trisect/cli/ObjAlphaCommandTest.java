@@ -66,6 +66,11 @@ class ObjAlphaCommandTest {
 
     /** A red quad at z = -1 behind, then a quad at z = 0 textured by a 2 x 1 PAM of these two texels. */
     private int[] render(int leftArgb, int rightArgb) throws IOException {
+        return render(scene(leftArgb, rightArgb));
+    }
+
+    /** The OBJ of {@link #render(int, int)}'s scene, with its MTL and PAM beside it. */
+    private Path scene(int leftArgb, int rightArgb) throws IOException {
         ByteArrayOutputStream pam = new ByteArrayOutputStream();
         pam.writeBytes("P7\nWIDTH 2\nHEIGHT 1\nDEPTH 4\nMAXVAL 255\nTUPLTYPE RGB_ALPHA\nENDHDR\n"
                 .getBytes(StandardCharsets.US_ASCII));
@@ -83,6 +88,11 @@ class ObjAlphaCommandTest {
                 + "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
                 + "usemtl back\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n"
                 + "usemtl front\nf 5/1 6/2 7/3\nf 5/1 7/3 8/4\n");
+        return obj;
+    }
+
+    /** Two pixels of {@code obj} rendered from (0, 0, 3), a quarter in from each side of the front quad. */
+    private int[] render(Path obj) throws IOException {
         Path out = dir.resolve("out.png");
         CliRun r = CliRun.of("render", "--obj", obj.toString(), "--eye", "0,0,3", "--target", "0,0,0",
                 "--size", "80x60", "--out", out.toString());
@@ -109,6 +119,21 @@ class ObjAlphaCommandTest {
         int blue = Math.round(255 * 64 / 255f);
         assertEquals(0xFF000000 | red << 16 | blue, px[0]);
         assertEquals(0xFF00FF00, px[1]);
+    }
+
+    /** {@code export} keeps a texture's alpha (as a PAM): the exported cut-out and blend render as the original. */
+    @Test
+    void anExportedSceneKeepsItsTransparency() throws IOException {
+        for (int[] texels : new int[][] {{0x0000FF00, 0xFF0000FF}, {0x400000FF, 0xFF00FF00}}) {
+            Path obj = scene(texels[0], texels[1]);
+            int[] original = render(obj);
+            Path exported = dir.resolve("e").resolve("e.obj");
+            CliRun r = CliRun.of("export", "--obj", obj.toString(), "--to", exported.toString());
+            assertEquals(0, r.status(), r.err());
+            assertTrue(Files.isRegularFile(dir.resolve("e").resolve("e-front.pam")), r.out());
+            assertEquals(original[0], render(exported)[0], "the texel with alpha " + (texels[0] >>> 24));
+            assertEquals(original[1], render(exported)[1]);
+        }
     }
 
     @Test

@@ -90,13 +90,13 @@ class ImageFilesTest {
     void otherExtensionsAreAUsageError(String name) throws IOException {
         Path out = dir.resolve(name);
         InputException e = assertThrows(InputException.class, () -> ImageFiles.write(out, W, H, testImage()));
-        assertEquals(out + ": unsupported output format (use .png or .ppm)", e.getMessage());
+        assertEquals(out + ": unsupported output format (use .png, .ppm or .pam)", e.getMessage());
         assertEquals(InputException.Kind.USAGE, e.kind());
         assertEquals(List.of(), listing());
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"out.png", "out.ppm"})
+    @ValueSource(strings = {"out.png", "out.ppm", "out.pam"})
     void missingDirectoryIsReported(String name) throws IOException {
         Path out = dir.resolve("missing").resolve(name);
         InputException e = assertThrows(InputException.class, () -> ImageFiles.write(out, W, H, testImage()));

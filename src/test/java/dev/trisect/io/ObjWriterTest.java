@@ -5,6 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import dev.trisect.mesh.Mesh;
 import dev.trisect.mesh.MeshBuilder;
+import dev.trisect.content.SceneAsset;
+import dev.trisect.content.SceneLoader;
 import dev.trisect.mesh.ObjReader;
 import dev.trisect.texture.Texture;
 import java.io.IOException;
@@ -34,6 +36,34 @@ class ObjWriterTest {
                 maps.stream().map(p -> p.getFileName().toString()).toList());
         assertEquals("newmtl a.b\nmap_Kd e-a_b.ppm\nnewmtl a_b\nmap_Kd e-a_b-2.ppm\nnewmtl A_B\nmap_Kd e-A_B-3.ppm\n",
                 Files.readString(dir.resolve("e.mtl")));
+    }
+
+    /**
+     * A texture with alpha (a cut-out and a translucent one) is written as a PAM with its alpha, an
+     * opaque one as a PPM, and loading the OBJ back gives every texel as it was, alpha included: an
+     * exported scene's transparency survives (a PPM would have made both opaque).
+     */
+    @Test
+    void texturesWithAlphaAreWrittenAsPamAndReadBackAsTheyWere() throws IOException {
+        MeshBuilder b = new MeshBuilder();
+        int t = b.uv(0.5, 0.5);
+        for (String name : new String[] {"cut", "glass", "wall"}) {
+            b.material(name);
+            b.triangle(b.position(0, 0, 0), b.position(1, 0, 0), b.position(0, 1, 0), t, t, t);
+        }
+        List<Texture> textures = List.of(new Texture("cut", 2, 1, new int[] {0xFF102030, 0x00405060}),
+                new Texture("glass", 2, 1, new int[] {0x80FF0000, 0xFF00FF00}),
+                new Texture("wall", 2, 1, new int[] {0xFF010203, 0xFFFFFFFF}));
+        Path obj = dir.resolve("a.obj");
+        List<Path> maps = ObjWriter.write(obj, b.build(), textures);
+        assertEquals(List.of("a-cut.pam", "a-glass.pam", "a-wall.ppm"),
+                maps.stream().map(p -> p.getFileName().toString()).toList());
+        assertEquals(maps, ObjWriter.files(obj, b.build(), textures).subList(2, 5));
+        SceneAsset back = SceneLoader.load(obj, null, note -> { });
+        for (int m = 0; m < textures.size(); m++) {
+            assertArrayEquals(textures.get(m).argb(), back.textures().get(m).argb(), textures.get(m).name());
+            assertEquals(textures.get(m).alpha(), back.textures().get(m).alpha(), textures.get(m).name());
+        }
     }
 
     /**
