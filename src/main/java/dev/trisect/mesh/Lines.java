@@ -115,8 +115,13 @@ public final class Lines {
          * @param y object space
          * @param z object space
          * @return the point's index
+         * @throws IllegalArgumentException when a coordinate is not a finite float (NaN, infinite, or beyond
+         *                                  the float range), as {@link MeshBuilder#position(double, double, double)} refuses it
          */
         public int point(double x, double y, double z) {
+            if (!(MeshBuilder.isFloat(x) && MeshBuilder.isFloat(y) && MeshBuilder.isFloat(z))) {
+                throw MeshBuilder.notFloat("line point", x, y, z);
+            }
             if (3 * pointCount + 3 > points.length) {
                 points = Arrays.copyOf(points, 2 * points.length);
             }
@@ -131,8 +136,11 @@ public final class Lines {
          *
          * @param p object space
          * @return the point's index
+         * @throws NullPointerException     when {@code p} is null
+         * @throws IllegalArgumentException when a coordinate is not a finite float
          */
         public int point(Vec3 p) {
+            Objects.requireNonNull(p, "point is null");
             return point(p.x(), p.y(), p.z());
         }
 
@@ -165,6 +173,8 @@ public final class Lines {
          * @param b   the other end, object space
          * @param rgb the colour, 0xRRGGBB
          * @return this builder
+         * @throws NullPointerException     when an end is null
+         * @throws IllegalArgumentException when a coordinate is not a finite float
          */
         public Builder segment(Vec3 a, Vec3 b, int rgb) {
             int i = point(a);
@@ -178,10 +188,12 @@ public final class Lines {
          * @param rgb     the colour, 0xRRGGBB
          * @param corners point indices, at least two
          * @return this builder
-         * @throws IllegalArgumentException for fewer than two corners
+         * @throws NullPointerException      when {@code corners} is null
+         * @throws IllegalArgumentException  for fewer than two corners
+         * @throws IndexOutOfBoundsException when an index is not a point added
          */
         public Builder polyline(int rgb, int... corners) {
-            if (corners.length < 2) {
+            if (Objects.requireNonNull(corners, "corners is null").length < 2) {
                 throw new IllegalArgumentException("a polyline needs at least 2 points, got " + corners.length);
             }
             for (int i = 1; i < corners.length; i++) {
@@ -196,10 +208,11 @@ public final class Lines {
          * @param rgb     the colour, 0xRRGGBB
          * @param corners the points, object space, at least two
          * @return this builder
-         * @throws IllegalArgumentException for fewer than two corners
+         * @throws NullPointerException     when {@code corners} or one of them is null
+         * @throws IllegalArgumentException for fewer than two corners, or a coordinate that is not a finite float
          */
         public Builder polyline(int rgb, Vec3... corners) {
-            if (corners.length < 2) {
+            if (Objects.requireNonNull(corners, "corners is null").length < 2) {
                 throw new IllegalArgumentException("a polyline needs at least 2 points, got " + corners.length);
             }
             int[] at = new int[corners.length];

@@ -274,12 +274,12 @@ public final class MeshBuilder {
     }
 
     /** Whether {@code d} is kept as a finite float: not NaN, not infinite, not beyond the float range. */
-    private static boolean isFloat(double d) {
+    static boolean isFloat(double d) {
         return Float.isFinite((float) d);
     }
 
     /** The refusal of values that are not all finite floats, naming them. */
-    private static IllegalArgumentException notFloat(String what, double... values) {
+    static IllegalArgumentException notFloat(String what, double... values) {
         StringBuilder named = new StringBuilder();
         for (double v : values) {
             named.append(named.length() == 0 ? "" : ", ").append(v);

@@ -39,20 +39,37 @@ public record Fog(Mode mode, double start, double end, double density, Colour co
      * @param end     linear: where only fog is left
      * @param density exp, exp2: the density
      * @param colour  the fog's colour
-     * @throws IllegalArgumentException for a linear fog whose end is not beyond its start, a negative
-     *                                  density, or a value that is not finite
+     * @throws NullPointerException     when {@code mode} or {@code colour} is null
+     * @throws IllegalArgumentException for a value that is not finite; a linear fog whose end is not
+     *                                  beyond its start, whose end - start is not finite, or whose density
+     *                                  is not 0; an exp or exp2 fog whose density is negative, or whose
+     *                                  start or end is not 0
      */
     public Fog {
         Objects.requireNonNull(mode, "fog mode is null");
         Objects.requireNonNull(colour, "fog colour is null");
-        if (!Double.isFinite(start + end + density)) {
+        if (!(Double.isFinite(start) && Double.isFinite(end) && Double.isFinite(density))) {
             throw new IllegalArgumentException("fog values must be finite");
         }
-        if (mode == Mode.LINEAR && !(end > start)) {
-            throw new IllegalArgumentException("linear fog needs end > start, not " + start + ".." + end);
-        }
-        if (mode != Mode.LINEAR && !(density >= 0)) {
-            throw new IllegalArgumentException("fog density must be >= 0, not " + density);
+        if (mode == Mode.LINEAR) {
+            if (!(end > start)) {
+                throw new IllegalArgumentException("linear fog needs end > start, not " + start + ".." + end);
+            }
+            // factor() divides by end - start: beyond the double range every depth would be all fog.
+            if (!Double.isFinite(end - start)) {
+                throw new IllegalArgumentException("linear fog's end - start must be finite, not " + start + ".." + end);
+            }
+            if (density != 0) {
+                throw new IllegalArgumentException("linear fog has no density (give 0), not " + density);
+            }
+        } else {
+            if (!(density >= 0)) {
+                throw new IllegalArgumentException("fog density must be >= 0, not " + density);
+            }
+            if (start != 0 || end != 0) {
+                throw new IllegalArgumentException(mode.name().toLowerCase(java.util.Locale.ROOT)
+                        + " fog has no start or end (give 0), not " + start + ".." + end);
+            }
         }
     }
 

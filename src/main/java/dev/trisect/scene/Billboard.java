@@ -56,7 +56,8 @@ public final class Billboard {
      * @param width   world units across
      * @param height  world units down
      * @return the billboard
-     * @throws IllegalArgumentException when a size is not positive and finite
+     * @throws NullPointerException     when {@code texture} or {@code at} is null
+     * @throws IllegalArgumentException when a size is not positive and finite, or {@code at} is not finite
      */
     public static Billboard world(Texture texture, Vec3 at, double width, double height) {
         return of(texture, at, width, height, false);
@@ -70,7 +71,8 @@ public final class Billboard {
      * @param width   pixels across
      * @param height  pixels down
      * @return the billboard
-     * @throws IllegalArgumentException when a size is below 1
+     * @throws NullPointerException     when {@code texture} or {@code at} is null
+     * @throws IllegalArgumentException when a size is below 1, or {@code at} is not finite
      */
     public static Billboard pixels(Texture texture, Vec3 at, int width, int height) {
         if (width < 1 || height < 1) {
@@ -83,6 +85,9 @@ public final class Billboard {
     private static Billboard of(Texture texture, Vec3 at, double width, double height, boolean pixels) {
         Objects.requireNonNull(texture, "texture is null");
         Objects.requireNonNull(at, "position is null");
+        if (!at.isFinite()) {
+            throw new IllegalArgumentException("a billboard's position must be finite, not " + at);
+        }
         if (!(width > 0 && height > 0 && Double.isFinite(width) && Double.isFinite(height))) {
             throw new IllegalArgumentException("billboard size must be positive and finite, got " + width + " x "
                     + height);

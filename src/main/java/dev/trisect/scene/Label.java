@@ -32,6 +32,9 @@ public final class Label {
     private Label(String text, Vec3 at, Font font, int colour, int background, boolean onTop) {
         this.text = Objects.requireNonNull(text, "text is null");
         this.at = Objects.requireNonNull(at, "position is null");
+        if (!at.isFinite()) {
+            throw new IllegalArgumentException("a label's position must be finite, not " + at);
+        }
         this.font = Objects.requireNonNull(font, "font is null");
         this.colour = colour & 0xFFFFFF;
         this.background = background;
@@ -44,6 +47,8 @@ public final class Label {
      * @param text the text; {@code '\n'} starts a line
      * @param at   the point it stands on, in its object's space
      * @return the label
+     * @throws NullPointerException     when {@code text} or {@code at} is null
+     * @throws IllegalArgumentException when {@code at} is not finite
      */
     public static Label of(String text, Vec3 at) {
         return new Label(text, at, DEFAULT_FONT, 0xFFFFFF, 0, false);
@@ -54,6 +59,7 @@ public final class Label {
      *
      * @param font the font; its size is the glyphs' size in pixels
      * @return a copy in that font
+     * @throws NullPointerException when {@code font} is null
      */
     public Label withFont(Font font) {
         return new Label(text, at, font, colour, background, onTop);

@@ -65,6 +65,7 @@ public final class Light extends Node {
      * @param towards the direction towards the light
      * @param colour  its diffuse colour
      * @return the light
+     * @throws NullPointerException     when {@code towards} or {@code colour} is null
      * @throws IllegalArgumentException when {@code towards} is zero or not finite
      */
     public static Light directional(Vec3 towards, Colour colour) {
@@ -79,6 +80,8 @@ public final class Light extends Node {
      * @param position where it is
      * @param colour   its diffuse colour
      * @return the light
+     * @throws NullPointerException     when {@code position} or {@code colour} is null
+     * @throws IllegalArgumentException for a non-finite position
      */
     public static Light point(Vec3 position, Colour colour) {
         return point(position, colour, 1, 0, 0);
@@ -94,6 +97,7 @@ public final class Light extends Node {
      * @param kl       linear attenuation, at least 0
      * @param kq       quadratic attenuation, at least 0 (not all three 0)
      * @return the light
+     * @throws NullPointerException     when {@code position} or {@code colour} is null
      * @throws IllegalArgumentException for a non-finite position or bad attenuation
      */
     public static Light point(Vec3 position, Colour colour, double kc, double kl, double kq) {
@@ -142,6 +146,7 @@ public final class Light extends Node {
      * Changes the colour from the next frame on.
      *
      * @param colour the new colour
+     * @throws NullPointerException when {@code colour} is null
      */
     public void setColour(Colour colour) {
         Objects.requireNonNull(colour, "colour is null");
@@ -154,7 +159,9 @@ public final class Light extends Node {
      * still applies).
      *
      * @param vector a point light's position, or the direction towards a directional light
-     * @throws IllegalStateException for an ambient light
+     * @throws NullPointerException     when {@code vector} is null
+     * @throws IllegalArgumentException for a non-finite position, or a zero or non-finite direction
+     * @throws IllegalStateException    for an ambient light
      */
     public void setVector(Vec3 vector) {
         Values v = values;
@@ -229,12 +236,13 @@ public final class Light extends Node {
         return p;
     }
 
+    /** {@code d} at unit length: any finite non-zero vector, however long or short ({@link Vec3#normalize()}). */
     private static Vec3 direction(Vec3 d) {
         Objects.requireNonNull(d, "direction is null");
-        double length = d.length();
-        if (!(length > 0) || !Double.isFinite(length)) {
+        Vec3 unit = d.isFinite() ? d.normalize() : Vec3.ZERO;
+        if (unit.length() == 0) {
             throw new IllegalArgumentException("a directional light needs a non-zero finite direction, not " + d);
         }
-        return d.scale(1 / length);
+        return unit;
     }
 }

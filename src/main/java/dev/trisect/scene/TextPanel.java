@@ -6,6 +6,7 @@ import dev.trisect.texture.Texture;
 import dev.trisect.texture.internal.GlyphAtlas;
 import java.awt.Font;
 import java.util.Arrays;
+import java.util.Objects;
 
 /**
  * A grid of characters on a flat panel in the scene, each cell with its own colour and background (as
@@ -40,9 +41,15 @@ public final class TextPanel {
      * @param rows      characters down, 1..1024
      * @param font      the font; its size is a cell's height in texels
      * @param rowHeight world units per row (the panel is {@code rows * rowHeight} high)
-     * @throws IllegalArgumentException for a size out of range or a row height not positive and finite
+     * @throws NullPointerException     when {@code font} is null
+     * @throws IllegalArgumentException for a size out of range, a font size below 1, or a row height not
+     *                                  positive and finite
      */
     public TextPanel(int columns, int rows, Font font, double rowHeight) {
+        Objects.requireNonNull(font, "font is null");
+        if (!(font.getSize2D() >= 1)) {
+            throw new IllegalArgumentException("a text panel's font must be at least 1 pixel, got " + font.getSize2D());
+        }
         if (columns < 1 || rows < 1 || columns > 1024 || rows > 1024) {
             throw new IllegalArgumentException("a text panel is 1 to 1024 cells a side, got " + columns + "x" + rows);
         }
@@ -116,9 +123,11 @@ public final class TextPanel {
      * @param text       the characters (code points)
      * @param rgb        their colour, 0xRRGGBB
      * @param background their cells' background, 0xRRGGBB
+     * @throws NullPointerException      when {@code text} is null
      * @throws IndexOutOfBoundsException when the cell is outside the panel
      */
     public synchronized void write(int column, int row, String text, int rgb, int background) {
+        Objects.requireNonNull(text, "text is null");
         if (column < 0 || row < 0 || column >= columns || row >= rows) {
             throw new IndexOutOfBoundsException("cell (" + column + ", " + row + ") is outside the panel's "
                     + columns + "x" + rows);

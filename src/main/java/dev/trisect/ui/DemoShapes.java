@@ -226,7 +226,11 @@ final class DemoShapes implements UpdateListener {
                 double[] top = new double[4];
                 o.worldMatrix().transformPoint((box[6 * k] + box[6 * k + 3]) / 2, box[6 * k + 4],
                         (box[6 * k + 2] + box[6 * k + 5]) / 2, top, 0);
-                at.putIfAbsent(m.materialNames().get(k), new Vec3(top[0] / top[3], top[1] / top[3], top[2] / top[3]));
+                Vec3 label = new Vec3(top[0] / top[3], top[1] / top[3], top[2] / top[3]);
+                // A part with a NaN or infinite vertex (the OBJ reader keeps them) has no place to label.
+                if (label.isFinite()) {
+                    at.putIfAbsent(m.materialNames().get(k), label);
+                }
             }
         }
         return at;

@@ -203,4 +203,17 @@ class DemoLogicTest {
         assertEquals("Loaded m.obj (2 triangles). \u26a0 m.mtl:2: map_Kd: gone (and 1 more)",
                 FileMenu.loaded(Path.of("m.obj"), 2, java.util.List.of("m.mtl:2: map_Kd: gone", "x")));
     }
+
+    @Test
+    void aModelPartWithoutAFinitePlaceGetsNoLabelAndTheOthersDo() throws Exception {
+        // The OBJ reader keeps NaN coordinates (the renderer skips their triangles): the part's box is NaN,
+        // and a label there would be refused, so X must leave it unlabelled rather than fail.
+        Path obj = Files.writeString(dir.resolve("nan.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nv nan 0 0\n"
+                + "usemtl good\nf 1 2 3\nusemtl bad\nf 1 2 4\n");
+        dev.trisect.scene.Scene scene = new dev.trisect.scene.Scene();
+        scene.add(dev.trisect.scene.SceneObject.load(obj));
+        assertEquals(java.util.Set.of("good"), DemoShapes.landmarks(scene).keySet());
+        assertTrue(DemoShapes.extrasFor(scene, dev.trisect.scene.Camera.looking(new dev.trisect.math.Vec3(0, 0, 3),
+                dev.trisect.math.Vec3.ZERO)).size() >= 3, "axes, pane and labels");
+    }
 }

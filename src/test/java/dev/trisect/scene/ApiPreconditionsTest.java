@@ -1,0 +1,95 @@
+package dev.trisect.scene;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import dev.trisect.math.Vec3;
+import dev.trisect.mesh.Lines;
+import dev.trisect.render.Colour;
+import dev.trisect.render.Fog;
+import dev.trisect.texture.ProceduralTextures;
+import java.awt.Font;
+import org.junit.jupiter.api.Test;
+
+/**
+ * The preconditions the public API of lines, labels, billboards, text panels, fog and lights documents
+ * are checked where the value is given, with a message naming it, not found (or silently dropped)
+ * frames later.
+ */
+class ApiPreconditionsTest {
+    private static final double NAN = Double.NaN;
+
+    @Test
+    void linePointsMustBeFiniteFloatsAsMeshPositionsAre() {
+        Lines.Builder b = Lines.builder();
+        for (double bad : new double[] {NAN, Double.POSITIVE_INFINITY, 1e39}) {
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> b.point(0, bad, 0));
+            assertTrue(e.getMessage().startsWith("line point (0.0, " + bad + ", 0.0) is not a finite float"),
+                    e.getMessage());
+            assertThrows(IllegalArgumentException.class, () -> b.segment(new Vec3(bad, 0, 0), Vec3.ZERO, 0));
+        }
+        assertEquals(0, b.build().pointCount(), "a refused point adds nothing");
+        assertEquals("point is null", assertThrows(NullPointerException.class, () -> b.point(null)).getMessage());
+        assertEquals("corners is null",
+                assertThrows(NullPointerException.class, () -> b.polyline(0, (Vec3[]) null)).getMessage());
+        assertEquals("corners is null",
+                assertThrows(NullPointerException.class, () -> b.polyline(0, (int[]) null)).getMessage());
+        assertEquals(1, b.segment(new Vec3(3.4e38, 0, 0), Vec3.ZERO, 0).build().segmentCount());
+    }
+
+    @Test
+    void labelsAndBillboardsStandOnFinitePoints() {
+        Vec3 nan = new Vec3(NAN, 0, 0);
+        Vec3 far = new Vec3(0, Double.NEGATIVE_INFINITY, 0);
+        for (Vec3 bad : new Vec3[] {nan, far}) {
+            assertTrue(assertThrows(IllegalArgumentException.class, () -> Label.of("x", bad)).getMessage()
+                    .startsWith("a label's position must be finite"));
+            assertTrue(assertThrows(IllegalArgumentException.class,
+                    () -> Billboard.world(ProceduralTextures.crate(8), bad, 1, 1)).getMessage()
+                    .startsWith("a billboard's position must be finite"));
+            assertThrows(IllegalArgumentException.class, () -> Billboard.pixels(ProceduralTextures.crate(8), bad, 8, 8));
+        }
+    }
+
+    @Test
+    void aTextPanelNamesAMissingOrEmptyFont() {
+        assertEquals("font is null", assertThrows(NullPointerException.class,
+                () -> new TextPanel(2, 2, null, 1)).getMessage());
+        assertEquals("a text panel's font must be at least 1 pixel, got 0.0", assertThrows(
+                IllegalArgumentException.class, () -> new TextPanel(2, 2, new Font(Font.SANS_SERIF, Font.PLAIN, 0), 1))
+                .getMessage());
+        TextPanel p = new TextPanel(2, 2, Label.DEFAULT_FONT, 1);
+        assertEquals("text is null", assertThrows(NullPointerException.class, () -> p.write(0, 0, null, 0, 0))
+                .getMessage());
+    }
+
+    @Test
+    void aFogHoldsOnlyTheValuesItsEquationUses() {
+        assertThrows(IllegalArgumentException.class, () -> new Fog(Fog.Mode.EXP, 5, 1, 0.1, Colour.BLACK));
+        assertThrows(IllegalArgumentException.class, () -> new Fog(Fog.Mode.EXP2, 0, 1, 0.1, Colour.BLACK));
+        assertThrows(IllegalArgumentException.class, () -> new Fog(Fog.Mode.LINEAR, 1, 5, -5, Colour.BLACK));
+        // Finite values whose sum overflows are finite; a range wider than the doubles is refused.
+        Fog far = Fog.linear(1e308, 1.5e308, Colour.BLACK);
+        assertEquals(0.5, far.factor(1.25e308), 1e-12);
+        assertTrue(assertThrows(IllegalArgumentException.class, () -> Fog.linear(-1e308, 1e308, Colour.BLACK))
+                .getMessage().contains("end - start must be finite"));
+        assertEquals(Fog.exp(0.1, Colour.BLACK), new Fog(Fog.Mode.EXP, 0, 0, 0.1, Colour.BLACK));
+    }
+
+    @Test
+    void aDirectionalLightTakesAnyFiniteNonZeroLength() {
+        assertEquals(new Vec3(1, 0, 0), Light.directional(new Vec3(1e-200, 0, 0), Colour.WHITE).vector());
+        Vec3 v = Light.directional(new Vec3(1e200, 1e200, 0), Colour.WHITE).vector();
+        assertEquals(1, v.length(), 1e-15);
+        assertEquals(v.x(), v.y());
+        Light l = Light.directional(new Vec3(0, 1, 0), Colour.WHITE);
+        l.setVector(new Vec3(0, 0, 1e300));
+        assertEquals(new Vec3(0, 0, 1), l.vector());
+        assertThrows(IllegalArgumentException.class, () -> Light.directional(Vec3.ZERO, Colour.WHITE));
+        assertThrows(IllegalArgumentException.class, () -> Light.directional(new Vec3(NAN, 1, 0), Colour.WHITE));
+        // Within the plain formula's range, bit for bit what it was.
+        Vec3 d = new Vec3(2, 3, 1);
+        assertEquals(d.scale(1 / d.length()), Light.directional(d, Colour.WHITE).vector());
+    }
+}
