@@ -151,6 +151,9 @@ final class MtlLibraries {
      */
     private static int colour(LineScanner mtlLines, String what) {
         int n = mtlLines.count() - 1;
+        if (n >= 1 && (mtlLines.is(1, "spectral") || mtlLines.is(1, "xyz"))) {
+            throw mtlLines.error(what + " " + mtlLines.text(1) + " is not supported: give r g b (or one grey level)");
+        }
         if (n != 1 && n != 3) {
             throw mtlLines.error(what + " needs r g b (or one grey level), got " + n + (n == 1 ? " value" : " values"));
         }

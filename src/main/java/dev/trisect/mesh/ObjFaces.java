@@ -116,7 +116,8 @@ final class ObjFaces {
     }
 
     private InputException malformedCorner(int i) {
-        return lines.error("malformed face corner " + LineScanner.quote(lines.text(i)));
+        return lines.error("malformed " + (lines.is(0, "l") ? "line point " : "face corner ")
+                + LineScanner.quote(lines.text(i)));
     }
 
     /**

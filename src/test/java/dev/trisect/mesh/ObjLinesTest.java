@@ -60,6 +60,8 @@ class ObjLinesTest {
         "v 0 0 0\\nl 1|l.obj:2: line has 1 point; needs at least 2",
         "v 0 0 0\\nl 1 7\\nv 1 1 1\\nf 1 2 1|l.obj:2: vertex index 7 is out of range (2 vertices)",
         "v 0 0 0\\nl 1 0|l.obj:2: vertex index 0 is not valid (OBJ indices start at 1)",
+        "v 0 0 0\\nv 1 1 1\\nl 1 x|l.obj:3: malformed line point 'x'",
+        "v 0 0 0\\nv 1 1 1\\nl 1 2/1/1/|l.obj:3: malformed line point '2/1/1/'",
     })
     void badLinesNameTheFileAndLine(String text, String expected) throws IOException {
         Path obj = write("l.obj", text.replace("\\n", "\n"));
@@ -70,8 +72,9 @@ class ObjLinesTest {
     @ParameterizedTest
     @CsvSource(delimiter = '|', value = {
         "Kd 1 0|m.mtl:2: Kd needs r g b (or one grey level), got 2 values",
-        "Kd spectral f.spd|m.mtl:2: Kd needs r g b (or one grey level), got 2 values",
-        "Kd xyz 1 1 1|m.mtl:2: Kd needs r g b (or one grey level), got 4 values",
+        "Kd spectral f.spd|m.mtl:2: Kd spectral is not supported: give r g b (or one grey level)",
+        "Kd xyz 1 1 1|m.mtl:2: Kd xyz is not supported: give r g b (or one grey level)",
+        "Ka xyz 1|m.mtl:2: Ka xyz is not supported: give r g b (or one grey level)",
         "Kd 1 q 0|m.mtl:2: Kd: malformed number 'q' (only the r g b form is supported)",
         "Kd NaN 0 0|m.mtl:2: Kd needs finite numbers",
     })
