@@ -143,6 +143,17 @@ final class BenchCommand extends SceneCommand {
         if (sweep && targetMs != null) {
             throw InputException.usage("--sweep and --target-ms do not go together");
         }
+        if (sweep || targetMs != null) {
+            // Both draw the scene's textured triangles alone (Sweep, BudgetRun): whatever else was asked for
+            // would be silently left out of the times.
+            String extra = scatteredLines > 0 ? "--lines" : scatteredLabels > 0 ? "--labels" : alphaTest ? "--alpha-test"
+                    : common.spec.commandLine().getParseResult().hasMatchedOption("--line-width") ? "--line-width"
+                    : light.given();
+            if (extra != null) {
+                throw InputException.usage(extra + " does not go with " + (sweep ? "--sweep" : "--target-ms")
+                        + ": it times the textured triangles alone, without lines, labels, alpha test, light or fog");
+            }
+        }
         if (!sweep && (edges != null || errors != null)) {
             throw InputException.usage("--edges and --errors go with --sweep");
         }

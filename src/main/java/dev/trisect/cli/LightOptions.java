@@ -81,6 +81,12 @@ final class LightOptions {
         return light != null || point != null || ambient != null;
     }
 
+    /** The first light or fog option given ({@code --light}, {@code --point}, ...), or null for none. */
+    String given() {
+        return light != null ? "--light" : point != null ? "--point" : ambient != null ? "--ambient"
+                : shade != null ? "--shade" : fog != null ? "--fog" : null;
+    }
+
     /** Checks the combinations; every message names the option. */
     void check() {
         if (lightColour != null && light == null) {

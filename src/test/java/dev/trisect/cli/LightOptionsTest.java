@@ -88,4 +88,23 @@ class LightOptionsTest {
         assertTrue(r.errLine().endsWith("--light needs a non-zero direction, got 0.0,-0.0,0.0"), r.err());
         assertTrue(!Files.exists(Path.of(out)));
     }
+
+    @Test
+    void theSweepAndTheBudgetRunRefuseWhatTheyDoNotDraw() {
+        // Both time the textured triangles alone: lines, labels, the alpha test, light and fog were silently dropped.
+        for (String run : new String[] {"--sweep", "--target-ms=50"}) {
+            for (String[] extra : new String[][] {{"--lines", "3"}, {"--labels", "2"}, {"--alpha-test"},
+                {"--line-width", "2"}, {"--light", "1,1,1"}, {"--point", "0,1,0"}, {"--ambient", "0.5"},
+                {"--shade", "none"}, {"--fog", "exp,0.1"}}) {
+                String[] args = with(new String[] {"bench", "--scene", "floor", "--size", "8x8", "--frames", "1",
+                    "--warmup", "0", run}, extra);
+                CliRun r = CliRun.of(args);
+                assertEquals(2, r.status(), String.join(" ", args) + ": " + r.err());
+                assertEquals(extra[0] + " does not go with " + run.replace("=50", "") + ": it times the textured "
+                        + "triangles alone, without lines, labels, alpha test, light or fog",
+                        r.errLine().substring("trisect: ".length()));
+                assertEquals("", r.out());
+            }
+        }
+    }
 }
