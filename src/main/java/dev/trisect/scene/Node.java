@@ -147,6 +147,23 @@ public abstract sealed class Node permits Group, SceneObject, Light {
     }
 
     /**
+     * An unmodifiable copy of {@code list}, whose every element is checked first, so that a null names
+     * the list and where it is rather than failing as a bare {@link NullPointerException}.
+     *
+     * @param what the list's name in the messages ("labels")
+     * @throws NullPointerException when the list or one of its elements is null
+     */
+    static <T> List<T> copyOf(List<T> list, String what) {
+        Objects.requireNonNull(list, () -> what + " is null: use List.of()");
+        for (int i = 0; i < list.size(); i++) {
+            if (list.get(i) == null) {
+                throw new NullPointerException(what + " holds null at index " + i);
+            }
+        }
+        return List.copyOf(list);
+    }
+
+    /**
      * Checks, under {@link #LOCK}, that {@code node} placed by {@code world} (its world matrix as it would
      * be) and every node under it get finite world matrices: a product of valid transforms can overflow,
      * and an object whose matrix holds an infinity would vanish from every frame without a word.

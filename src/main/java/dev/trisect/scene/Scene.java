@@ -219,9 +219,10 @@ public final class Scene extends Group {
      * before.
      *
      * @param texts the screen texts; an empty list for none
+     * @throws NullPointerException when the list or one of its texts is null
      */
     public void setScreenText(List<ScreenText> texts) {
-        List<ScreenText> copy = List.copyOf(Objects.requireNonNull(texts, "texts is null: use List.of()"));
+        List<ScreenText> copy = copyOf(texts, "texts");
         LOCK.lock();
         try {
             this.screenText = copy;

@@ -99,6 +99,7 @@ public final class SceneObject extends Node {
      *
      * @param billboards the billboards, their points in object space
      * @return the object
+     * @throws NullPointerException when the list or one of its billboards is null
      */
     public static SceneObject billboards(List<Billboard> billboards) {
         SceneObject o = new SceneObject(NO_TRIANGLES, Material.colour(0xFFFFFF));
@@ -111,6 +112,7 @@ public final class SceneObject extends Node {
      *
      * @param labels the labels, their points in object space
      * @return the object
+     * @throws NullPointerException when the list or one of its labels is null
      */
     public static SceneObject labels(List<Label> labels) {
         SceneObject o = new SceneObject(NO_TRIANGLES, Material.colour(0xFFFFFF));
@@ -131,9 +133,10 @@ public final class SceneObject extends Node {
      * Draws {@code billboards} with the object from the next frame on, their points moved as its mesh is.
      *
      * @param billboards the billboards, in object space; an empty list for none
+     * @throws NullPointerException when the list or one of its billboards is null
      */
     public void setBillboards(List<Billboard> billboards) {
-        List<Billboard> copy = List.copyOf(Objects.requireNonNull(billboards, "billboards is null: use List.of()"));
+        List<Billboard> copy = copyOf(billboards, "billboards");
         LOCK.lock();
         try {
             this.billboards = copy;
@@ -156,9 +159,10 @@ public final class SceneObject extends Node {
      * Draws {@code labels} with the object from the next frame on, their points moved as its mesh is.
      *
      * @param labels the labels, in object space; an empty list for none
+     * @throws NullPointerException when the list or one of its labels is null
      */
     public void setLabels(List<Label> labels) {
-        List<Label> copy = List.copyOf(Objects.requireNonNull(labels, "labels is null: use List.of()"));
+        List<Label> copy = copyOf(labels, "labels");
         LOCK.lock();
         try {
             this.labels = copy;

@@ -92,4 +92,17 @@ class ApiPreconditionsTest {
         Vec3 d = new Vec3(2, 3, 1);
         assertEquals(d.scale(1 / d.length()), Light.directional(d, Colour.WHITE).vector());
     }
+
+    @Test
+    void aNullInALabelBillboardOrScreenTextListNamesTheListAndWhere() {
+        java.util.List<Label> labels = java.util.Arrays.asList(Label.of("a", Vec3.ZERO), null);
+        assertEquals("labels holds null at index 1",
+                assertThrows(NullPointerException.class, () -> SceneObject.labels(labels)).getMessage());
+        assertEquals("billboards holds null at index 0", assertThrows(NullPointerException.class,
+                () -> SceneObject.billboards(java.util.Collections.singletonList(null))).getMessage());
+        assertEquals("texts holds null at index 0", assertThrows(NullPointerException.class,
+                () -> new Scene().setScreenText(java.util.Collections.singletonList(null))).getMessage());
+        assertEquals("labels is null: use List.of()",
+                assertThrows(NullPointerException.class, () -> SceneObject.labels(null)).getMessage());
+    }
 }
