@@ -62,9 +62,10 @@ final class LightSection implements ToolSection {
                 + "to End, exp or exp2 by Density");
         fog.addActionListener(e -> applyFog());
         form.row(ToolsForm.label("Fog", fog.getToolTipText()), fog);
-        field("Fog start", 1e6, 0);
-        field("Fog end", 1e6, 1);
-        field("Fog density", 100, 2);
+        field("Fog start", 1e6, 0, 2);
+        field("Fog end", 1e6, 1, 2);
+        // Four decimals: densities of large scenes are thousandths (0.002 read "0.00" with two).
+        field("Fog density", 100, 2, 4);
         form.row(ToolsForm.label("Fog start", "Linear fog: the depth where it begins, world units"), fields[0]);
         form.row(ToolsForm.label("Fog end", "Linear fog: the depth where only the fog shows, world units"), fields[1]);
         form.row(ToolsForm.label("Fog density", "Exp and exp2 fog: the density, per world unit"), fields[2]);
@@ -76,7 +77,7 @@ final class LightSection implements ToolSection {
      * The field of {@code values[index]}: a number typed applies the fog again; one the fog refuses (a
      * linear start at or beyond its end) is not kept, so the field goes on showing the fog in force.
      */
-    private void field(String name, double max, int index) {
+    private void field(String name, double max, int index, int decimals) {
         fields[index] = new NumberField(name, "", 0, max, v -> {
             double before = values[index];
             values[index] = v;
@@ -84,7 +85,7 @@ final class LightSection implements ToolSection {
                 values[index] = before;
             }
             fields[index].show(values[index]);
-        }, owner::message);
+        }, owner::message).decimals(decimals);
         fields[index].show(values[index]);
     }
 

@@ -42,9 +42,9 @@ class LightSectionTest {
             assertEquals("16.03", f[0].getText(), "Fog start");
             assertEquals("128.25", f[1].getText(), "Fog end");
             assertEquals("linear", light.readoutFog());
-            scene.setFog(Fog.exp2(0.25, Colour.WHITE));
+            scene.setFog(Fog.exp2(0.0025, Colour.WHITE));
             light.refresh(null, null, null);
-            assertEquals("0.25", f[2].getText(), "Fog density");
+            assertEquals("0.0025", f[2].getText(), "Fog density, a large scene's");
             assertEquals("exp2", light.readoutFog());
         });
     }
