@@ -55,6 +55,8 @@ final class BenchCommand extends SceneCommand {
 
     /** Most frames measured, or rendered to warm up, per path. */
     static final int MAX_FRAMES = 1_000_000;
+    /** Most segments of --lines, and labels of --labels. */
+    static final int MAX_SCATTERED = 1_000_000;
 
     @Option(names = "--frames", paramLabel = "N", defaultValue = "200",
             description = "Frames measured per path (default: ${DEFAULT-VALUE}).")
@@ -175,11 +177,13 @@ final class BenchCommand extends SceneCommand {
         if (glref != null) {
             Programs.checkRunnable("--glref", glref);
         }
-        if (scatteredLines < 0) {
-            throw InputException.usage("--lines must be 0 or more, got " + scatteredLines);
+        // Bounded as --frames is: far more than any frame shows, and refused before the table's header
+        // rather than running out of memory after it.
+        if (scatteredLines < 0 || scatteredLines > MAX_SCATTERED) {
+            throw InputException.usage("--lines must be between 0 and " + MAX_SCATTERED + ", got " + scatteredLines);
         }
-        if (scatteredLabels < 0) {
-            throw InputException.usage("--labels must be 0 or more, got " + scatteredLabels);
+        if (scatteredLabels < 0 || scatteredLabels > MAX_SCATTERED) {
+            throw InputException.usage("--labels must be between 0 and " + MAX_SCATTERED + ", got " + scatteredLabels);
         }
         if (scatteredLabels > 0 && (scatteredLines > 0 || glref != null)) {
             throw InputException.usage("--labels times the labels alone: give it without --lines and --glref");

@@ -107,4 +107,14 @@ class LightOptionsTest {
             }
         }
     }
+
+    @Test
+    void scatteredLinesAndLabelsAreBoundedBeforeTheHeader() {
+        for (String option : new String[] {"--lines", "--labels"}) {
+            CliRun r = CliRun.of(with(BENCH, option, "2000000000"));
+            assertEquals(2, r.status(), r.err());
+            assertEquals("trisect: " + option + " must be between 0 and 1000000, got 2000000000", r.errLine());
+            assertEquals("", r.out(), "refused before the header, not out of memory after it");
+        }
+    }
 }

@@ -85,7 +85,7 @@ class LinesCommandTest {
                 r.out());
         CliRun bad = CliRun.of("bench", "--scene", "floor", "--lines", "-1");
         assertEquals(2, bad.status(), bad.err());
-        assertTrue(bad.err().contains("--lines must be 0 or more, got -1"), bad.err());
+        assertTrue(bad.err().contains("--lines must be between 0 and 1000000, got -1"), bad.err());
     }
 
     @Test
