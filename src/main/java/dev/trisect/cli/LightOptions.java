@@ -105,7 +105,7 @@ final class LightOptions {
                         + kc + "," + kl + "," + kq);
             }
         }
-        if (light != null && light.length() == 0) {
+        if (light != null && light.normalize().length() == 0) {
             throw InputException.usage("--light needs a non-zero direction, got " + triple(light.x(), light.y(),
                     light.z()));
         }
@@ -168,7 +168,11 @@ final class LightOptions {
         b.ambient(a.r(), a.g(), a.b());
         double[] black = new double[3];
         if (light != null) {
-            b.directional(light.x(), light.y(), light.z(), black, rgb(lightColour));
+            // Any finite non-zero length, as Light.directional takes: where the squared length would
+            // underflow or overflow (1e-300 or 1e300), the unit vector; otherwise as given, bit for bit.
+            double length = light.length();
+            Vec3 d = length > 1e-150 && length < 1e150 ? light : light.normalize();
+            b.directional(d.x(), d.y(), d.z(), black, rgb(lightColour));
         }
         if (point != null) {
             Vec3 k = attenuation != null ? attenuation : new Vec3(1, 0, 0);

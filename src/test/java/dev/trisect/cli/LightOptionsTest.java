@@ -117,4 +117,16 @@ class LightOptionsTest {
             assertEquals("", r.out(), "refused before the header, not out of memory after it");
         }
     }
+
+    @Test
+    void aLightDirectionOfAnyFiniteNonZeroLengthLightsAsItsUnitVector() throws Exception {
+        String[] frame = {"render", "--scene", "boxes", "--size", "32x18", "--shade", "flat", "--out"};
+        for (String[] run : new String[][] {{"1,0,0", "unit.ppm"}, {"1e-300,0,0", "tiny.ppm"}, {"1e300,0,0", "huge.ppm"}}) {
+            CliRun r = CliRun.of(with(frame, dir.resolve(run[1]).toString(), "--light", run[0]));
+            assertEquals(0, r.status(), run[0] + ": " + r.err());
+        }
+        byte[] unit = Files.readAllBytes(dir.resolve("unit.ppm"));
+        assertTrue(java.util.Arrays.equals(unit, Files.readAllBytes(dir.resolve("tiny.ppm"))), "1e-300,0,0");
+        assertTrue(java.util.Arrays.equals(unit, Files.readAllBytes(dir.resolve("huge.ppm"))), "1e300,0,0");
+    }
 }
