@@ -168,10 +168,7 @@ final class LightOptions {
         b.ambient(a.r(), a.g(), a.b());
         double[] black = new double[3];
         if (light != null) {
-            // Any finite non-zero length, as Light.directional takes: where the squared length would
-            // underflow or overflow (1e-300 or 1e300), the unit vector; otherwise as given, bit for bit.
-            double length = light.length();
-            Vec3 d = length > 1e-150 && length < 1e150 ? light : light.normalize();
+            Vec3 d = direction();
             b.directional(d.x(), d.y(), d.z(), black, rgb(lightColour));
         }
         if (point != null) {
@@ -179,6 +176,16 @@ final class LightOptions {
             b.point(point.x(), point.y(), point.z(), black, rgb(pointColour), k.x(), k.y(), k.z());
         }
         return b.build();
+    }
+
+    /**
+     * The --light direction, of any finite non-zero length as Light.directional takes: where its squared
+     * length would underflow or overflow (1e-300 or 1e300) the unit vector, otherwise as given, bit for
+     * bit, so that frames and glref's variables are unchanged.
+     */
+    private Vec3 direction() {
+        double length = light.length();
+        return length > 1e-150 && length < 1e150 ? light : light.normalize();
     }
 
     /** The fog, with its colour. */
@@ -200,7 +207,8 @@ final class LightOptions {
         Map<String, String> env = new LinkedHashMap<>();
         if ((light != null || point != null) && shading() != Shading.NONE) {
             if (light != null) {
-                env.put("GLREF_LIGHT", triple(light.x(), light.y(), light.z()));
+                Vec3 d = direction();
+                env.put("GLREF_LIGHT", triple(d.x(), d.y(), d.z()));
                 if (lightColour != null) {
                     env.put("GLREF_LIGHT_COLOUR", triple(lightColour));
                 }

@@ -128,5 +128,10 @@ class LightOptionsTest {
         byte[] unit = Files.readAllBytes(dir.resolve("unit.ppm"));
         assertTrue(java.util.Arrays.equals(unit, Files.readAllBytes(dir.resolve("tiny.ppm"))), "1e-300,0,0");
         assertTrue(java.util.Arrays.equals(unit, Files.readAllBytes(dir.resolve("huge.ppm"))), "1e300,0,0");
+        CliRun export = CliRun.of("export", "--scene", "floor", "--to", dir.resolve("f.obj").toString(), "--light",
+                "1e300,0,0");
+        assertEquals(0, export.status(), export.err());
+        assertTrue(export.out().contains("GLREF_LIGHT=1.0,0.0,0.0 "), "glref, in floats, gets the unit vector: "
+                + export.out());
     }
 }
