@@ -1,6 +1,7 @@
 package dev.trisect.scene;
 
 import dev.trisect.math.Vec3;
+import dev.trisect.texture.internal.GlyphAtlas;
 import java.awt.Font;
 import java.util.Objects;
 
@@ -57,12 +58,13 @@ public final class Label {
     /**
      * This label in another font.
      *
-     * @param font the font; its size is the glyphs' size in pixels
+     * @param font the font; its size is the glyphs' size in pixels, 1 to 512
      * @return a copy in that font
-     * @throws NullPointerException when {@code font} is null
+     * @throws NullPointerException     when {@code font} is null
+     * @throws IllegalArgumentException for a size outside 1 to 512 pixels
      */
     public Label withFont(Font font) {
-        return new Label(text, at, font, colour, background, onTop);
+        return new Label(text, at, GlyphAtlas.checkFont(font), colour, background, onTop);
     }
 
     /**

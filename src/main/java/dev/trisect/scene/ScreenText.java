@@ -1,5 +1,6 @@
 package dev.trisect.scene;
 
+import dev.trisect.texture.internal.GlyphAtlas;
 import java.awt.Font;
 import java.util.Objects;
 
@@ -75,11 +76,13 @@ public final class ScreenText {
     /**
      * The same in another font.
      *
-     * @param font the font; its size is the glyphs' size in pixels
+     * @param font the font; its size is the glyphs' size in pixels, 1 to 512
      * @return a copy in that font
+     * @throws NullPointerException     when {@code font} is null
+     * @throws IllegalArgumentException for a size outside 1 to 512 pixels
      */
     public ScreenText withFont(Font font) {
-        return new ScreenText(corner, text, font, colour, background, margin);
+        return new ScreenText(corner, text, GlyphAtlas.checkFont(font), colour, background, margin);
     }
 
     /**

@@ -42,14 +42,11 @@ public final class TextPanel {
      * @param font      the font; its size is a cell's height in texels
      * @param rowHeight world units per row (the panel is {@code rows * rowHeight} high)
      * @throws NullPointerException     when {@code font} is null
-     * @throws IllegalArgumentException for a size out of range, a font size below 1, or a row height not
-     *                                  positive and finite
+     * @throws IllegalArgumentException for a size out of range, a font size outside 1 to 512 pixels, or a
+     *                                  row height not positive and finite
      */
     public TextPanel(int columns, int rows, Font font, double rowHeight) {
-        Objects.requireNonNull(font, "font is null");
-        if (!(font.getSize2D() >= 1)) {
-            throw new IllegalArgumentException("a text panel's font must be at least 1 pixel, got " + font.getSize2D());
-        }
+        GlyphAtlas.checkFont(font);
         if (columns < 1 || rows < 1 || columns > 1024 || rows > 1024) {
             throw new IllegalArgumentException("a text panel is 1 to 1024 cells a side, got " + columns + "x" + rows);
         }

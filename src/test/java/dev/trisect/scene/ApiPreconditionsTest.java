@@ -56,7 +56,7 @@ class ApiPreconditionsTest {
     void aTextPanelNamesAMissingOrEmptyFont() {
         assertEquals("font is null", assertThrows(NullPointerException.class,
                 () -> new TextPanel(2, 2, null, 1)).getMessage());
-        assertEquals("a text panel's font must be at least 1 pixel, got 0.0", assertThrows(
+        assertEquals("a font for text must be 1 to 512 pixels, got 0.0 (SansSerif)", assertThrows(
                 IllegalArgumentException.class, () -> new TextPanel(2, 2, new Font(Font.SANS_SERIF, Font.PLAIN, 0), 1))
                 .getMessage());
         TextPanel p = new TextPanel(2, 2, Label.DEFAULT_FONT, 1);
@@ -104,5 +104,27 @@ class ApiPreconditionsTest {
                 () -> new Scene().setScreenText(java.util.Collections.singletonList(null))).getMessage());
         assertEquals("labels is null: use List.of()",
                 assertThrows(NullPointerException.class, () -> SceneObject.labels(null)).getMessage());
+    }
+
+    @Test
+    void textFontsAreOneTo512PixelsAndAGlyphWiderThanTheAtlasIsCutNotAFailedFrame() {
+        Font huge = new Font(Font.SANS_SERIF, Font.PLAIN, 3000);
+        assertEquals("a font for text must be 1 to 512 pixels, got 3000.0 (SansSerif)", assertThrows(
+                IllegalArgumentException.class, () -> Label.of("x", Vec3.ZERO).withFont(huge)).getMessage());
+        assertThrows(IllegalArgumentException.class,
+                () -> ScreenText.of(ScreenText.Corner.TOP_LEFT, "x").withFont(huge));
+        assertThrows(IllegalArgumentException.class, () -> new TextPanel(2, 2, huge, 1));
+        // At 512 px the per-ten-thousand sign is wider than the 512-texel atlas: it was an exception in
+        // every frame that drew it (the label was accepted, the frame failed).
+        Font largest = new Font(Font.SANS_SERIF, Font.PLAIN, 512);
+        var glyph = dev.trisect.texture.internal.GlyphAtlas.of(largest).glyph(0x2031);
+        org.junit.jupiter.api.Assumptions.assumeTrue(glyph.advance() > dev.trisect.texture.internal.GlyphAtlas.WIDTH,
+                "this machine's sans-serif font has a narrow or no U+2031");
+        assertEquals(dev.trisect.texture.internal.GlyphAtlas.WIDTH, glyph.width(), "cut to the atlas");
+        Scene scene = new Scene();
+        scene.add(SceneObject.labels(java.util.List.of(Label.of("\u2031", Vec3.ZERO).withFont(largest).onTop())));
+        scene.setScreenText(java.util.List.of(ScreenText.of(ScreenText.Corner.TOP_LEFT, "\u2031").withFont(largest)));
+        var image = SceneRenderer.renderImage(scene, Camera.looking(new Vec3(0, 0, 5), Vec3.ZERO), 64, 48);
+        assertEquals(64, image.getWidth());
     }
 }

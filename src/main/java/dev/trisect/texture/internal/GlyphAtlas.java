@@ -70,6 +70,26 @@ public final class GlyphAtlas {
         this.leading = (int) Math.ceil(metrics.getLeading());
     }
 
+    /** Largest font size taken, pixels: a glyph is drawn whole into an image of about its size first. */
+    public static final int MAX_FONT_SIZE = WIDTH;
+
+    /**
+     * Checks a font for the atlas: its size from 1 to {@link #MAX_FONT_SIZE} pixels.
+     *
+     * @param font the font
+     * @return the font
+     * @throws NullPointerException     when {@code font} is null
+     * @throws IllegalArgumentException for a size out of range
+     */
+    public static Font checkFont(Font font) {
+        java.util.Objects.requireNonNull(font, "font is null");
+        if (!(font.getSize2D() >= 1 && font.getSize2D() <= MAX_FONT_SIZE)) {
+            throw new IllegalArgumentException("a font for text must be 1 to " + MAX_FONT_SIZE + " pixels, got "
+                    + font.getSize2D() + " (" + font.getName() + ")");
+        }
+        return font;
+    }
+
     /**
      * The atlas of {@code font}, shared by every caller asking for an equal font.
      *
@@ -172,7 +192,9 @@ public final class GlyphAtlas {
         if (c1 < 0) {
             return new Glyph(0, 0, 0, 0, 0, 0, advance, texels);
         }
-        int iw = c1 - c0 + 1;
+        // A glyph wider than the atlas (a wide ligature-like glyph of a large font) keeps its left WIDTH
+        // columns: the text is drawn, cut, rather than the frame failing.
+        int iw = Math.min(c1 - c0 + 1, WIDTH);
         int ih = r1 - r0 + 1;
         place(iw, ih);
         for (int r = 0; r < ih; r++) {
@@ -187,10 +209,6 @@ public final class GlyphAtlas {
 
     /** Makes room for a w x h glyph at (shelfX, shelfY): on this shelf, a new one, a taller texture. */
     private void place(int w, int h) {
-        if (w > WIDTH) {
-            throw new IllegalArgumentException(font + ": a glyph " + w + " pixels wide does not fit an atlas "
-                    + WIDTH + " texels wide; use a smaller font");
-        }
         if (shelfX + w > WIDTH) {
             shelfY += shelfHeight;
             shelfX = 0;
