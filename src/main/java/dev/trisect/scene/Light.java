@@ -11,7 +11,9 @@ import java.util.Objects;
  * fog"): the ambient lights sum to the scene's ambient colour; a directional light shines from a
  * direction; a point light shines from a position and fades with distance d by
  * {@code 1 / (kc + kl·d + kq·d²)}. A light is a node: a group's transform moves a point light and
- * turns a directional one, and hiding it turns it off. Any number may shine at once.
+ * turns a directional one, and hiding it turns it off. Any number may shine at once. One that its
+ * groups' transforms place beyond double range (a point light at 1e200 in a group scaled 1e200, a
+ * direction in groups whose scales multiply below 1e-308) does not shine.
  *
  * <pre>{@code
  * scene.add(Light.ambient(Colour.grey(0.2)),

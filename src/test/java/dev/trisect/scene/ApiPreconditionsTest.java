@@ -127,4 +127,30 @@ class ApiPreconditionsTest {
         var image = SceneRenderer.renderImage(scene, Camera.looking(new Vec3(0, 0, 5), Vec3.ZERO), 64, 48);
         assertEquals(64, image.getWidth());
     }
+
+    @Test
+    void aLightPlacedBeyondDoubleRangeDoesNotShineRatherThanFailingEveryFrame() {
+        Camera camera = Camera.looking(new Vec3(3, 2.4, 4), new Vec3(0, 0.4, 0));
+        java.util.function.Function<Light, int[]> frame = light -> {
+            Scene s = new Scene();
+            s.add(new SceneObject(dev.trisect.mesh.Primitives.box(1, 1, 1), dev.trisect.scene.Material.colour(0xC08040)
+                    .withShading(dev.trisect.render.Shading.SMOOTH)), Light.ambient(Colour.grey(0.3)));
+            if (light != null) {
+                double k = light.kind() == Light.Kind.POINT ? 1e200 : 1e-200;
+                Group outer = new Group();
+                Group inner = new Group();
+                outer.setTransform(dev.trisect.math.Transform.scale(k));
+                inner.setTransform(dev.trisect.math.Transform.scale(light.kind() == Light.Kind.POINT ? 1 : k));
+                inner.add(light);
+                outer.add(inner);
+                s.add(outer);
+            }
+            var image = SceneRenderer.renderImage(s, camera, 48, 32);
+            return image.getRGB(0, 0, 48, 32, null, 0, 48);
+        };
+        int[] without = frame.apply(null);
+        // The direction through two scales of 1e-200 underflows to zero; the position 1e200 x 1e200 overflows.
+        assertTrue(java.util.Arrays.equals(without, frame.apply(Light.directional(new Vec3(0, 1, 0), Colour.WHITE))));
+        assertTrue(java.util.Arrays.equals(without, frame.apply(Light.point(new Vec3(1e200, 0, 0), Colour.WHITE))));
+    }
 }

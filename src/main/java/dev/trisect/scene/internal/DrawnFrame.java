@@ -119,8 +119,19 @@ public final class DrawnFrame {
             Vec3 v = l.vector();
             switch (l.kind()) {
                 case AMBIENT -> b.ambient(c.r(), c.g(), c.b());
-                case DIRECTIONAL -> b.directional(v.x(), v.y(), v.z(), none, rgb);
-                case POINT -> b.point(v.x(), v.y(), v.z(), none, rgb, l.kc(), l.kl(), l.kq());
+                // Transforms valid alone can place a light beyond double range (a point light at 1e200
+                // under a group scaled 1e200; a direction under groups scaled 1e-200 twice, which
+                // underflows to zero): such a light does not shine, rather than failing every frame.
+                case DIRECTIONAL -> {
+                    if (v.isFinite() && v.length() > 0) {
+                        b.directional(v.x(), v.y(), v.z(), none, rgb);
+                    }
+                }
+                case POINT -> {
+                    if (v.isFinite()) {
+                        b.point(v.x(), v.y(), v.z(), none, rgb, l.kc(), l.kl(), l.kq());
+                    }
+                }
             }
         }
         return b.build();
