@@ -34,6 +34,18 @@ public final class SceneLighting {
         });
     }
 
+    /**
+     * The word the demo and the developer tools show for {@code shading}: "off" (the lighting is off),
+     * "flat" or "smooth" — one word per idea wherever the user reads it.
+     */
+    public static String word(Shading shading) {
+        return switch (shading) {
+            case NONE -> "off";
+            case FLAT -> "flat";
+            case SMOOTH -> "smooth";
+        };
+    }
+
     /** The shading of the scene's first material, or {@link Shading#NONE} without one. */
     public static Shading shading(Scene scene) {
         for (SceneObject o : objects(scene)) {

@@ -10,6 +10,7 @@ import dev.trisect.view.internal.FrameSlot;
 import dev.trisect.view.internal.ViewController;
 import dev.trisect.view.internal.ViewSettings;
 import dev.trisect.view.internal.ViewState;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import javax.swing.JCheckBox;
@@ -27,9 +28,22 @@ final class LightSection implements ToolSection {
     /** The fog choices, in the combo's order. */
     static final String[] FOGS = {"off", "linear", "exp", "exp2"};
 
+    /** The shadings, in the combo's order: {@link Shading#values()}, in the demo's words. */
+    static final String[] SHADINGS = Arrays.stream(Shading.values()).map(SceneLighting::word)
+            .toArray(String[]::new);
+    /**
+     * Said under the lights when a lit shading has nothing to light it (every lit surface draws black:
+     * the ambient colour is the sum of the shining lights, docs/conventions.md "Light").
+     */
+    static final String UNLIT = "No light shines, so flat and smooth shading draw every lit surface black: "
+            + "tick Lights on (in the demo, press L for its lights).";
+    /** As {@link #UNLIT}, for a scene without a light, hidden or not. */
+    static final String NO_LIGHT = "The scene has no light, so flat and smooth shading draw every lit surface "
+            + "black (in the demo, press L for its lights).";
+
     private final ToolsForm form = new ToolsForm("Light and fog");
     private final ViewController owner;
-    private final JComboBox<Shading> shading = new JComboBox<>(Shading.values());
+    private final JComboBox<String> shading = new JComboBox<>(SHADINGS);
     private final JCheckBox lightsOn = new JCheckBox("Lights on");
     private final JComboBox<String> fog = new JComboBox<>(FOGS);
     /** The fog's values in force: start and end depths, density. */
@@ -41,11 +55,13 @@ final class LightSection implements ToolSection {
 
     LightSection(ViewController owner) {
         this.owner = owner;
-        shading.setToolTipText("How every material is lit: none (the texture as it is), flat (one colour per "
+        shading.setToolTipText("How every material is lit: off (the texture as it is), flat (one colour per "
                 + "triangle, its last corner's, as GL_FLAT) or smooth (corner colours interpolated)");
         shading.addActionListener(e -> {
             if (!syncing) {
-                SceneLighting.setShading(scene(), (Shading) shading.getSelectedItem());
+                Scene s = scene();
+                SceneLighting.setShading(s, Shading.values()[shading.getSelectedIndex()]);
+                warn(s);
             }
         });
         form.row(ToolsForm.label("Shading", shading.getToolTipText()), shading);
@@ -56,6 +72,7 @@ final class LightSection implements ToolSection {
             boolean on = lightsOn.isSelected();
             Scene s = scene();
             s.update(() -> lights(s).forEach(l -> l.setVisible(on)));
+            warn(s);
         });
         form.row(lightsOn);
         fog.setToolTipText("OpenGL's fog by eye-space depth towards the background's colour: linear from Start "
@@ -87,6 +104,21 @@ final class LightSection implements ToolSection {
             fields[index].show(values[index]);
         }, owner::message).decimals(decimals);
         fields[index].show(values[index]);
+    }
+
+    /** The shading combo's choice, for tests. */
+    String readoutShading() {
+        return (String) shading.getSelectedItem();
+    }
+
+    /** The shading combo, for tests. */
+    JComboBox<String> shadingCombo() {
+        return shading;
+    }
+
+    /** The Lights on box, for tests. */
+    JCheckBox lightsOnBox() {
+        return lightsOn;
     }
 
     /** The fog combo's choice, for tests. */
@@ -141,7 +173,7 @@ final class LightSection implements ToolSection {
         Scene s = scene();
         syncing = true;
         try {
-            shading.setSelectedItem(SceneLighting.shading(s));
+            shading.setSelectedIndex(SceneLighting.shading(s).ordinal());
             List<Light> all = lights(s);
             lightsOn.setEnabled(!all.isEmpty());
             lightsOn.setSelected(all.stream().anyMatch(Light::isVisible));
@@ -150,7 +182,27 @@ final class LightSection implements ToolSection {
         } finally {
             syncing = false;
         }
-        form.set("Lights", describe(s));
+        String warning = warning(s);
+        form.set("Lights", warning.isEmpty() ? describe(s) : describe(s) + ". " + warning);
+    }
+
+    /** Says {@link #warning} in the status line, where the user looks after a change, if there is one. */
+    private void warn(Scene s) {
+        String warning = warning(s);
+        if (!warning.isEmpty()) {
+            owner.message(warning);
+        }
+    }
+
+    /**
+     * Why {@code scene} draws black, or "": its materials are lit (flat or smooth) while no light shines
+     * ({@link #UNLIT}, or {@link #NO_LIGHT} without any light to show).
+     */
+    static String warning(Scene scene) {
+        if (SceneLighting.shading(scene) == Shading.NONE || !scene.capture().lights().isEmpty()) {
+            return "";
+        }
+        return lights(scene).isEmpty() ? NO_LIGHT : UNLIT;
     }
 
     /**

@@ -1,5 +1,6 @@
 package dev.trisect.ui;
 
+import dev.trisect.content.SceneLighting;
 import java.awt.event.ActionEvent;
 import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
@@ -54,8 +55,7 @@ final class DemoCommands {
                         KeyEvent.VK_M, 0), w::measureUncapped), true),
                 new Entry(Menu.SCENE, command("Lighting: off, flat, smooth", "Light the scene (a lamp from the "
                         + "camera, a warm light circling, a dim ambient) flat, then smooth, then not", KeyStroke.getKeyStroke(
-                        KeyEvent.VK_L, 0), () -> w.status("Lighting: " + w.lighting.cycle().name().toLowerCase(
-                        java.util.Locale.ROOT))), false),
+                        KeyEvent.VK_L, 0), () -> w.status("Lighting: " + SceneLighting.word(w.lighting.cycle()))), false),
                 new Entry(Menu.SCENE, toggle("Fog", "OpenGL's linear fog towards the sky's colour", KeyStroke.getKeyStroke(
                         KeyEvent.VK_G, 0), w.lighting::setFog), true),
                 new Entry(Menu.SCENE, toggle("Labels, axes and glass pane", "Labels on the scene's things, an axes "

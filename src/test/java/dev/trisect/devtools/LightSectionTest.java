@@ -1,13 +1,21 @@
 package dev.trisect.devtools;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.content.DemoScenes;
+import dev.trisect.content.SceneLighting;
+import dev.trisect.math.Vec3;
 import dev.trisect.render.Colour;
 import dev.trisect.render.Fog;
+import dev.trisect.render.Shading;
+import dev.trisect.scene.Light;
 import dev.trisect.scene.Scene;
 import dev.trisect.view.internal.ViewController;
 import dev.trisect.view.internal.ViewState;
+import java.util.ArrayList;
+import java.util.List;
 import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.Test;
 
@@ -67,6 +75,59 @@ class LightSectionTest {
             start.commit();
             assertEquals(20, scene.fog().orElseThrow().start());
             assertEquals("20.00", start.getText());
+        });
+    }
+
+    @Test
+    void theShadingSaysTheDemosWordsAndWarnsWhenNothingLightsIt() throws Exception {
+        SwingUtilities.invokeAndWait(() -> {
+            ViewController c = controller();
+            List<String> said = new ArrayList<>();
+            c.addMessageListener(said::add);
+            LightSection light = new DevToolsPanel(c).section(LightSection.class);
+            Scene scene = c.state().scene();
+            javax.swing.JComboBox<String> combo = light.shadingCombo();
+            List<String> items = new ArrayList<>();
+            for (int i = 0; i < combo.getItemCount(); i++) {
+                items.add(combo.getItemAt(i));
+            }
+            assertEquals(List.of("off", "flat", "smooth"), items, "the demo's menu and status say these");
+            light.refresh(null, null, null);
+            assertEquals("off", light.readoutShading());
+            assertFalse(light.readout("Lights").contains("black"), light.readout("Lights"));
+            assertTrue(LightSection.lights(scene).isEmpty(), "the boxes come without a light");
+
+            combo.setSelectedItem("flat");
+            assertEquals(Shading.FLAT, SceneLighting.shading(scene));
+            assertEquals(List.of(LightSection.NO_LIGHT), said, "said where the user looks: the status line");
+            light.refresh(null, null, null);
+            assertTrue(light.readout("Lights").endsWith(LightSection.NO_LIGHT), light.readout("Lights"));
+
+            // Lights there but hidden, as the demo's with its lighting off: tick Lights on, or L.
+            Light lamp = Light.directional(new Vec3(0, 0, 1), Colour.WHITE);
+            lamp.setVisible(false);
+            scene.add(lamp);
+            said.clear();
+            combo.setSelectedItem("smooth");
+            assertEquals(List.of(LightSection.UNLIT), said);
+            light.refresh(null, null, null);
+            assertEquals("smooth", light.readoutShading());
+            assertTrue(light.readout("Lights").endsWith(LightSection.UNLIT), light.readout("Lights"));
+
+            said.clear();
+            light.lightsOnBox().doClick();
+            assertTrue(lamp.isVisible());
+            light.refresh(null, null, null);
+            assertEquals(List.of(), said, "a shining light: nothing to say");
+            assertFalse(light.readout("Lights").contains("black"), light.readout("Lights"));
+            light.lightsOnBox().doClick();
+            assertEquals(List.of(LightSection.UNLIT), said, "hiding the last light says it too");
+
+            said.clear();
+            combo.setSelectedItem("off");
+            light.refresh(null, null, null);
+            assertEquals(List.of(), said, "unlit: the lights do not matter");
+            assertFalse(light.readout("Lights").contains("black"), light.readout("Lights"));
         });
     }
 }

@@ -40,6 +40,16 @@ class DemoLightingGuiTest {
             assertEquals(want, SceneLighting.shading(scene));
             assertEquals(want != Shading.NONE, SceneLighting.lights(scene).stream().allMatch(Light::isVisible));
         }
+        // The L key's status says the menu's words: off, flat, smooth (not the enum's NONE).
+        javax.swing.Action key = onEdt(() -> window.commands.stream().map(DemoCommands.Entry::action)
+                .filter(a -> String.valueOf(a.getValue(javax.swing.Action.NAME)).startsWith("Lighting: off, flat"))
+                .findFirst().orElseThrow());
+        for (String want : new String[] {"flat", "smooth", "off"}) {
+            assertEquals("Lighting: " + want, onEdt(() -> {
+                key.actionPerformed(null);
+                return window.statusText();
+            }));
+        }
         onEdt(() -> {
             window.lighting.setFog(true);
             return null;
