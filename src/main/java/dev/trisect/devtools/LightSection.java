@@ -79,10 +79,10 @@ final class LightSection implements ToolSection {
                 + "to End, exp or exp2 by Density");
         fog.addActionListener(e -> applyFog());
         form.row(ToolsForm.label("Fog", fog.getToolTipText()), fog);
-        field("Fog start", 1e6, 0, 2);
-        field("Fog end", 1e6, 1, 2);
+        field("Fog start", 0, 2);
+        field("Fog end", 1, 2);
         // Four decimals: densities of large scenes are thousandths (0.002 read "0.00" with two).
-        field("Fog density", 100, 2, 4);
+        field("Fog density", 2, 4);
         form.row(ToolsForm.label("Fog start", "Linear fog: the depth where it begins, world units"), fields[0]);
         form.row(ToolsForm.label("Fog end", "Linear fog: the depth where only the fog shows, world units"), fields[1]);
         form.row(ToolsForm.label("Fog density", "Exp and exp2 fog: the density, per world unit"), fields[2]);
@@ -91,14 +91,20 @@ final class LightSection implements ToolSection {
     }
 
     /**
-     * The field of {@code values[index]}: a number typed applies the fog again; one the fog refuses (a
-     * linear start at or beyond its end) is not kept, so the field goes on showing the fog in force.
+     * The field of {@code values[index]}: it takes any number the fog takes (Fog.linear: a start below 0
+     * too) and applies the fog again. One the fog refuses (a linear start at or beyond its end, a density
+     * below 0, a number beyond the double range) is not kept, whichever fog is on, and the fog's own
+     * message says why: the field goes on showing the value in force.
      */
-    private void field(String name, double max, int index, int decimals) {
-        fields[index] = new NumberField(name, "", 0, max, v -> {
+    private void field(String name, int index, int decimals) {
+        fields[index] = new NumberField(name, "", Double.NEGATIVE_INFINITY, Double.POSITIVE_INFINITY, v -> {
             double before = values[index];
             values[index] = v;
-            if (!applyFog()) {
+            try {
+                fog(index < 2 ? "linear" : "exp");
+                applyFog();
+            } catch (IllegalArgumentException e) {
+                owner.message("Fog: " + e.getMessage());
                 values[index] = before;
             }
             fields[index].show(values[index]);
@@ -140,27 +146,26 @@ final class LightSection implements ToolSection {
         return SceneLighting.lights(scene);
     }
 
-    /** Sets the scene's fog from the controls; false (and a message) when the fog refuses them. */
-    private boolean applyFog() {
-        if (syncing) {
-            return true;
+    /** Sets the scene's fog from the controls (whose values the fog takes: the fields keep no other). */
+    private void applyFog() {
+        if (!syncing) {
+            scene().setFog(fog((String) fog.getSelectedItem()));
         }
+    }
+
+    /**
+     * The fog of {@code kind} ({@link #FOGS}) with the values in force, or null for "off".
+     *
+     * @throws IllegalArgumentException with the fog's message when it refuses them
+     */
+    private Fog fog(String kind) {
         Colour c = Colour.of(background);
-        String kind = (String) fog.getSelectedItem();
-        Fog f;
-        try {
-            f = switch (kind) {
-                case "linear" -> Fog.linear(values[0], values[1], c);
-                case "exp" -> Fog.exp(values[2], c);
-                case "exp2" -> Fog.exp2(values[2], c);
-                default -> null;
-            };
-        } catch (IllegalArgumentException e) {
-            owner.message("Fog: " + e.getMessage());
-            return false;
-        }
-        scene().setFog(f);
-        return true;
+        return switch (kind) {
+            case "linear" -> Fog.linear(values[0], values[1], c);
+            case "exp" -> Fog.exp(values[2], c);
+            case "exp2" -> Fog.exp2(values[2], c);
+            default -> null;
+        };
     }
 
     @Override

@@ -37,8 +37,9 @@ final class NumberField extends JTextField {
     /**
      * @param name    the field's name in messages ("Max error")
      * @param unit    its unit, shown after the number and accepted after a typed one ("px", "%", "ms"; may be empty)
-     * @param min     smallest value accepted
-     * @param max     largest value accepted
+     * @param min     smallest value accepted; negative infinity for none (the value's user then refuses
+     *                what it must, infinities among it)
+     * @param max     largest value accepted; positive infinity for none
      * @param apply   given each accepted value
      * @param problem given the one-line message about text that is not accepted, and the one about the
      *                next accepted value after it
@@ -114,7 +115,10 @@ final class NumberField extends JTextField {
     }
 
     String text(double value) {
-        return Double.isNaN(value) ? "" : String.format(Locale.ROOT, format, value) + (unit.isEmpty() ? "" : " " + unit);
+        // Beyond a billion, fixed decimals would fill the field with digits (a fog's end may be 1e300).
+        String number = Math.abs(value) >= 1e9 ? String.format(Locale.ROOT, "%.6g", value)
+                : String.format(Locale.ROOT, format, value);
+        return Double.isNaN(value) ? "" : number + (unit.isEmpty() ? "" : " " + unit);
     }
 
     /** Applies the typed text if it is a number in range (and differs from the value shown), else says why. */
@@ -125,8 +129,8 @@ final class NumberField extends JTextField {
         }
         Double v = parse(typed, unit);
         if (v == null || !(v >= min && v <= max)) {
-            problem.accept(ErrorLine.of(String.format(Locale.ROOT, "%s: \"%s\" is not a number from %s to %s%s; kept %s",
-                    name, typed, plain(min), plain(max), unit.isEmpty() ? "" : " " + unit, text(shown))));
+            problem.accept(ErrorLine.of(String.format(Locale.ROOT, "%s: \"%s\" is not a number%s; kept %s",
+                    name, typed, range(), text(shown))));
             show(shown);
             refused = true;
             return;
@@ -148,6 +152,18 @@ final class NumberField extends JTextField {
             return null;
         }
         return Double.parseDouble(t);
+    }
+
+    /** The range in a refusal: " from 2 to 128 px", " of at least 0", or nothing for any number. */
+    private String range() {
+        String u = unit.isEmpty() ? "" : " " + unit;
+        if (min == Double.NEGATIVE_INFINITY && max == Double.POSITIVE_INFINITY) {
+            return "";
+        }
+        if (max == Double.POSITIVE_INFINITY) {
+            return " of at least " + plain(min) + u;
+        }
+        return " from " + plain(min) + " to " + plain(max) + u;
     }
 
     private static String plain(double v) {

@@ -130,4 +130,56 @@ class LightSectionTest {
             assertFalse(light.readout("Lights").contains("black"), light.readout("Lights"));
         });
     }
+
+    @Test
+    void theFogFieldsTakeWhatTheFogTakesAndRefuseWhatItRefusesWithItsMessage() throws Exception {
+        SwingUtilities.invokeAndWait(() -> {
+            ViewController c = controller();
+            List<String> said = new ArrayList<>();
+            c.addMessageListener(said::add);
+            LightSection light = new DevToolsPanel(c).section(LightSection.class);
+            Scene scene = c.state().scene();
+            scene.setFog(Fog.linear(10, 80, Colour.BLACK));
+            light.refresh(null, null, null);
+            NumberField[] f = light.fogFields();
+            // Fog.linear takes a start behind the eye: the fog is already part-way at depth 0.
+            f[0].setText("-5");
+            f[0].commit();
+            assertEquals(-5, scene.fog().orElseThrow().start());
+            assertEquals(80, scene.fog().orElseThrow().end());
+            assertEquals("-5.00", f[0].getText());
+            f[1].setText("2e6");
+            f[1].commit();
+            assertEquals(2e6, scene.fog().orElseThrow().end(), "an end beyond a million too");
+            assertEquals(List.of(), said);
+
+            f[0].setText("1e400");
+            f[0].commit();
+            assertEquals(List.of("Fog: fog values must be finite"), said, "the fog's own message");
+            assertEquals(-5, scene.fog().orElseThrow().start());
+            assertEquals("-5.00", f[0].getText());
+            said.clear();
+            f[0].setText("-1.7e308");
+            f[1].setText("1.7e308");
+            f[1].commit();
+            f[0].commit();
+            assertEquals(1, said.size(), said.toString());
+            assertTrue(said.get(0).startsWith("Fog: linear fog's end - start must be finite"), said.get(0));
+            assertEquals(-5, scene.fog().orElseThrow().start());
+            assertEquals(1.7e308, scene.fog().orElseThrow().end());
+            assertEquals("1.70000e+308", f[1].getText(), "a huge end in few digits");
+
+            // A density below 0 is refused while the fog is linear too, not kept for later.
+            said.clear();
+            f[2].setText("-0.5");
+            f[2].commit();
+            assertEquals(List.of("Fog: fog density must be >= 0, not -0.5"), said);
+            assertEquals("0.0500", f[2].getText());
+            said.clear();
+            f[2].setText("x");
+            f[2].commit();
+            assertEquals(1, said.size());
+            assertTrue(said.get(0).endsWith("Fog density: \"x\" is not a number; kept 0.0500"), said.get(0));
+        });
+    }
 }
