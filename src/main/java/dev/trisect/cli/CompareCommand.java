@@ -31,7 +31,8 @@ import picocli.CommandLine.Spec;
                 + "triangle, the share of those pixels whose texel differs, colour RMSE and PSNR, and the exact "
                 + "displacement (pixels) of the --mode image over those pixels: each pixel's texel coordinates "
                 + "mapped back to the 3D point that carries them, projected, and measured from the pixel centre "
-                + "(max_displacement, p99_displacement, mean_displacement)."})
+                + "(max_displacement, p99_displacement, mean_displacement). With a light or fog option the line "
+                + "also records the light and fog in force (light, point, ambient, shade, fog)."})
 final class CompareCommand extends SceneCommand {
     @Spec
     CommandSpec spec;
@@ -124,6 +125,8 @@ final class CompareCommand extends SceneCommand {
                 .put("against", against.id())
                 // The demo opens with trilinear, the command line defaults to nearest: say which was used.
                 .put("filter", settings.filter().id())
+                // The light and fog options given (none: nothing), so that a line says what it measured.
+                .putAll(light.json())
                 .putAll(c.json())
                 .toString();
         Results.deliver(common.out(), batch, b -> {

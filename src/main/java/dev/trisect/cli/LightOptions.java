@@ -1,6 +1,7 @@
 package dev.trisect.cli;
 
 import dev.trisect.base.InputException;
+import dev.trisect.base.internal.JsonObject;
 import dev.trisect.content.SceneAsset;
 import dev.trisect.light.Lights;
 import dev.trisect.light.Surface;
@@ -15,6 +16,7 @@ import dev.trisect.scene.internal.BlendOrder;
 import dev.trisect.texture.Texture;
 import java.util.Arrays;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
@@ -196,6 +198,51 @@ final class LightOptions {
         }
         Colour c = fogColour != null ? fogColour : Colour.BLACK;
         return Optional.of(new Fog(fog.mode(), fog.start(), fog.end(), fog.density(), c));
+    }
+
+    /**
+     * The light and fog a frame was drawn with, for compare's JSON line: nothing without a light or fog
+     * option; with a light, its values in force (defaults included: the shading, the ambient colour,
+     * each light's colour and the point light's attenuation); the fog with its colour. Each light is a
+     * field as given (a direction is not normalised).
+     */
+    JsonObject json() {
+        check();
+        JsonObject j = new JsonObject();
+        if (light != null) {
+            j.put("light", new JsonObject().put("direction", list(light.x(), light.y(), light.z()))
+                    .put("colour", list(lightColour != null ? lightColour : Colour.WHITE)));
+        }
+        if (point != null) {
+            Vec3 k = attenuation != null ? attenuation : new Vec3(1, 0, 0);
+            j.put("point", new JsonObject().put("position", list(point.x(), point.y(), point.z()))
+                    .put("colour", list(pointColour != null ? pointColour : Colour.WHITE))
+                    .put("attenuation", list(k.x(), k.y(), k.z())));
+        }
+        if (anyLight()) {
+            j.put("ambient", list(ambient != null ? ambient : Colour.grey(DEFAULT_AMBIENT)));
+        }
+        if (anyLight() || shade != null) {
+            j.put("shade", shading().name().toLowerCase(Locale.ROOT));
+        }
+        fog().ifPresent(f -> {
+            JsonObject o = new JsonObject().put("mode", f.mode().name().toLowerCase(Locale.ROOT));
+            if (f.mode() == Fog.Mode.LINEAR) {
+                o.put("start", f.start()).put("end", f.end());
+            } else {
+                o.put("density", f.density());
+            }
+            j.put("fog", o.put("colour", list(f.colour())));
+        });
+        return j;
+    }
+
+    private static List<Double> list(Colour c) {
+        return list(c.r(), c.g(), c.b());
+    }
+
+    private static List<Double> list(double x, double y, double z) {
+        return List.of(x, y, z);
     }
 
     /**

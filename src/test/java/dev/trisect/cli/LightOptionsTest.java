@@ -1,10 +1,14 @@
 package dev.trisect.cli;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import com.fasterxml.jackson.jr.ob.JSON;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -133,5 +137,36 @@ class LightOptionsTest {
         assertEquals(0, export.status(), export.err());
         assertTrue(export.out().contains("GLREF_LIGHT=1.0,0.0,0.0 "), "glref, in floats, gets the unit vector: "
                 + export.out());
+    }
+
+    @Test
+    void compareRecordsTheLightAndFogItDrewWith() throws Exception {
+        String[] base = {"compare", "--scene", "floor", "--size", "32x18", "--mode", "tessellated"};
+        CliRun plain = CliRun.of(base);
+        assertEquals(0, plain.status(), plain.err());
+        Map<String, Object> none = JSON.std.mapFrom(plain.out().strip());
+        for (String key : new String[] {"light", "point", "ambient", "shade", "fog"}) {
+            assertFalse(none.containsKey(key), key + " without any light or fog option: " + plain.out());
+        }
+        CliRun lit = CliRun.of(with(base, "--light", "1,2,3", "--point", "0,2,0", "--attenuation", "1,0.2,0.05",
+                "--shade", "flat", "--fog", "linear,-2,9", "--fog-colour", "0.5"));
+        assertEquals(0, lit.status(), lit.err());
+        Map<String, Object> j = JSON.std.mapFrom(lit.out().strip());
+        assertEquals(Map.of("direction", List.of(1.0, 2.0, 3.0), "colour", List.of(1.0, 1.0, 1.0)), j.get("light"),
+                lit.out());
+        assertEquals(Map.of("position", List.of(0.0, 2.0, 0.0), "colour", List.of(1.0, 1.0, 1.0), "attenuation",
+                List.of(1.0, 0.2, 0.05)), j.get("point"));
+        assertEquals(List.of(0.2, 0.2, 0.2), j.get("ambient"), "the ambient in force: OpenGL's default");
+        assertEquals("flat", j.get("shade"));
+        assertEquals(Map.of("mode", "linear", "start", -2.0, "end", 9.0, "colour", List.of(0.5, 0.5, 0.5)),
+                j.get("fog"));
+        assertTrue(j.containsKey("max_displacement"), "the metrics still follow");
+        Map<String, Object> fogOnly = JSON.std.mapFrom(CliRun.of(with(base, "--fog", "exp2,0.25")).out().strip());
+        assertEquals(Map.of("mode", "exp2", "density", 0.25, "colour", List.of(0.0, 0.0, 0.0)), fogOnly.get("fog"));
+        assertFalse(fogOnly.containsKey("shade"), "fog alone lights nothing");
+        Map<String, Object> ambientOnly = JSON.std.mapFrom(CliRun.of(with(base, "--ambient", "0.5,0.4,0.3")).out()
+                .strip());
+        assertEquals(List.of(0.5, 0.4, 0.3), ambientOnly.get("ambient"));
+        assertEquals("smooth", ambientOnly.get("shade"), "the default with a light");
     }
 }
