@@ -44,7 +44,7 @@ public final class SceneLoader {
         List<Texture> textures = new ArrayList<>();
         List<Path> inputs = new ArrayList<>(List.of(obj.toAbsolutePath()));
         if (texture != null) {
-            ObjModel model = ObjReader.read(obj, false);
+            ObjModel model = ObjReader.read(obj, false, notes);
             mesh = model.mesh();
             lines = model.lines();
             Texture t = TextureReader.read(texture);
@@ -53,7 +53,7 @@ public final class SceneLoader {
             }
             inputs.add(texture.toAbsolutePath());
         } else {
-            ObjModel model = ObjReader.read(obj, true);
+            ObjModel model = ObjReader.read(obj, true, notes);
             SceneObject object = SceneObject.load(model, String.valueOf(obj.getFileName()), notes, placeholders);
             mesh = object.mesh();
             lines = model.lines();

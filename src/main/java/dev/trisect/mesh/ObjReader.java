@@ -5,6 +5,8 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Objects;
+import java.util.function.Consumer;
 
 /**
  * Reads Wavefront OBJ files (and their MTL material libraries) into an {@link ObjModel}.
@@ -26,7 +28,11 @@ import java.util.List;
  * normal, {@link Mesh#cornerNormal}). Triangles before any {@code usemtl} get the material {@code default}.
  *
  * <p>Every problem with the input is an {@link InputException} whose message is one line,
- * {@code file:line: what is wrong}.
+ * {@code file:line: what is wrong}. What is read but may not be what the file meant gets a note
+ * instead ({@link #read(Path, boolean, Consumer)}), once per file: {@code vn} normals without a
+ * direction (NaN, infinite — beyond float's range, such as {@code 1e39} — or zero length), which a
+ * lit material's corners take as lit by the ambient light alone ({@link Mesh#cornerNormal} gives
+ * (0, 0, 0)).
  */
 public final class ObjReader {
     // The statements are read here; what they build and check is owned by the package-private
@@ -37,6 +43,9 @@ public final class ObjReader {
     private final ObjMeshArrays mesh;
     private final ObjFaces faces;
     private final MtlLibraries libraries;
+    /** The {@code vn} without a direction: how many, and the line of the first. */
+    private int directionless;
+    private int firstDirectionless;
 
     private ObjReader(Path obj, boolean readMaterials, LineScanner lines) {
         this.readMaterials = readMaterials;
@@ -57,6 +66,23 @@ public final class ObjReader {
      * @throws InputException when a file cannot be read or is malformed
      */
     public static ObjModel read(Path obj, boolean readMaterials) {
+        return read(obj, readMaterials, note -> { });
+    }
+
+    /**
+     * Reads an OBJ file, as {@link #read(Path, boolean)}, telling {@code notes} what it read but the
+     * file may not have meant (see the class comment): one line each, {@code file:line: what}, at most
+     * one per kind and file.
+     *
+     * @param obj           the OBJ file; messages name it as given
+     * @param readMaterials whether to read the {@code mtllib} files (see {@link #read(Path, boolean)})
+     * @param notes         receives the notes, after the whole file is read (none when it is refused)
+     * @return the mesh, in the file's object space and units, and one texture path (or null) per material
+     * @throws InputException when a file cannot be read or is malformed
+     * @throws NullPointerException when {@code notes} is null
+     */
+    public static ObjModel read(Path obj, boolean readMaterials, Consumer<String> notes) {
+        Objects.requireNonNull(notes, "notes is null");
         String label = obj.toString();
         LineScanner lines;
         try {
@@ -65,7 +91,10 @@ public final class ObjReader {
             throw new InputException(label + ": cannot read: " + LineScanner.reason(e), e);
         }
         try (lines) {
-            return new ObjReader(obj, readMaterials, lines).parse();
+            ObjReader reader = new ObjReader(obj, readMaterials, lines);
+            ObjModel model = reader.parse();
+            reader.notes(notes);
+            return model;
         }
     }
 
@@ -119,6 +148,15 @@ public final class ObjReader {
                 mesh.toLines(built.positions(), libraries::diffuse), colours, ambients);
     }
 
+    private void notes(Consumer<String> notes) {
+        if (directionless > 0) {
+            notes.accept(lines.label() + ":" + firstDirectionless + ": normal (vn) without a direction (NaN, "
+                    + "infinite or zero length)" + (directionless > 1 ? ", as are " + (directionless - 1) + " more"
+                    : "") + ": lit corners that use " + (directionless > 1 ? "them" : "it")
+                    + " take the ambient light alone");
+        }
+    }
+
     /** A {@code v} ({@link ObjMeshArrays#V}) or {@code vn} ({@link ObjMeshArrays#VN}): x y z, then any numbers. */
     private void triple(int kind, String what) {
         int n = lines.count() - 1;
@@ -130,6 +168,12 @@ public final class ObjReader {
         float y = number(2, what);
         float z = number(3, what);
         checkNumbers(4, what);
+        // As Mesh.cornerNormal sees it: a float square sum stays finite and non-zero in double.
+        double squares = (double) x * x + (double) y * y + (double) z * z;
+        if (kind == ObjMeshArrays.VN && !(squares > 0 && squares < Double.POSITIVE_INFINITY)
+                && directionless++ == 0) {
+            firstDirectionless = lines.lineNumber();
+        }
         mesh.addTriple(kind, x, y, z);
     }
 

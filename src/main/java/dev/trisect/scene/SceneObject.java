@@ -378,13 +378,13 @@ public final class SceneObject extends Node {
     public static SceneObject load(Path obj, Consumer<String> notes, boolean placeholders) {
         Objects.requireNonNull(obj, "OBJ path is null");
         Objects.requireNonNull(notes, NOTES_NULL);
-        return load(ObjReader.read(obj, true), String.valueOf(obj.getFileName()), notes, placeholders);
+        return load(ObjReader.read(obj, true, notes), String.valueOf(obj.getFileName()), notes, placeholders);
     }
 
     /**
      * As {@link #load(Path, Consumer, boolean)}, from a model already read (with its materials, {@link
-     * ObjReader#read ObjReader.read(obj, true)}), for a caller that also needs what the file named, such
-     * as its texture files.
+     * ObjReader#read(Path, boolean, Consumer) ObjReader.read(obj, true, notes)}), for a caller that also
+     * needs what the file named, such as its texture files.
      *
      * @param model        the OBJ file as read, with each material's {@code map_Kd} file
      * @param name         the object's name, and the file named in notes (the OBJ file's name)

@@ -219,6 +219,16 @@ class CommandsTest {
     }
 
     @Test
+    void aNormalWithoutADirectionGetsANoteNamingItsLine() throws IOException {
+        Path obj = dir.resolve("n.obj");
+        Files.writeString(obj, "v -1 -1 0\nv 1 -1 0\nv 0 1 0\nvn 0 0 nan\nf 1//1 2//1 3//1\n");
+        CliRun r = CliRun.of("render", "--obj", obj.toString(), "--size", "16x16", "--light", "0,0,1", "--out",
+                dir.resolve("n.png").toString());
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.err().contains("trisect: note: " + obj + ":4: normal (vn) without a direction"), r.err());
+    }
+
+    @Test
     void listScenesAndHelpMentionEveryOptionWithItsDefault() {
         CliRun list = CliRun.of("render", "--list-scenes");
         assertTrue(list.out().contains("floor") && list.out().contains("demo"), list.out());

@@ -19,6 +19,32 @@ class ObjReaderTest extends ObjFixture {
     // ---- geometry ----
 
     @Test
+    void normalsWithoutADirectionGetOneNoteNamingTheFileAndTheFirstLine() throws IOException {
+        Path obj = write("n.obj", TRIANGLE_VERTICES + "vn 0 0 1\nvn nan 0 1\nvn 0 0 0\nvn 1e39 0 0\nvn 1e-50 0 0\n"
+                + "vn 1e-40 0 0\nf 1//1 2//2 3//3\nf 1//4 2//5 3//6\n");
+        List<String> notes = new java.util.ArrayList<>();
+        ObjModel model = ObjReader.read(obj, false, notes::add);
+        assertEquals(List.of(obj + ":5: normal (vn) without a direction (NaN, infinite or zero length), as are 3 "
+                + "more: lit corners that use them take the ambient light alone"), notes,
+                "NaN, zero, overflowing to infinity, underflowing to zero; 1e-40 (subnormal) has a direction");
+        assertArrayEquals(new float[] {0, 0, 1, Float.NaN, 0, 1, 0, 0, 0, Float.POSITIVE_INFINITY, 0, 0, 0, 0, 0,
+            1e-40f, 0, 0}, model.mesh().normals(), "kept as written");
+        double[] n = new double[3];
+        model.mesh().cornerNormal(5, n, 0);
+        assertArrayEquals(new double[] {1, 0, 0}, n, "the subnormal one is a direction, as the note says");
+        model.mesh().cornerNormal(1, n, 0);
+        assertArrayEquals(new double[] {0, 0, 0}, n, "the NaN one is none");
+
+        notes.clear();
+        ObjReader.read(write("one.obj", TRIANGLE_VERTICES + "vn 0 0 0\nf 1//1 2//1 3//1\n"), false, notes::add);
+        assertEquals(List.of(dir.resolve("one.obj") + ":4: normal (vn) without a direction (NaN, infinite or zero "
+                + "length): lit corners that use it take the ambient light alone"), notes);
+        notes.clear();
+        ObjReader.read(write("fine.obj", TRIANGLE_VERTICES + "vn 0 0 2\nf 1//1 2//1 3//1\n"), false, notes::add);
+        assertEquals(List.of(), notes, "a normal of any length with a direction is fine");
+    }
+
+    @Test
     void readsPositionsAndTextureCoordinates() throws IOException {
         Mesh mesh = read("v 1 2 3\nv -4.5 5e1 0.25 1.0\nv 7 8 9 0.5 0.5 0.5\n"
                 + "vt 0.25 0.75\nvt 0.5\nvt 1 2 3\nf 1/1 2/2 3/3\n").mesh();
