@@ -160,15 +160,17 @@ final class MtlLibraries {
         int rgb = 0;
         for (int i = 1; i <= 3; i++) {
             String text = mtlLines.text(n == 1 ? 1 : i);
-            float k;
-            try {
-                k = Float.parseFloat(text);
-            } catch (NumberFormatException e) {
+            // The OBJ's spellings (nan, inf...), so that a special value is named for what it is.
+            Float k = ObjReader.parseNumber(text);
+            if (k == null) {
                 throw mtlLines.error(what + ": malformed number " + LineScanner.quote(text)
                         + " (only the r g b form is supported)");
             }
             if (!Float.isFinite(k)) {
-                throw mtlLines.error(what + " needs finite numbers");
+                // Digits that came out infinite overflowed float (1e39): say so, or the message reads as false.
+                boolean overflow = !Float.isNaN(k) && text.matches("[-+]?[0-9.].*");
+                throw mtlLines.error(what + ": " + LineScanner.quote(text) + " is not a finite number"
+                        + (overflow ? " (beyond float's 3.4e38)" : "") + ": a colour must be finite");
             }
             rgb = rgb << 8 | Math.round(255 * Math.max(0f, Math.min(1f, k)));
         }

@@ -198,14 +198,22 @@ public final class ObjReader {
 
     private float number(int i, String where) {
         String text = lines.text(i);
+        Float value = parseNumber(text);
+        if (value == null) {
+            throw lines.error("malformed number " + LineScanner.quote(text) + " in " + where);
+        }
+        return value;
+    }
+
+    /**
+     * An OBJ or MTL number: {@link Float#parseFloat}'s spellings and C's {@code nan}, {@code inf} and
+     * {@code infinity} in any case (beyond float's range it is infinite); null when it is none.
+     */
+    static Float parseNumber(String text) {
         try {
             return Float.parseFloat(text);
         } catch (NumberFormatException e) {
-            Float special = cSpecial(text);
-            if (special == null) {
-                throw lines.error("malformed number " + LineScanner.quote(text) + " in " + where);
-            }
-            return special;
+            return cSpecial(text);
         }
     }
 

@@ -76,7 +76,11 @@ class ObjLinesTest {
         "Kd xyz 1 1 1|m.mtl:2: Kd xyz is not supported: give r g b (or one grey level)",
         "Ka xyz 1|m.mtl:2: Ka xyz is not supported: give r g b (or one grey level)",
         "Kd 1 q 0|m.mtl:2: Kd: malformed number 'q' (only the r g b form is supported)",
-        "Kd NaN 0 0|m.mtl:2: Kd needs finite numbers",
+        "Kd NaN 0 0|m.mtl:2: Kd: 'NaN' is not a finite number: a colour must be finite",
+        "Kd nan|m.mtl:2: Kd: 'nan' is not a finite number: a colour must be finite",
+        "Ka inf 0 0|m.mtl:2: Ka: 'inf' is not a finite number: a colour must be finite",
+        "Ka 1 -Infinity 0|m.mtl:2: Ka: '-Infinity' is not a finite number: a colour must be finite",
+        "Kd 1 1 1e39|m.mtl:2: Kd: '1e39' is not a finite number (beyond float's 3.4e38): a colour must be finite",
     })
     void badKdNamesTheMtlFileAndLine(String kd, String expected) throws IOException {
         write("m.mtl", "newmtl a\n" + kd + "\n");
