@@ -62,4 +62,32 @@ class ReadmePomTest {
         assertTrue(section.contains(text(ours, "groupId") + ":" + text(ours, "artifactId") + ":" + text(ours, "version")),
                 "the prose names the same coordinates");
     }
+
+    /**
+     * The build's own exec steps (the loop generator's compile and run) give their command line as
+     * {@code commandlineArgs}, which the exec goal takes before {@code <arguments>} and before the
+     * {@code exec.args} property: so a user's {@code -Dexec.args} for an example run by exec:java does
+     * not replace them (with {@code <arguments>} it did, and javac failed with "invalid flag").
+     * Checked by hand: {@code mvn -q test-compile exec:java -Dmain.class=dev.trisect.examples.HeadlessRender
+     * -Dexec.classpathScope=test -Dexec.args=out.png} writes out.png.
+     */
+    @Test
+    void theBuildsExecStepsIgnoreExecArgs() throws Exception {
+        Element ours = parse(Files.readString(Path.of("pom.xml")));
+        var executions = ours.getElementsByTagName("execution");
+        int steps = 0;
+        for (int i = 0; i < executions.getLength(); i++) {
+            Element e = (Element) executions.item(i);
+            if (e.getElementsByTagName("id").getLength() == 0 || e.getElementsByTagName("goal").getLength() == 0) {
+                continue;
+            }
+            String id = text(e, "id");
+            if ((id.equals("loop-generator") || id.equals("loops")) && text(e, "goal").equals("exec")) {
+                steps++;
+                assertEquals(1, e.getElementsByTagName("commandlineArgs").getLength(), id + ": a command line of its own");
+                assertEquals(0, e.getElementsByTagName("arguments").getLength(), id + ": no <arguments>");
+            }
+        }
+        assertEquals(2, steps, "the loop generator's two exec steps");
+    }
 }
