@@ -91,7 +91,8 @@ final class BenchCommand extends SceneCommand {
             + "(not with --lines, --labels or --glref).")
     boolean alphaTest;
 
-    @Option(names = "--json", description = "One JSON line per path instead of a table.")
+    @Option(names = "--json", description = "One JSON line per path instead of a table (with a light or fog "
+            + "option it also records the light and fog in force: light, point, ambient, shade, fog).")
     boolean json;
 
     @Option(names = "--sweep", description = "Measure the cost/quality curve instead: for each threshold of "
@@ -322,7 +323,8 @@ final class BenchCommand extends SceneCommand {
                     .put("filter", path.filter.id())
                     .put("min_ms", t.minMs(), 3)
                     .put("pixels", (long) frame.size.width() * frame.size.height())
-                    .put("pixels_written", r.last().pixelsWritten());
+                    .put("pixels_written", r.last().pixelsWritten())
+                    .putAll(light.json());
             if (!Double.isNaN(linesMs)) {
                 o.put(extraName() + (alphaTest ? "_ratio" : "_ms"), linesMs, 3);
             }
@@ -374,7 +376,8 @@ final class BenchCommand extends SceneCommand {
                     .put("mean_ms", ms, 3)
                     .put("fps", 1000 / ms, 1)
                     .put("threads", threads)
-                    .put("filter", path.filter.id());
+                    .put("filter", path.filter.id())
+                    .putAll(light.json());
             if (!Double.isNaN(linesMs)) {
                 o.put("lines_ms", linesMs, 3);
             }

@@ -139,6 +139,27 @@ class LightOptionsTest {
                 + export.out());
     }
 
+    /** bench --json's rows say what they timed: the light and fog in force, as compare's line does. */
+    @Test
+    void benchJsonRecordsTheLightAndFogItTimed() throws Exception {
+        String[] base = {"bench", "--scene", "floor", "--size", "32x18", "--modes", "perspective", "--frames", "1",
+            "--warmup", "0", "--json"};
+        CliRun plain = CliRun.of(base);
+        assertEquals(0, plain.status(), plain.err());
+        Map<String, Object> none = JSON.std.mapFrom(plain.out().strip());
+        for (String key : new String[] {"light", "point", "ambient", "shade", "fog"}) {
+            assertFalse(none.containsKey(key), key + " without any light or fog option: " + plain.out());
+        }
+        CliRun lit = CliRun.of(with(base, "--light", "0.3,-1,-0.5", "--shade", "flat", "--fog", "exp,0.05"));
+        assertEquals(0, lit.status(), lit.err());
+        Map<String, Object> j = JSON.std.mapFrom(lit.out().strip());
+        assertEquals(Map.of("direction", List.of(0.3, -1.0, -0.5), "colour", List.of(1.0, 1.0, 1.0)), j.get("light"),
+                lit.out());
+        assertEquals("flat", j.get("shade"));
+        assertEquals(Map.of("mode", "exp", "density", 0.05, "colour", List.of(0.0, 0.0, 0.0)), j.get("fog"));
+        assertEquals("perspective", j.get("path"), "the timing fields still lead");
+    }
+
     @Test
     void compareRecordsTheLightAndFogItDrewWith() throws Exception {
         String[] base = {"compare", "--scene", "floor", "--size", "32x18", "--mode", "tessellated"};
