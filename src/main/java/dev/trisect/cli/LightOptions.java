@@ -201,10 +201,10 @@ final class LightOptions {
     }
 
     /**
-     * The light and fog a frame was drawn with, for compare's JSON line: nothing without a light or fog
-     * option; with a light, its values in force (defaults included: the shading, the ambient colour,
-     * each light's colour and the point light's attenuation); the fog with its colour. Each light is a
-     * field as given (a direction is not normalised).
+     * The light and fog a frame was drawn with, for compare's and bench's JSON lines: nothing without a
+     * light or fog option; with a light, its values in force (defaults included: the shading, the
+     * ambient colour, each light's colour and the point light's attenuation); the fog with its colour.
+     * Each light is a field as given (a direction is not normalised).
      */
     JsonObject json() {
         check();

@@ -136,7 +136,7 @@ class DevToolsLogicTest {
     @Test
     void controlsThePathDoesNotUseAreDisabledAndSayWhy() throws Exception {
         javax.swing.SwingUtilities.invokeAndWait(() -> {
-            dev.trisect.view.internal.ViewController c = controller();
+            dev.trisect.view.internal.ViewController c = WindowlessController.boxes();
             DevToolsPanel panel = new DevToolsPanel(c);
             SplitPolicySection split = panel.section(SplitPolicySection.class);
             c.update(s -> s.withRender(s.render().withMode(dev.trisect.render.RenderMode.SPANS)));
@@ -155,27 +155,11 @@ class DevToolsLogicTest {
         });
     }
 
-    private static dev.trisect.view.internal.ViewController controller() {
-        return new dev.trisect.view.internal.ViewController(new ViewState(DemoScenes.boxes()),
-                new dev.trisect.view.internal.ViewController.Surface() {
-                    @Override
-                    public void repaint() {
-                    }
-
-                    @Override
-                    public void inspector(boolean on) {
-                    }
-
-                    @Override
-                    public void showDevTools(boolean on) {
-                    }
-                }, 1);
-    }
 
     @Test
     void everyTooltipOfTheToolsWrapsIntoShortLines() throws Exception {
         javax.swing.SwingUtilities.invokeAndWait(() -> {
-            dev.trisect.view.internal.ViewController c = controller();
+            dev.trisect.view.internal.ViewController c = WindowlessController.boxes();
             List<String> tips = new ArrayList<>();
             collectTips(new DevToolsPanel(c), tips);
             assertTrue(tips.size() > 30, tips.size() + " tooltips");

@@ -4,7 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import dev.trisect.content.DemoScenes;
 import dev.trisect.content.SceneLighting;
 import dev.trisect.math.Vec3;
 import dev.trisect.render.Colour;
@@ -13,7 +12,6 @@ import dev.trisect.render.Shading;
 import dev.trisect.scene.Light;
 import dev.trisect.scene.Scene;
 import dev.trisect.view.internal.ViewController;
-import dev.trisect.view.internal.ViewState;
 import java.util.ArrayList;
 import java.util.List;
 import javax.swing.SwingUtilities;
@@ -21,26 +19,11 @@ import org.junit.jupiter.api.Test;
 
 /** The developer tools' light and fog section, without a window: its fields read the fog drawn. */
 class LightSectionTest {
-    private static ViewController controller() {
-        return new ViewController(new ViewState(DemoScenes.boxes()), new ViewController.Surface() {
-            @Override
-            public void repaint() {
-            }
-
-            @Override
-            public void inspector(boolean on) {
-            }
-
-            @Override
-            public void showDevTools(boolean on) {
-            }
-        }, 1);
-    }
 
     @Test
     void theFogFieldsShowTheScenesFogWhoeverSetIt() throws Exception {
         SwingUtilities.invokeAndWait(() -> {
-            ViewController c = controller();
+            ViewController c = WindowlessController.boxes();
             LightSection light = new DevToolsPanel(c).section(LightSection.class);
             Scene scene = c.state().scene();
             // As the demo's G key sets it: from the camera's distance to its target to eight times that.
@@ -60,7 +43,7 @@ class LightSectionTest {
     @Test
     void aStartTheFogRefusesIsNotKept() throws Exception {
         SwingUtilities.invokeAndWait(() -> {
-            ViewController c = controller();
+            ViewController c = WindowlessController.boxes();
             LightSection light = new DevToolsPanel(c).section(LightSection.class);
             Scene scene = c.state().scene();
             Fog fog = Fog.linear(10, 80, Colour.BLACK);
@@ -81,7 +64,7 @@ class LightSectionTest {
     @Test
     void theShadingSaysTheDemosWordsAndWarnsWhenNothingLightsIt() throws Exception {
         SwingUtilities.invokeAndWait(() -> {
-            ViewController c = controller();
+            ViewController c = WindowlessController.boxes();
             List<String> said = new ArrayList<>();
             c.addMessageListener(said::add);
             LightSection light = new DevToolsPanel(c).section(LightSection.class);
@@ -134,7 +117,7 @@ class LightSectionTest {
     @Test
     void theFogFieldsTakeWhatTheFogTakesAndRefuseWhatItRefusesWithItsMessage() throws Exception {
         SwingUtilities.invokeAndWait(() -> {
-            ViewController c = controller();
+            ViewController c = WindowlessController.boxes();
             List<String> said = new ArrayList<>();
             c.addMessageListener(said::add);
             LightSection light = new DevToolsPanel(c).section(LightSection.class);
