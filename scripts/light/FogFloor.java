@@ -25,7 +25,9 @@ import jdk.incubator.vector.VectorSpecies;
  * same pixels, checked), read from the frame's depth and colour and written back in place, 16 lanes
  * (512 bits) at a time, no working rows, no copies, no scans (each row's covered run found once,
  * before the rounds), and by the same loop with a cheaper arithmetic ({@link #converted}). Linear fog 5..60. Prints the median (lowest, highest) CPU ms of the thread per
- * round and ns a covered pixel. A measurement only: the product does not use the Vector API.
+ * round and ns a covered pixel. Then the pass and the fused loop once more over one row that stays in
+ * the L1 data cache ({@link #inCache}): the arithmetic with no cache misses. A measurement only: the
+ * product does not use the Vector API.
  *
  *   java --add-modules jdk.incubator.vector -cp target/trisect.jar scripts/light/FogFloor.java [ROUNDS]
  */
@@ -188,5 +190,70 @@ public final class FogFloor {
             System.out.printf(Locale.ROOT, "%s median %.2f ms (min %.2f, max %.2f), %.2f ns a covered pixel%n",
                     names[v], m[rounds / 2], m[0], m[rounds - 1], m[rounds / 2] * 1e6 / covered);
         }
+        long beyond = 0;
+        for (float q : plain.depth()) {
+            beyond += q > 0 && 1 / q > fog.start() ? 1 : 0;
+        }
+        inCache(rounds, pass, a, b, fr, fg, fb, covered, beyond);
+    }
+
+    /**
+     * The same two loops over one row of 1920 pixels that stays in the L1 data cache (7.5 KB of depths
+     * and 7.5 KB of colours), every pixel covered and blended (depths from 5 to 60 view units, random
+     * colours): the arithmetic alone, with no cache misses at all. Each call first copies the row's
+     * colours and depths back in (both variants alike; the copy alone is timed too and subtracted).
+     * Prints ns a pixel and what the demo's covered pixels, and those beyond the fog's start, would cost
+     * at that rate.
+     */
+    private static void inCache(int rounds, FogPass pass, float a, float b, int fr, int fg, int fb,
+                                long covered, long beyond) {
+        int w = 1920;
+        int calls = 2000;
+        java.util.Random random = new java.util.Random(1);
+        Framebuffer src = new Framebuffer(w, 1);
+        Framebuffer row = new Framebuffer(w, 1);
+        for (int x = 0; x < w; x++) {
+            src.depth()[x] = (float) (1 / (5 + 55 * random.nextDouble()));
+            src.colour()[x] = random.nextInt() | 0xFF000000;
+        }
+        FogPass.Rows rows = new FogPass.Rows();
+        ThreadMXBean cpu = ManagementFactory.getThreadMXBean();
+        double[][] ns = new double[3][rounds];
+        for (int round = -15; round < rounds; round++) {
+            for (int v = 0; v < 3; v++) {
+                long t0 = cpu.getCurrentThreadCpuTime();
+                for (int c = 0; c < calls; c++) {
+                    System.arraycopy(src.colour(), 0, row.colour(), 0, w);
+                    System.arraycopy(src.depth(), 0, row.depth(), 0, w);
+                    if (v == 0) {
+                        pass.apply(row, 0, 1, rows);
+                    } else if (v == 1) {
+                        linear(row.depth(), row.colour(), 0, w, a, b, fr, fg, fb);
+                    }
+                }
+                if (round >= 0) {
+                    ns[v][round] = (cpu.getCurrentThreadCpuTime() - t0) / (double) calls / w;
+                }
+            }
+        }
+        double copy = median(ns[2]);
+        System.out.printf(Locale.ROOT, "one row in the L1 cache (every pixel blended), %d rounds of %d calls, CPU ns a pixel:%n",
+                rounds, calls);
+        String[] names = {"FogPass           ", "fused, same sums  "};
+        for (int v = 0; v < 2; v++) {
+            double[] m = ns[v].clone();
+            Arrays.sort(m);
+            double net = m[rounds / 2] - copy;
+            System.out.printf(Locale.ROOT, "%s median %.3f (min %.3f, max %.3f) less the copy's %.3f = %.3f ns a pixel:"
+                            + " the demo's %d covered pixels %.2f ms, its %d beyond the start %.2f ms%n",
+                    names[v], m[rounds / 2], m[0], m[rounds - 1], copy, net, covered, net * covered / 1e6,
+                    beyond, net * beyond / 1e6);
+        }
+    }
+
+    private static double median(double[] values) {
+        double[] m = values.clone();
+        Arrays.sort(m);
+        return m[m.length / 2];
     }
 }
