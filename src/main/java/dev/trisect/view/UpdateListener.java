@@ -3,7 +3,9 @@ package dev.trisect.view;
 /**
  * An update hook: called before each frame a {@link TrisectView} draws, to move things on by the time
  * step. What it changes — objects' transforms, the scene, the view's camera and settings — shows in
- * the frame about to be drawn.
+ * the frame about to be drawn. The view's {@link TrisectView#getCamera()} is that frame's camera, already
+ * moved by the camera controls, so a light can follow the camera (a headlight):
+ * {@code Camera c = view.getCamera(); headlight.setVector(c.eye().sub(c.target()));}
  *
  * <pre>{@code
  * view.addUpdateListener((seconds, frame) -> {

@@ -112,7 +112,9 @@ abstract class ViewDrawing extends JComponent implements AutoCloseable {
     }
 
     /**
-     * The camera of the newest frame.
+     * The camera of the newest frame. In an update hook ({@link TrisectView#addUpdateListener}) it is the camera of the
+     * frame the hook runs before, already moved by the camera controls: a light that follows the camera,
+     * set from it there, is lit from where that frame looks.
      *
      * @return the camera as the user moved it, or the one just set if no frame has been drawn with it yet
      */

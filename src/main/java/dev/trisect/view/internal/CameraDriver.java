@@ -70,6 +70,19 @@ final class CameraDriver {
     }
 
     /**
+     * The camera {@link #next} chose, or the host's when the host set another since (an update hook
+     * may, between the two): input is left for the next frame.
+     */
+    Camera settled() {
+        ViewState.CameraRequest home = state.home();
+        if (home.serial() != homeSerial) {
+            homeSerial = home.serial();
+            start(home.camera());
+        }
+        return camera;
+    }
+
+    /**
      * {@code c} looking at the point as far ahead as the host's camera looks at its target, so that
      * orbiting after flying turns round a point at the distance the host chose, not one metre ahead.
      */

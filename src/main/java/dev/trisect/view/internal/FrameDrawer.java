@@ -88,11 +88,21 @@ final class FrameDrawer {
     }
 
     /**
-     * Draws a frame of {@code fw x fh} pixels into {@code back}, or into a new slot when it is null or
-     * of another size; returns the slot drawn into.
+     * Moves the camera by the controls for the next frame, {@code dt} seconds after the last (with
+     * {@code redraw} the last frame's camera), and makes it the view's current camera: the update hooks,
+     * which run next, see the camera their frame is drawn with (a light that follows it is lit from there).
      */
-    FrameSlot draw(FrameSlot back, ViewSettings settings, int fw, int fh, FreezeGate.Action action, double dt) {
-        Camera camera = cameras.next(action == FreezeGate.Action.REDRAW, dt);
+    void aim(boolean redraw, double dt) {
+        state.drawnWith(cameras.next(redraw, dt), cameras.homeSerial());
+    }
+
+    /**
+     * Draws a frame of {@code fw x fh} pixels into {@code back}, or into a new slot when it is null or
+     * of another size; returns the slot drawn into. Its camera is the one {@link #aim} chose, or the
+     * host's when one was set since (an update hook may set it).
+     */
+    FrameSlot draw(FrameSlot back, ViewSettings settings, int fw, int fh, FreezeGate.Action action) {
+        Camera camera = cameras.settled();
         long homeSerial = cameras.homeSerial();
         if (back == null || !back.is(fw, fh)) {
             back = new FrameSlot(fw, fh);

@@ -153,6 +153,9 @@ public final class RenderLoop implements Runnable {
                     sleep(15);
                     continue;
                 }
+                double cameraStep = action == FreezeGate.Action.STEP ? FreezeGate.STEP_SECONDS : dt;
+                // The controls move the camera first, so that the hooks see the camera of their frame.
+                drawer.aim(action == FreezeGate.Action.REDRAW, cameraStep);
                 boolean animates = false;
                 if (action != FreezeGate.Action.REDRAW) {
                     // The hooks' changes (scene, camera, settings) show in this frame: read them after.
@@ -166,8 +169,7 @@ public final class RenderLoop implements Runnable {
                 int fh = (int) frameSize;
                 long frameStart = System.nanoTime();
                 try {
-                    back = drawer.draw(back, settings, fw, fh, action,
-                            action == FreezeGate.Action.STEP ? FreezeGate.STEP_SECONDS : dt);
+                    back = drawer.draw(back, settings, fw, fh, action);
                 } catch (RuntimeException | OutOfMemoryError e) {
                     // Keep the view alive and say what happened; the next frame starts afresh.
                     LoopListener l = listener;

@@ -208,13 +208,16 @@ public final class ViewState {
         return home;
     }
 
-    /** The camera of the newest frame drawn (or the one just set, before it is drawn). */
+    /**
+     * The camera of the newest frame, from when the controls moved it for that frame (before its update
+     * hooks run), or the one just set, before it is drawn.
+     */
     public Camera currentCamera() {
         return current;
     }
 
-    /** Render thread: the camera the newest frame was drawn with. */
-    public void drawnWith(Camera c, long homeSerial) {
+    /** Render thread: the camera the newest frame is drawn with, moved by the controls from home camera {@code homeSerial}. */
+    public synchronized void drawnWith(Camera c, long homeSerial) {
         // A camera set after this frame began wins until its own frame is drawn.
         if (home.serial() == homeSerial) {
             current = c;
