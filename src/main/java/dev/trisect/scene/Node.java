@@ -194,6 +194,8 @@ public abstract sealed class Node permits Group, SceneObject, Light {
      * passed on from the object unless a listener nearer it consumed it), and entering and leaving the
      * group as a whole. On the event thread (see {@link PointerEvent}). A view reads which object
      * each pixel shows from the triangle ids every frame of it records: listening costs no frame time.
+     * The pointer is over an object where a pick finds it ({@link SceneRenderer#pick}): on its opaque and
+     * alpha-tested triangles, not on its blended ones, lines, billboards or labels.
      *
      * @param listener told of each event
      */

@@ -190,7 +190,8 @@ public final class Scene extends Group {
     /**
      * Fogs the scene from the next frame on, or clears the fog: every pixel of every object, of its lines
      * and of its billboards is blended towards the fog's colour by its depth ({@link Fog}); the
-     * background, labels and screen text are not.
+     * background, labels and screen text are not: for a horizon that fades into the fog, draw on its
+     * colour ({@code settings.withBackground(fog.colour().rgb())}).
      *
      * @param fog the fog, or null for none
      */

@@ -102,6 +102,12 @@ public final class SceneRenderer implements AutoCloseable {
      * 16384x16384 frame. When that does not fit in Java's heap, pick refuses with a message before
      * drawing; a frame drawn with its ids recorded needs nothing more.
      *
+     * <p>Only the surfaces that write depth are picked: opaque and alpha-tested triangles (through an
+     * alpha-tested cut-out's holes, what is behind). A blended surface ({@link Material.AlphaMode#BLEND},
+     * glass) is seen through: the pick is of the surface behind it. Lines (a {@link DrawStyle#WIRE}
+     * object's edges included), billboards, labels and screen text are not picked: where they alone
+     * cover the pixel, the pick is of what is behind them, or empty.
+     *
      * @param x the pixel's column, 0 at the left
      * @param y the pixel's row, 0 at the top
      * @return the pick, or empty where the pixel shows the background, or before the first frame

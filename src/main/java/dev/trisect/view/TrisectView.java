@@ -214,7 +214,8 @@ public class TrisectView extends ViewDrawing {
      * and the texel — as {@code SceneRenderer.pick} answers for the same frame — read from the frame's
      * triangle ids, which every frame records, and never drawing anything: the triangle from the ids,
      * the point, texture coordinates and texel from that triangle and the frame's camera (see
-     * {@link Pick}). Event thread.
+     * {@link Pick}); the same surfaces are picked (a blended one is seen through; lines, billboards and
+     * labels are not picked). Event thread.
      *
      * @param x the point's column in the view, logical pixels (as mouse events give it)
      * @param y its row
