@@ -6,6 +6,7 @@ import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.awt.event.WindowEvent;
 import java.util.List;
+import java.util.function.BooleanSupplier;
 import java.util.function.Consumer;
 import javax.swing.AbstractAction;
 import javax.swing.Action;
@@ -93,19 +94,33 @@ final class DemoCommands {
      * hands the new one to {@code behaviour}; it starts off.
      */
     static Action toggle(String name, String description, KeyStroke key, Consumer<Boolean> behaviour) {
+        boolean[] state = {false};
+        return toggle(name, description, key, () -> state[0], on -> {
+            state[0] = on;
+            behaviour.accept(on);
+        });
+    }
+
+    /**
+     * An on/off command whose state is {@code state}'s answer, wherever it lives (the scene's fog, which
+     * the developer tools change too): each use hands the opposite to {@code behaviour}. The state is
+     * never read from the action's {@code SELECTED_KEY}: a check-box item flips that before the action
+     * runs, so a menu click read it as already on and turned it off again.
+     */
+    static Action toggle(String name, String description, KeyStroke key, BooleanSupplier state,
+                         Consumer<Boolean> behaviour) {
         Action a = new AbstractAction(name) {
             private static final long serialVersionUID = 1L;
 
             @Override
             public void actionPerformed(ActionEvent e) {
-                boolean on = !Boolean.TRUE.equals(getValue(Action.SELECTED_KEY));
-                putValue(Action.SELECTED_KEY, on);
-                behaviour.accept(on);
+                behaviour.accept(!state.getAsBoolean());
+                putValue(Action.SELECTED_KEY, state.getAsBoolean());
             }
         };
         a.putValue(Action.SHORT_DESCRIPTION, description);
         a.putValue(Action.ACCELERATOR_KEY, key);
-        a.putValue(Action.SELECTED_KEY, false);
+        a.putValue(Action.SELECTED_KEY, state.getAsBoolean());
         return a;
     }
 

@@ -2,15 +2,18 @@ package dev.trisect.ui;
 
 import static dev.trisect.GuiTests.onEdt;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import dev.trisect.GuiTests;
 import java.awt.Component;
+import java.awt.event.ActionEvent;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.BooleanSupplier;
 import javax.swing.Action;
 import javax.swing.InputMap;
 import javax.swing.JComponent;
@@ -62,22 +65,73 @@ class DemoCommandsGuiTest {
         }
     }
 
-    /** The actions of every item in the bar, submenus included. */
-    private static List<Action> items(JMenuBar bar) {
-        List<Action> out = new ArrayList<>();
+    /**
+     * Every check-box command turns on from its menu item as from its key, and off again either way: a
+     * check-box item flips the action's selected state before the action runs, and the demo's toggles
+     * read that as already on, so a click on Frame-rate HUD, Fog, Labels or Uncapped did nothing.
+     */
+    @Test
+    void eachToggleTurnsOnAndOffFromItsItemAsFromItsKey() throws Exception {
+        GuiTests.requireDisplay();
+        window = onEdt(DemoWindows::demo);
+        Map<String, BooleanSupplier> effect = Map.of(
+                "Uncapped frame rate", () -> window.view().getMaxFrameRate() == 0,
+                "Fog", () -> window.lighting.fog(),
+                "Labels, axes and glass pane", () -> window.shapes.extras(),
+                "Frame-rate HUD", () -> window.shapes.hud());
+        List<JMenuItem> items = onEdt(() -> menuItems(window.frame().getJMenuBar()));
+        ActionEvent key = new ActionEvent(window.frame().getRootPane(), ActionEvent.ACTION_PERFORMED, null);
+        for (DemoCommands.Entry e : window.commands) {
+            if (!e.check()) {
+                continue;
+            }
+            String name = (String) e.action().getValue(Action.NAME);
+            BooleanSupplier on = effect.get(name);
+            assertTrue(on != null, name + ": a new toggle; say here what it does, to check it");
+            JMenuItem item = items.stream().filter(i -> i.getAction() == e.action()).findFirst().orElseThrow();
+            assertFalse(onEdt(on::getAsBoolean), name + " starts off");
+            onEdt(() -> {
+                item.doClick(0);
+                return null;
+            });
+            assertTrue(onEdt(on::getAsBoolean), name + ": on from its menu item");
+            assertTrue(onEdt(item::isSelected), name + ": its item checked");
+            onEdt(() -> {
+                e.action().actionPerformed(key);
+                return null;
+            });
+            assertFalse(onEdt(on::getAsBoolean), name + ": off from its key");
+            assertFalse(onEdt(item::isSelected), name + ": its item unchecked");
+            onEdt(() -> {
+                e.action().actionPerformed(key);
+                item.doClick(0);
+                return null;
+            });
+            assertFalse(onEdt(on::getAsBoolean), name + ": on from its key, off from its item");
+        }
+    }
+
+    /** Every item in the bar, submenus included. */
+    private static List<JMenuItem> menuItems(JMenuBar bar) {
+        List<JMenuItem> out = new ArrayList<>();
         for (int i = 0; i < bar.getMenuCount(); i++) {
-            collect(bar.getMenu(i), out);
+            collectItems(bar.getMenu(i), out);
         }
         return out;
     }
 
-    private static void collect(JMenu menu, List<Action> out) {
+    private static void collectItems(JMenu menu, List<JMenuItem> out) {
         for (Component c : menu.getMenuComponents()) {
             if (c instanceof JMenu sub) {
-                collect(sub, out);
-            } else if (c instanceof JMenuItem item && item.getAction() != null) {
-                out.add(item.getAction());
+                collectItems(sub, out);
+            } else if (c instanceof JMenuItem item) {
+                out.add(item);
             }
         }
+    }
+
+    /** The actions of every item in the bar, submenus included. */
+    private static List<Action> items(JMenuBar bar) {
+        return menuItems(bar).stream().map(JMenuItem::getAction).filter(a -> a != null).toList();
     }
 }
