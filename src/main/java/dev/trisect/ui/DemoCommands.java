@@ -57,8 +57,9 @@ final class DemoCommands {
                 new Entry(Menu.SCENE, command("Lighting: off, flat, smooth", "Light the scene (a lamp from the "
                         + "camera, a warm light circling, a dim ambient) flat, then smooth, then not", KeyStroke.getKeyStroke(
                         KeyEvent.VK_L, 0), () -> w.status("Lighting: " + SceneLighting.word(w.lighting.cycle()))), false),
-                new Entry(Menu.SCENE, toggle("Fog", "OpenGL's linear fog towards the sky's colour", KeyStroke.getKeyStroke(
-                        KeyEvent.VK_G, 0), w.lighting::setFog), true),
+                new Entry(Menu.SCENE, toggle("Fog", "OpenGL's linear fog towards the sky's colour (on while the "
+                        + "scene has any fog, the developer tools' too: G then turns it off)", KeyStroke.getKeyStroke(
+                        KeyEvent.VK_G, 0), w.lighting::fog, w.lighting::setFog), true),
                 new Entry(Menu.SCENE, toggle("Labels, axes and glass pane", "Labels on the scene's things, an axes "
                         + "gizmo at the origin and a blended glass pane: the engine's lines, text and transparency "
                         + "(the command line draws the scene without them)", KeyStroke.getKeyStroke(KeyEvent.VK_X, 0),
@@ -101,6 +102,9 @@ final class DemoCommands {
         });
     }
 
+    /** The value of a toggle's {@link BooleanSupplier}, its state (see {@link #showStates}). */
+    static final String STATE = "trisect.state";
+
     /**
      * An on/off command whose state is {@code state}'s answer, wherever it lives (the scene's fog, which
      * the developer tools change too): each use hands the opposite to {@code behaviour}. The state is
@@ -120,8 +124,18 @@ final class DemoCommands {
         };
         a.putValue(Action.SHORT_DESCRIPTION, description);
         a.putValue(Action.ACCELERATOR_KEY, key);
+        a.putValue(STATE, state);
         a.putValue(Action.SELECTED_KEY, state.getAsBoolean());
         return a;
+    }
+
+    /** Sets each toggle's check to its state, which may have changed elsewhere (a menu is about to show). */
+    static void showStates(List<Entry> table) {
+        for (Entry e : table) {
+            if (e.action().getValue(STATE) instanceof BooleanSupplier state) {
+                e.action().putValue(Action.SELECTED_KEY, state.getAsBoolean());
+            }
+        }
     }
 
     /** The value after {@code current} in a key's {@code cycle}, round to the first (the first when it is not in it). */

@@ -17,8 +17,10 @@ import dev.trisect.view.UpdateListener;
  * warm point light circling the point the scene's camera first looked at; and fog on or off (the G
  * key), linear towards the sky's colour. Sized by the scene's first camera: the lamp circles at half
  * the distance from that camera to its target, and the fog reaches from that distance to eight times
- * it. Every scene shown gets the same lights and the same state. Event thread, apart from
- * {@link #update}, which the view calls on its render thread.
+ * it. Every scene shown gets the same lights and the same state. The state is the scene's own, not a
+ * copy kept here: the developer tools change the same shading, lights and fog, so the keys step from
+ * what is shown and the Fog item's check says what is drawn. Event thread, apart from {@link #update},
+ * which the view calls on its render thread.
  */
 final class DemoLighting implements UpdateListener {
     /** The lighting states the L key steps through. */
@@ -30,13 +32,11 @@ final class DemoLighting implements UpdateListener {
     private final Light ambient = Light.ambient(Colour.grey(0.25));
     private final Light headlight = Light.directional(new Vec3(0, 0, 1), Colour.grey(0.75));
     private final Light lamp = Light.point(Vec3.ZERO, new Colour(1, 0.6, 0.3));
-    private volatile Shading shading = Shading.NONE;
-    private boolean fog;
     /** The lamp's circle: its centre, radius, angle. */
     private volatile Vec3 centre = Vec3.ZERO;
     private volatile double radius = 1;
     private double angle;
-    private Scene scene;
+    private volatile Scene scene;
 
     DemoLighting(TrisectView view) {
         this.view = view;
@@ -45,6 +45,8 @@ final class DemoLighting implements UpdateListener {
 
     /** Lights and fogs {@code shown} (the view's new scene, first seen from {@code camera}) as the last one was. */
     void sceneShown(Scene shown, Camera camera) {
+        Shading lit = shading();
+        boolean fogged = fog();
         if (scene != null) {
             scene.remove(ambient);
             scene.remove(headlight);
@@ -57,54 +59,69 @@ final class DemoLighting implements UpdateListener {
         // Half its light at the centre it circles: 1 / (1 + 0.5 + 0.5).
         lamp.setAttenuation(1, 0.5 / r, 0.5 / (r * r));
         shown.add(ambient, headlight, lamp);
-        apply();
+        light(lit);
+        setFog(fogged);
     }
 
-    /** Steps to the next lighting state (off, flat, smooth) and returns it. */
+    /** Steps from the lighting state shown to the next (off, flat, smooth) and returns it. */
     Shading cycle() {
-        shading = DemoCommands.next(CYCLE, shading);
-        apply();
-        return shading;
+        Shading next = DemoCommands.next(CYCLE, shading());
+        light(next);
+        return next;
     }
 
-    /** The lighting state. */
+    /**
+     * The lighting state shown: the scene's shading while one of the demo's lights shines, else off
+     * (lit materials with every light hidden draw black, which is no lighting state of the L key).
+     */
     Shading shading() {
-        return shading;
+        Scene s = scene;
+        if (s == null || !(ambient.isVisible() || headlight.isVisible() || lamp.isVisible())) {
+            return Shading.NONE;
+        }
+        return SceneLighting.shading(s);
     }
 
-    /** Turns the fog on or off. */
+    /** Turns the demo's fog on (linear, sized by the scene's first camera) or the scene's fog off. */
     void setFog(boolean on) {
-        fog = on;
-        apply();
-    }
-
-    /** Whether the fog is on. */
-    boolean fog() {
-        return fog;
-    }
-
-    private void apply() {
-        if (scene == null) {
+        Scene s = scene;
+        if (s == null) {
             return;
         }
-        Shading s = shading;
-        boolean on = s != Shading.NONE;
         double d = 2 * radius;
-        Fog f = fog ? Fog.linear(d, 8 * d, Colour.of(view.getRenderSettings().background())) : null;
-        scene.update(() -> {
-            SceneLighting.setShading(scene, s);
+        s.setFog(on ? Fog.linear(d, 8 * d, Colour.of(view.getRenderSettings().background())) : null);
+        view.requestFrame();
+    }
+
+    /** Whether the scene shown has fog, the demo's or any other (the developer tools set others). */
+    boolean fog() {
+        Scene s = scene;
+        return s != null && s.fog().isPresent();
+    }
+
+    /** Lights every material as {@code s} says, the demo's lights shining unless it is off. */
+    private void light(Shading s) {
+        Scene shown = scene;
+        if (shown == null) {
+            return;
+        }
+        boolean on = s != Shading.NONE;
+        shown.update(() -> {
+            SceneLighting.setShading(shown, s);
             ambient.setVisible(on);
             headlight.setVisible(on);
             lamp.setVisible(on);
-            scene.setFog(f);
         });
         view.requestFrame();
     }
 
-    /** Moves the headlight to the camera and the lamp on along its circle; animates while lit. */
+    /**
+     * Moves the headlight to the camera and the lamp on along its circle; animates while lit, whether
+     * by the L key or by the developer tools.
+     */
     @Override
     public boolean update(double seconds, long frame) {
-        if (shading == Shading.NONE) {
+        if (shading() == Shading.NONE) {
             return false;
         }
         Camera c = view.getCamera();

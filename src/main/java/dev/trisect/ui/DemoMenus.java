@@ -11,6 +11,8 @@ import javax.swing.JMenu;
 import javax.swing.JMenuBar;
 import javax.swing.JMenuItem;
 import javax.swing.JRadioButtonMenuItem;
+import javax.swing.event.MenuEvent;
+import javax.swing.event.MenuListener;
 
 /**
  * The demo's menu bar: the view's own commands ({@link TrisectView#action}) in File, View, Render and
@@ -66,6 +68,21 @@ final class DemoMenus {
             if (m.getMenuComponentCount() > 0) {
                 bar.add(m);
                 shown.add(m);
+                // A check whose state lives elsewhere (the fog, which the developer tools set too) shows it.
+                m.addMenuListener(new MenuListener() {
+                    @Override
+                    public void menuSelected(MenuEvent e) {
+                        DemoCommands.showStates(table);
+                    }
+
+                    @Override
+                    public void menuDeselected(MenuEvent e) {
+                    }
+
+                    @Override
+                    public void menuCanceled(MenuEvent e) {
+                    }
+                });
             }
         }
         for (JMenu m : shown) {

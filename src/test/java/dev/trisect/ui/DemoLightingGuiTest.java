@@ -56,4 +56,53 @@ class DemoLightingGuiTest {
         });
         assertTrue(scene.fog().isPresent());
     }
+
+    /**
+     * The developer tools change the scene's shading, lights and fog directly; the keys step from what
+     * the scene shows, not from a copy of their own: L after the tools' smooth went to flat, L put back
+     * a fog the tools had turned off, the lamp stood still while the tools lit the scene, and the Fog
+     * item stayed checked over a scene without fog.
+     */
+    @Test
+    void keysAndFogItemFollowTheSceneWhoeverChangedIt() throws Exception {
+        GuiTests.requireDisplay();
+        window = onEdt(DemoWindows::demo);
+        Scene scene = onEdt(() -> window.view().getScene());
+        // The tools' Shading: smooth and their Lights on.
+        SceneLighting.setShading(scene, Shading.SMOOTH);
+        SceneLighting.lights(scene).forEach(l -> l.setVisible(true));
+        assertEquals(Shading.SMOOTH, onEdt(() -> window.lighting.shading()));
+        assertTrue(window.lighting.update(0.1, 1), "lit by the tools, the lamp circles");
+        assertEquals(Shading.NONE, onEdt(() -> window.lighting.cycle()), "L steps on from smooth");
+        assertFalse(window.lighting.update(0.1, 2), "unlit, nothing animates");
+
+        javax.swing.Action g = onEdt(() -> window.commands.stream().map(DemoCommands.Entry::action)
+                .filter(a -> "Fog".equals(a.getValue(javax.swing.Action.NAME))).findFirst().orElseThrow());
+        javax.swing.JMenu sceneMenu = onEdt(() -> window.frame().getJMenuBar().getMenu(3));
+        assertEquals("Scene", sceneMenu.getText());
+        onEdt(() -> {
+            g.actionPerformed(null);
+            return null;
+        });
+        assertTrue(scene.fog().isPresent());
+        // The tools' Fog: off. The item shows it when its menu opens, and G turns the fog on, not off.
+        scene.setFog(null);
+        onEdt(() -> {
+            for (javax.swing.event.MenuListener l : sceneMenu.getMenuListeners()) {
+                l.menuSelected(new javax.swing.event.MenuEvent(sceneMenu));
+            }
+            return null;
+        });
+        assertEquals(Boolean.FALSE, g.getValue(javax.swing.Action.SELECTED_KEY), "Fog unchecked");
+        onEdt(() -> {
+            g.actionPerformed(null);
+            return null;
+        });
+        assertTrue(scene.fog().isPresent(), "G fogs a scene without fog");
+        assertEquals(Boolean.TRUE, g.getValue(javax.swing.Action.SELECTED_KEY));
+        // L leaves the fog as it is, the tools' choice included.
+        scene.setFog(null);
+        onEdt(() -> window.lighting.cycle());
+        assertFalse(scene.fog().isPresent(), "L does not bring back the fog");
+    }
 }
