@@ -1,9 +1,13 @@
 package dev.trisect.devtools;
 
 import dev.trisect.content.SceneAsset;
+import dev.trisect.render.Colour;
 import dev.trisect.render.RenderSettings;
+import dev.trisect.render.Shading;
 import dev.trisect.render.TessellationSettings;
 import dev.trisect.scene.Camera;
+import dev.trisect.scene.Light;
+import dev.trisect.scene.Scene;
 import dev.trisect.view.internal.ViewState;
 import java.util.ArrayList;
 import java.util.List;
@@ -14,9 +18,84 @@ public final class CliArgs {
     private CliArgs() {
     }
 
-    /** {@code compare} arguments for the measured frame: same scene, size, camera and path settings. */
+    /**
+     * {@code compare} arguments for the measured frame: same scene, size, camera and path settings, and
+     * the light and fog it was drawn with (see {@link #unreproducible}).
+     */
     public static List<String> compare(SceneAsset scene, ViewState.Measurement m) {
-        return frame("compare", scene, m.camera(), m.settings().render(), m.width(), m.height());
+        List<String> a = frame("compare", scene, m.camera(), m.settings().render(), m.width(), m.height());
+        a.addAll(lightAndFog(m));
+        return a;
+    }
+
+    /**
+     * Why no command line draws the measured frame's light, or null when one does: the command line
+     * lights every material alike, by at most one directional and one point light besides the ambient
+     * colour, as the OpenGL reference takes them.
+     */
+    public static String unreproducible(ViewState.Measurement m) {
+        if (m.shading() == null) {
+            return "its materials are lit differently, and the command line lights every material alike";
+        }
+        if (m.shading() == Shading.NONE) {
+            return null;
+        }
+        if (shining(m, Light.Kind.DIRECTIONAL).size() > 1 || shining(m, Light.Kind.POINT).size() > 1) {
+            return "it has more than one directional or point light, and the command line takes one of each";
+        }
+        return null;
+    }
+
+    /**
+     * The light and fog options of the measured frame: with lit materials the ambient colour the
+     * ambient lights sum to, the directional and the point light, each as placed for that frame, and the
+     * shading; the fog with its colour. Numbers as Java prints doubles, which read back bit for bit.
+     */
+    static List<String> lightAndFog(ViewState.Measurement m) {
+        List<String> a = new ArrayList<>();
+        if (m.shading() != null && m.shading() != Shading.NONE) {
+            double[] ambient = new double[3];
+            for (Scene.PlacedLight l : shining(m, Light.Kind.AMBIENT)) {
+                ambient[0] += l.colour().r();
+                ambient[1] += l.colour().g();
+                ambient[2] += l.colour().b();
+            }
+            a.addAll(List.of("--ambient", triple(ambient[0], ambient[1], ambient[2])));
+            for (Scene.PlacedLight l : shining(m, Light.Kind.DIRECTIONAL)) {
+                a.addAll(List.of("--light", l.vector().toString(), "--light-colour", colour(l.colour())));
+            }
+            for (Scene.PlacedLight l : shining(m, Light.Kind.POINT)) {
+                a.addAll(List.of("--point", l.vector().toString(), "--point-colour", colour(l.colour()),
+                        "--attenuation", triple(l.kc(), l.kl(), l.kq())));
+            }
+            a.addAll(List.of("--shade", m.shading().name().toLowerCase(Locale.ROOT)));
+        }
+        m.fog().ifPresent(f -> a.addAll(List.of("--fog", switch (f.mode()) {
+            case LINEAR -> "linear," + f.start() + "," + f.end();
+            case EXP -> "exp," + f.density();
+            case EXP2 -> "exp2," + f.density();
+        }, "--fog-colour", colour(f.colour()))));
+        return a;
+    }
+
+    /**
+     * The measured frame's lights of {@code kind} that lit it: a directional light with no direction,
+     * or a light placed beyond the double range, shines on no frame.
+     */
+    private static List<Scene.PlacedLight> shining(ViewState.Measurement m, Light.Kind kind) {
+        return m.lights().stream().filter(l -> l.kind() == kind && switch (kind) {
+            case AMBIENT -> true;
+            case DIRECTIONAL -> l.vector().isFinite() && l.vector().length() > 0;
+            case POINT -> l.vector().isFinite();
+        }).toList();
+    }
+
+    private static String colour(Colour c) {
+        return triple(c.r(), c.g(), c.b());
+    }
+
+    private static String triple(double x, double y, double z) {
+        return x + "," + y + "," + z;
     }
 
     /**

@@ -41,6 +41,11 @@ final class RenderSection implements ToolSection {
                         + "program, so there is no command that reproduces it.");
                 return;
             }
+            String why = CliArgs.unreproducible(m);
+            if (why != null) {
+                owner.message("No command line draws the measured frame's light: " + why + ".");
+                return;
+            }
             String cmd = CliArgs.compareCommand(asset, m);
             Toolkit.getDefaultToolkit().getSystemClipboard().setContents(new StringSelection(cmd), null);
             owner.message("Copied the compare command of the measured frame; run it from the repository root "

@@ -120,7 +120,8 @@ final class FrameDrawer {
             settleFrames = drawnScene == null ? 0 : 2;
             drawnScene = scene;
         }
-        DrawnFrame drawn = new DrawnFrame(scene.capture(), camera, fw, fh, back.draws)
+        Scene.Snapshot snapshot = scene.capture();
+        DrawnFrame drawn = new DrawnFrame(snapshot, camera, fw, fh, back.draws)
                 .withScreenText(scene.screenText());
         Draws draws = back.draws;
         if (!state.toolsOpen() && settings.view() != ViewKind.IMAGE) {
@@ -191,7 +192,8 @@ final class FrameDrawer {
             // The settings the frame was drawn with (the budget may have chosen the threshold), so that the
             // copied compare command reproduces these numbers.
             state.measurement(new ViewState.Measurement(c, back.serial, camera, settings.withRender(render), fw, fh,
-                    System.nanoTime()), scene);
+                    System.nanoTime(), snapshot.lights(), snapshot.fog(),
+                    ViewState.Measurement.shading(drawn.placed())), scene);
         } else if (settings.view() == ViewKind.DIFFERENCE) {
             // Between measurements the heat map needs only the displacements, at a fraction of the cost.
             ImageComparison.displacements(fw, fh, fb.uv(), reference.uv(),

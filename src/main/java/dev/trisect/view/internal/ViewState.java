@@ -8,6 +8,10 @@ import dev.trisect.scene.Camera;
 import dev.trisect.content.AssetScenes;
 import dev.trisect.content.SceneAsset;
 import dev.trisect.scene.Scene;
+import dev.trisect.render.Fog;
+import dev.trisect.render.Shading;
+import java.util.List;
+import java.util.Optional;
 
 /**
  * What the event thread and the render thread of one view share. Each field is an immutable value
@@ -140,9 +144,38 @@ public final class ViewState {
         }
     }
 
-    /** A comparison of one frame against the per-pixel path, and what it was made from. */
+    /**
+     * A comparison of one frame against the per-pixel path, and what it was made from: with the lights
+     * that shone on it (world space, as placed for that frame: the demo's lamp moves every frame), its
+     * fog, and the one shading all its materials had ({@code null} when they differed).
+     */
     public record Measurement(Comparison comparison, long frame, Camera camera, ViewSettings settings, int width,
-                              int height, long nanos) {
+                              int height, long nanos, List<Scene.PlacedLight> lights, Optional<Fog> fog,
+                              Shading shading) {
+        /** Keeps an unmodifiable copy of the lights. */
+        public Measurement {
+            lights = List.copyOf(lights);
+        }
+
+        /** A frame without light or fog, its materials unlit. */
+        public Measurement(Comparison comparison, long frame, Camera camera, ViewSettings settings, int width,
+                           int height, long nanos) {
+            this(comparison, frame, camera, settings, width, height, nanos, List.of(), Optional.empty(), Shading.NONE);
+        }
+
+        /** The one shading of every material of {@code objects}, or null when they differ; none without materials. */
+        static Shading shading(List<Scene.Placed> objects) {
+            Shading one = null;
+            for (Scene.Placed o : objects) {
+                for (dev.trisect.scene.Material m : o.materials()) {
+                    if (one != null && m.shading() != one) {
+                        return null;
+                    }
+                    one = m.shading();
+                }
+            }
+            return one == null ? Shading.NONE : one;
+        }
     }
 
     /**
