@@ -82,6 +82,11 @@ final class FrameDrawer {
         return false;
     }
 
+    /** The per-pixel frame kept for the comparison and the inspector, or null; for tests of what is kept. */
+    Framebuffer reference() {
+        return reference;
+    }
+
     /** A frame failed: the next one starts its reference afresh. */
     void failed() {
         reference = null;
@@ -106,6 +111,12 @@ final class FrameDrawer {
         long homeSerial = cameras.homeSerial();
         if (back == null || !back.is(fw, fh)) {
             back = new FrameSlot(fw, fh);
+        }
+        if (!state.toolsOpen() && state.inspected() < 0) {
+            // Nothing can ask for the per-pixel frame until the tools or the inspector open: its 36 bytes a
+            // pixel go (they stayed for as long as the view, at the size the tools last had).
+            reference = null;
+            displacement = null;
         }
         // One consistent snapshot of the scene for every render of this frame; the draws are the slot's
         // own, so that a click on the frame on screen is picked against what that frame drew.

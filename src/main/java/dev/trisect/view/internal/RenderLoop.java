@@ -77,6 +77,11 @@ public final class RenderLoop implements Runnable {
         return renderer;
     }
 
+    /** The loop's frame drawer, for tests of what it keeps. */
+    FrameDrawer drawer() {
+        return drawer;
+    }
+
     /** Sets who hears about frames and problems (any thread; one listener). */
     public void listener(LoopListener l) {
         listener = l;

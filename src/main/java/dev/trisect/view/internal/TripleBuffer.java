@@ -18,7 +18,16 @@ public final class TripleBuffer {
         FrameSlot old = ready;
         ready = drawn;
         fresh = true;
-        return old;
+        return sameSize(old, drawn);
+    }
+
+    /**
+     * {@code slot}, or null when it is of another size than {@code newest}: a slot is kept only for
+     * frames of the size drawn now, so that a view made smaller, which draws one frame and idles, holds
+     * no frame of the old size (12 bytes a pixel and more) until something moves.
+     */
+    private static FrameSlot sameSize(FrameSlot slot, FrameSlot newest) {
+        return slot != null && slot.is(newest.width(), newest.height()) ? slot : null;
     }
 
     /**
@@ -30,7 +39,7 @@ public final class TripleBuffer {
             return showing;
         }
         FrameSlot next = ready;
-        ready = showing;
+        ready = sameSize(showing, next);
         fresh = false;
         return next;
     }
