@@ -244,8 +244,8 @@ final class DemoShapes implements UpdateListener {
         FrameInfo f = latest.get();
         // The rate over the last second, a dash until frames have come for a whole second (a still view
         // draws one frame and idles: it has no rate), then the newest frame's time.
-        String text = f == null ? "first frame" : (f.framesPerSecond() > 0 ? String.format(Locale.ROOT, "%.0f fps",
-                f.framesPerSecond()) : "\u2013 fps") + String.format(Locale.ROOT, " \u00b7 %.1f ms a frame", f.frameMillis());
+        String text = f == null ? "first frame" : (f.framesPerSecond() > 0 ? PaceText.fps(f.framesPerSecond())
+                : "\u2013 fps") + String.format(Locale.ROOT, " \u00b7 %.1f ms a frame", f.frameMillis());
         return List.of(ScreenText.of(ScreenText.Corner.BOTTOM_LEFT, text).withBackground(0xA0000000));
     }
 

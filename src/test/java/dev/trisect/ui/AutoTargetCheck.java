@@ -72,7 +72,7 @@ public final class AutoTargetCheck {
      * from the frame's time where frames come too slowly for a rate ("... 2131.6 ms a frame ...").
      */
     static double fps(String pace) {
-        Matcher m = Pattern.compile("(\\d+) fps").matcher(pace);
+        Matcher m = Pattern.compile("([0-9.]+) fps").matcher(pace);
         if (m.find()) {
             return Double.parseDouble(m.group(1));
         }

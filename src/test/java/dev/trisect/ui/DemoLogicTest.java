@@ -119,7 +119,11 @@ class DemoLogicTest {
                 PaceText.pace(r, one, 10_000_000L, 0, false), "frames coming, but not for a second yet");
         // Slow frames (1.5 s each on a loaded machine) are being drawn, not idle.
         dev.trisect.view.FrameInfo slow = new dev.trisect.view.FrameInfo(7, 640, 360, null, r, null, 1500, 0.7, null);
-        assertEquals("tessellated, edge 32 px, nearest  1 fps  640x360", PaceText.pace(r, slow, 1_200_000_000L, 0,
+        assertEquals("tessellated, edge 32 px, nearest  0.7 fps  640x360", PaceText.pace(r, slow, 1_200_000_000L, 0,
+                false));
+        // Slower still: a rate, not "0 fps".
+        dev.trisect.view.FrameInfo slower = new dev.trisect.view.FrameInfo(7, 640, 360, null, r, null, 690, 0.4, null);
+        assertEquals("tessellated, edge 32 px, nearest  0.4 fps  640x360", PaceText.pace(r, slower, 600_000_000L, 0,
                 false));
         dev.trisect.view.FrameInfo flowing = new dev.trisect.view.FrameInfo(90, 640, 360, null, r, null, 10, 59.6, null);
         assertEquals("tessellated, edge 32 px, nearest  60 fps  640x360", PaceText.pace(r, flowing, 10_000_000L, 0,

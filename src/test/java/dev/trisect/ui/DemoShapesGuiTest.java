@@ -86,7 +86,7 @@ class DemoShapesGuiTest {
         window.view().requestFrame();
         frameAfter(first);
         String hud = scene.screenText().get(0).text();
-        assertTrue(hud.matches("(\\d+|\u2013) fps \u00b7 \\d+\\.\\d ms a frame"), hud);
+        assertTrue(hud.matches("([0-9.]+|\u2013) fps \u00b7 \\d+\\.\\d ms a frame"), hud);
         assertTrue(window.latest().stats().glyphs() > extras.stats().glyphs(), "the HUD's glyphs drawn too");
 
         onEdt(() -> {
