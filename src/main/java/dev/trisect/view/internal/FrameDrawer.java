@@ -10,6 +10,8 @@ import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.render.Framebuffer;
 import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
+import dev.trisect.content.AssetScenes;
+import dev.trisect.content.SceneAsset;
 import dev.trisect.scene.Camera;
 import dev.trisect.scene.Scene;
 import dev.trisect.scene.internal.DrawnFrame;
@@ -204,7 +206,8 @@ final class FrameDrawer {
             // copied compare command reproduces these numbers.
             state.measurement(new ViewState.Measurement(c, back.serial, camera, settings.withRender(render), fw, fh,
                     System.nanoTime(), snapshot.lights(), snapshot.fog(),
-                    ViewState.Measurement.shading(drawn.placed())), scene);
+                    ViewState.Measurement.shading(drawn.placed(), AssetScenes.assetOf(scene).map(SceneAsset::mesh)
+                            .orElse(null))), scene);
         } else if (settings.view() == ViewKind.DIFFERENCE) {
             // Between measurements the heat map needs only the displacements, at a fraction of the cost.
             ImageComparison.displacements(fw, fh, fb.uv(), reference.uv(),

@@ -163,10 +163,18 @@ public final class ViewState {
             this(comparison, frame, camera, settings, width, height, nanos, List.of(), Optional.empty(), Shading.NONE);
         }
 
-        /** The one shading of every material of {@code objects}, or null when they differ; none without materials. */
-        static Shading shading(List<Scene.Placed> objects) {
+        /**
+         * The one shading of every material of {@code objects} that draw {@code mesh} (of all of them when it
+         * is null), or null when they differ; none without materials. The command line draws a built-in
+         * scene's or a model's mesh alone, without what the demo adds (labels, axes, glass), whose shading
+         * is not the command's.
+         */
+        static Shading shading(List<Scene.Placed> objects, dev.trisect.mesh.Mesh mesh) {
             Shading one = null;
             for (Scene.Placed o : objects) {
+                if (mesh != null && o.mesh() != mesh) {
+                    continue;
+                }
                 for (dev.trisect.scene.Material m : o.materials()) {
                     if (one != null && m.shading() != one) {
                         return null;

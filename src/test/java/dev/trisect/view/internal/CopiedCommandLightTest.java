@@ -16,7 +16,10 @@ import dev.trisect.render.Colour;
 import dev.trisect.render.Fog;
 import dev.trisect.render.RenderSettings;
 import dev.trisect.render.Shading;
+import dev.trisect.mesh.Primitives;
 import dev.trisect.scene.Light;
+import dev.trisect.scene.Material;
+import dev.trisect.scene.SceneObject;
 import dev.trisect.scene.Scene;
 import java.io.PrintWriter;
 import java.io.StringWriter;
@@ -94,5 +97,28 @@ class CopiedCommandLightTest {
         String why = CliArgs.unreproducible(m);
         assertNotEquals(null, why);
         assertTrue(why.contains("one of each"), why);
+    }
+
+    /**
+     * What the demo adds to a scene (labels, axes, glass: X) is not the command's, which draws the scene's
+     * mesh alone: an unlit addition to a lit scene does not make its materials "lit differently", while
+     * the scene's own materials lit two ways do.
+     */
+    @Test
+    void onlyTheScenesOwnMaterialsDecideItsShading() throws Exception {
+        ViewState state = litDemo(Shading.FLAT, null);
+        state.scene().add(new SceneObject(Primitives.box(1, 1, 1), Material.colour(0x3060A0)));
+        ViewState.Measurement m = measure(state);
+        assertNull(CliArgs.unreproducible(m));
+        List<String> args = CliArgs.compare(AssetScenes.assetOf(state.scene()).orElseThrow(), m);
+        assertEquals("flat", args.get(args.indexOf("--shade") + 1));
+
+        ViewState mixed = litDemo(Shading.FLAT, null);
+        SceneObject own = (SceneObject) mixed.scene().children().get(0);
+        List<Material> materials = new java.util.ArrayList<>(own.materials());
+        materials.set(0, materials.get(0).withShading(Shading.SMOOTH));
+        own.setMaterials(materials);
+        String why = CliArgs.unreproducible(measure(mixed));
+        assertTrue(why != null && why.contains("lit differently"), why);
     }
 }
