@@ -64,7 +64,8 @@ public final class Billboard {
     }
 
     /**
-     * A billboard of a fixed size on screen, whatever its distance.
+     * A billboard of a fixed size on screen, whatever its distance: pixels of a picture, or a view's
+     * logical pixels (on a high-density screen, its scale times as many device pixels).
      *
      * @param texture the texture
      * @param at      its centre, in its object's space

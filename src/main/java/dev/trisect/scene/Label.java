@@ -13,7 +13,8 @@ import java.util.Objects;
  * font's descent below the baseline) is on the point. Lines are split at {@code '\n'} and centred.
  * It is depth-tested at the point's depth unless {@link #onTop()}. It is not fogged by the scene's fog:
  * an annotation stays legible at any distance (text that is part of the scene is a {@link TextPanel},
- * fogged as any object). Immutable; give an object its labels with {@link SceneObject#setLabels}.
+ * fogged as any object). Its pixels are a picture's pixels, or a view's logical pixels (on a
+ * high-density screen, the screen's scale times as many device pixels, as Swing's text). Immutable; give an object its labels with {@link SceneObject#setLabels}.
  *
  * <pre>{@code
  * cube.setLabels(List.of(Label.of("crate", new Vec3(0, 0.7, 0)).withColour(0xFFFF00)));

@@ -254,7 +254,8 @@ public final class SceneObject extends Node {
      * Sets the width of the object's lines and wireframe from the next frame on, as OpenGL's
      * {@code glLineWidth} for aliased lines.
      *
-     * @param width whole pixels, 1 to 255
+     * @param width whole pixels, 1 to 255 (a view's logical pixels: on a high-density screen, the screen's
+     *              scale times as many device pixels)
      * @throws IllegalArgumentException when out of range
      */
     public void setLineWidth(int width) {

@@ -8,7 +8,8 @@ import java.util.Objects;
  * Text over the frame, anchored to a corner of the screen, whatever the camera: a heads-up line, a
  * legend. Drawn after everything else, on top, from the same glyph textures as {@link Label}s (an AWT
  * font rasterized once, no antialiasing), never fogged. Lines split at {@code '\n'} are aligned on the
- * corner's side.
+ * corner's side. Its sizes in pixels (font, margin) are a picture's pixels, or a view's logical pixels
+ * (on a high-density screen, the screen's scale times as many device pixels, as Swing's text).
  * Immutable; show it with {@link Scene#setScreenText}.
  *
  * <pre>{@code

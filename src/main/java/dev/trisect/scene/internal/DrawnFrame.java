@@ -38,6 +38,8 @@ public final class DrawnFrame {
     private final int height;
     private final Draws draws;
     private final Sprites sprites;
+    /** Frame pixels per pixel of the API: line widths, label and screen text sizes, pixel-sized billboards. */
+    private final double pixelScale;
     /** The object of each line draw ({@link Draws#lines(int)}), in order. */
     private final List<LineOwner> lineOwners = new java.util.ArrayList<>();
 
@@ -55,6 +57,21 @@ public final class DrawnFrame {
      * how light falls on each of its materials, and the snapshot's lights and fog.
      */
     public DrawnFrame(Scene.Snapshot snapshot, Camera camera, int width, int height, Draws draws) {
+        this(snapshot, camera, width, height, draws, 1);
+    }
+
+    /**
+     * As {@link #DrawnFrame(Scene.Snapshot, Camera, int, int, Draws)}, with {@code pixelScale} frame pixels
+     * for each pixel the API gives a size in (line widths, fonts, pixel-sized billboards, margins): a
+     * view's screen scale on a high-density screen, so that they keep their size beside Swing's.
+     *
+     * @param pixelScale frame pixels per pixel of the API, 1 to 16
+     */
+    public DrawnFrame(Scene.Snapshot snapshot, Camera camera, int width, int height, Draws draws, double pixelScale) {
+        if (!(pixelScale >= 1 && pixelScale <= 16)) {
+            throw new IllegalArgumentException("pixel scale must be 1 to 16, got " + pixelScale);
+        }
+        this.pixelScale = pixelScale;
         List<Scene.Placed> placed = snapshot.objects();
         this.camera = camera;
         this.width = width;
@@ -82,17 +99,22 @@ public final class DrawnFrame {
                 draws.add(NO_TRIANGLES, NO_TEXTURES, mvp);
             }
             if (!o.lines().isEmpty()) {
-                draws.addLines(o.lines(), mvp, o.lineWidth());
+                draws.addLines(o.lines(), mvp, scaledWidth(o.lineWidth()));
                 lineOwners.add(new LineOwner(o.object().name(), k, false));
             }
             if (!o.wire().isEmpty()) {
-                draws.addLines(o.wire(), mvp, o.lineWidth(), o.filled() ? Draws.WIRE_NEARER : 0);
+                draws.addLines(o.wire(), mvp, scaledWidth(o.lineWidth()), o.filled() ? Draws.WIRE_NEARER : 0);
                 lineOwners.add(new LineOwner(o.object().name(), k, true));
             }
         }
         draws.setLights(lights(snapshot.lights()));
         draws.setFog(snapshot.fog().orElse(null));
-        sprites = new Sprites(this.placed, viewProjection, camera, width, height, draws.quads());
+        sprites = new Sprites(this.placed, viewProjection, camera, width, height, draws.quads(), pixelScale);
+    }
+
+    /** A line width of the API in frame pixels, whole. */
+    private int scaledWidth(int width) {
+        return pixelScale == 1 ? width : (int) Math.round(width * pixelScale);
     }
 
     /**
@@ -104,7 +126,7 @@ public final class DrawnFrame {
      */
     public DrawnFrame withScreenText(List<ScreenText> screen) {
         for (ScreenText t : screen) {
-            Sprites.screenText(t, width, height, draws.quads());
+            Sprites.screenText(t, width, height, draws.quads(), pixelScale);
         }
         return this;
     }

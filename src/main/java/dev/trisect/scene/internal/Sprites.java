@@ -10,6 +10,7 @@ import dev.trisect.scene.Label;
 import dev.trisect.scene.Scene;
 import dev.trisect.scene.ScreenText;
 import dev.trisect.texture.internal.GlyphAtlas;
+import java.awt.Font;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
@@ -23,6 +24,10 @@ import java.util.List;
  * points' eye depth, so that blended ones compose over those behind them), then the ones drawn on top,
  * farthest first; then the screen text in its order ({@link #screenText}). Within a label, its backdrop
  * and then its glyphs.
+ *
+ * <p>Sizes the API gives in pixels (fonts, pixel-sized billboards, backdrops, margins) are multiplied by
+ * the frame's pixel scale: frame pixels per pixel of the API, 1 for a picture, a view's screen scale on a
+ * high-density screen (a 12-pixel label is then as tall as Swing's 12-pixel text beside it).
  */
 public final class Sprites {
     /** Pixels a backdrop reaches beyond its text on each side. */
@@ -51,6 +56,8 @@ public final class Sprites {
     }
 
     private final List<Placed> labels = new ArrayList<>();
+    /** Frame pixels per pixel of the API. */
+    private final double scale;
 
     /**
      * Lays out every billboard and label of {@code placed} into {@code quads}.
@@ -60,9 +67,11 @@ public final class Sprites {
      * @param camera         the camera, for world sizes
      * @param width          frame width, pixels
      * @param height         frame height, pixels
+     * @param scale          frame pixels per pixel of the API, at least 1
      */
     Sprites(List<Scene.Placed> placed, Mat4 viewProjection, Camera camera, int width, int height,
-            QuadRaster quads) {
+            QuadRaster quads, double scale) {
+        this.scale = scale;
         Viewport viewport = new Viewport(width, height);
         // Pixels per world unit at w = 1 (gluPerspective: f = cot(fovY / 2) maps to half the height).
         double focal = height / 2.0 / Math.tan(Math.toRadians(camera.fovY()) / 2);
@@ -106,7 +115,7 @@ public final class Sprites {
      * @return the layout, which knows where its labels went
      */
     public static Sprites layOut(List<Scene.Placed> placed, Camera camera, int width, int height, QuadRaster quads) {
-        return new Sprites(placed, camera.viewProjection(new Viewport(width, height)), camera, width, height, quads);
+        return new Sprites(placed, camera.viewProjection(new Viewport(width, height)), camera, width, height, quads, 1);
     }
 
     /** The labels drawn, in drawing order, with their boxes. */
@@ -128,8 +137,8 @@ public final class Sprites {
     private void draw(Item i, QuadRaster quads, int onTop) {
         double q = 1 / i.w();
         if (i.what() instanceof Billboard b) {
-            double w = b.sizedInPixels() ? b.width() : b.width() * i.pixelsPerUnit();
-            double h = b.sizedInPixels() ? b.height() : b.height() * i.pixelsPerUnit();
+            double w = b.sizedInPixels() ? b.width() * scale : b.width() * i.pixelsPerUnit();
+            double h = b.sizedInPixels() ? b.height() * scale : b.height() * i.pixelsPerUnit();
             // Billboards are scene content, fogged by their depth as OpenGL fogs every fragment; labels and
             // screen text are annotations, never fogged (docs/conventions.md, "Fog").
             int mode = (b.isBlended() ? QuadRaster.BLEND : QuadRaster.TEST) | QuadRaster.FOG | onTop;
@@ -138,7 +147,7 @@ public final class Sprites {
                     t.width(), t.height(), mode, 0xFFFFFFFF, QuadRaster.BILLBOARD);
         } else {
             Label l = (Label) i.what();
-            GlyphAtlas atlas = GlyphAtlas.of(l.font());
+            GlyphAtlas atlas = GlyphAtlas.of(scaled(l.font(), scale));
             String[] lines = l.text().split("\n", -1);
             int boxHeight = lines.length * atlas.lineHeight();
             // The box's bottom on the point, centred across it; whole pixels, so texels meet pixels.
@@ -146,24 +155,44 @@ public final class Sprites {
             int boxWidth = widest(atlas, lines);
             int left = (int) Math.round(i.x() - boxWidth / 2.0);
             int first = quads.count();
-            text(atlas, lines, left, top, boxWidth, 0.5, q, l.colour(), l.background(), onTop, quads);
+            text(atlas, lines, left, top, boxWidth, 0.5, q, l.colour(), l.background(), pad(scale), onTop, quads);
             labels.add(new Placed(l, i.object(), left, top, left + boxWidth, top + boxHeight, first, quads.count()));
         }
     }
 
-    /** Lays out {@code t} over a {@code width x height} frame into {@code quads}, on top. */
-    static void screenText(ScreenText t, int width, int height, QuadRaster quads) {
-        GlyphAtlas atlas = GlyphAtlas.of(t.font());
+    /**
+     * {@code font} at {@code scale} times its size, rounded to whole pixels (glyphs stay crisp, and one
+     * scale shares one atlas) and kept within the atlas's sizes.
+     */
+    static Font scaled(Font font, double scale) {
+        if (scale == 1) {
+            return font;
+        }
+        return font.deriveFont((float) Math.max(1, Math.min(GlyphAtlas.MAX_FONT_SIZE, Math.round(font.getSize2D() * scale))));
+    }
+
+    /** The backdrop's reach beyond its text at {@code scale}, whole pixels. */
+    private static int pad(double scale) {
+        return (int) Math.round(PAD * scale);
+    }
+
+    /**
+     * Lays out {@code t} over a {@code width x height} frame into {@code quads}, on top, its font and margin
+     * at {@code scale} (frame pixels per pixel of the API).
+     */
+    static void screenText(ScreenText t, int width, int height, QuadRaster quads, double scale) {
+        GlyphAtlas atlas = GlyphAtlas.of(scaled(t.font(), scale));
         String[] lines = t.text().split("\n", -1);
         int boxWidth = widest(atlas, lines);
         int boxHeight = lines.length * atlas.lineHeight();
         boolean right = t.corner() == ScreenText.Corner.TOP_RIGHT || t.corner() == ScreenText.Corner.BOTTOM_RIGHT;
         boolean bottom = t.corner() == ScreenText.Corner.BOTTOM_LEFT
                 || t.corner() == ScreenText.Corner.BOTTOM_RIGHT;
-        int left = right ? width - t.margin() - boxWidth : t.margin();
-        int top = bottom ? height - t.margin() - boxHeight : t.margin();
-        text(atlas, lines, left, top, boxWidth, right ? 1 : 0, 0, t.colour(), t.background(), QuadRaster.ON_TOP,
-                quads);
+        int margin = (int) Math.round(t.margin() * scale);
+        int left = right ? width - margin - boxWidth : margin;
+        int top = bottom ? height - margin - boxHeight : margin;
+        text(atlas, lines, left, top, boxWidth, right ? 1 : 0, 0, t.colour(), t.background(), pad(scale),
+                QuadRaster.ON_TOP, quads);
     }
 
     /** The width of the widest line, pixels. */
@@ -186,13 +215,14 @@ public final class Sprites {
 
     /**
      * The glyphs of {@code lines} in a box whose top-left pixel is (left, top), each line placed at
-     * {@code align} of the room the widest leaves it (0 left, 0.5 centred, 1 right), after the backdrop.
+     * {@code align} of the room the widest leaves it (0 left, 0.5 centred, 1 right), after the backdrop,
+     * which reaches {@code pad} pixels beyond the box.
      */
     private static void text(GlyphAtlas atlas, String[] lines, int left, int top, int boxWidth, double align,
-                             double q, int rgb, int background, int onTop, QuadRaster quads) {
+                             double q, int rgb, int background, int pad, int onTop, QuadRaster quads) {
         int lineHeight = atlas.lineHeight();
         if (background >>> 24 != 0) {
-            quads.add(left - PAD, top - PAD, left + boxWidth + PAD, top + lines.length * lineHeight + PAD, q, WHITE,
+            quads.add(left - pad, top - pad, left + boxWidth + pad, top + lines.length * lineHeight + pad, q, WHITE,
                     1, 0, 1, 1, QuadRaster.BLEND | QuadRaster.TINT | onTop, background, QuadRaster.OTHER);
         }
         int mode = QuadRaster.TEST | QuadRaster.TINT | onTop;

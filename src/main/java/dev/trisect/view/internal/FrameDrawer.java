@@ -95,6 +95,18 @@ final class FrameDrawer {
     }
 
     /**
+     * Frame pixels per logical pixel of the view for a frame {@code fw} wide, at least 1: the screen's
+     * scale times the render scale, so that labels, screen text, pixel-sized billboards and lines keep
+     * their size in Swing's pixels on a high-density screen; never below 1, so that below a render scale
+     * of 1 they are drawn with their whole size and magnified with the frame, rather than shrunk illegible.
+     */
+    double pixelScale(int fw) {
+        int w = state.viewWidth();
+        double s = w > 0 ? state.screenScale() * fw / w : 1;
+        return Math.max(1, Math.min(16, s));
+    }
+
+    /**
      * Moves the camera by the controls for the next frame, {@code dt} seconds after the last (with
      * {@code redraw} the last frame's camera), and makes it the view's current camera: the update hooks,
      * which run next, see the camera their frame is drawn with (a light that follows it is lit from there).
@@ -134,7 +146,7 @@ final class FrameDrawer {
             drawnScene = scene;
         }
         Scene.Snapshot snapshot = scene.capture();
-        DrawnFrame drawn = new DrawnFrame(snapshot, camera, fw, fh, back.draws)
+        DrawnFrame drawn = new DrawnFrame(snapshot, camera, fw, fh, back.draws, pixelScale(fw))
                 .withScreenText(scene.screenText());
         Draws draws = back.draws;
         if (!state.toolsOpen() && settings.view() != ViewKind.IMAGE) {

@@ -139,6 +139,7 @@ public final class ViewLifecycle {
         }
         double scale = view.getGraphicsConfiguration() == null ? 1
                 : view.getGraphicsConfiguration().getDefaultTransform().getScaleX();
+        state.screenScale(scale);
         state.viewSize((int) Math.round(view.getWidth() * scale), (int) Math.round(view.getHeight() * scale));
     }
 }

@@ -55,6 +55,8 @@ public final class ViewState {
     private volatile Camera current;
     /** View size in device pixels, width in the high half; 0 when hidden or minimized. */
     private volatile long viewSize;
+    /** Device pixels per logical (Swing) pixel of the view's screen: 2 on a high-density screen at 200 %. */
+    private volatile double screenScale = 1;
     private volatile Measurement measurement;
     private volatile Progress progress = new Progress(0, 0, 0);
     /** The pixel the inspector looks at, frame pixels x in the high half; -1 when the inspector is off. */
@@ -277,6 +279,16 @@ public final class ViewState {
     public void viewSize(int width, int height) {
         viewSize = ((long) Math.max(0, width) << 32) | Math.max(0, height);
         ChangeSignal.signal();
+    }
+
+    /** Sets the device pixels per logical pixel of the view's screen (1 when it does not say). */
+    public void screenScale(double scale) {
+        screenScale = Double.isFinite(scale) && scale > 0 ? scale : 1;
+    }
+
+    /** Device pixels per logical pixel of the view's screen. */
+    public double screenScale() {
+        return screenScale;
     }
 
     public int viewWidth() {
