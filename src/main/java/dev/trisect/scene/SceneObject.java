@@ -351,7 +351,9 @@ public final class SceneObject extends Node {
      * An object from a Wavefront OBJ file and the textures its MTL files name ({@code map_Kd}). A
      * material without a texture is its diffuse colour ({@code Kd}) where the MTL gives one, as
      * {@link Material#colour(int)}; with neither it gets the built-in UV grid (as the command line and
-     * the demo show such files), and {@code notes} hears of it. The object is named after the file.
+     * the demo show such files), and {@code notes} hears of it. The file's {@code l} elements are the
+     * object's {@link #lines()}, one pixel wide, each coloured by its material's {@code Kd} as the
+     * command line colours it. The object is named after the file.
      *
      * @param obj   the OBJ file
      * @param notes receives one-line remarks for the user (never errors; those are thrown)
@@ -401,6 +403,8 @@ public final class SceneObject extends Node {
         Mesh mesh = model.mesh();
         List<Material> materials = ObjMaterials.of(model, name, notes, placeholders);
         SceneObject o = new SceneObject(mesh, materials);
+        // The file's l elements, coloured by their material's Kd, as the command line draws them.
+        o.setLines(model.lines());
         o.setName(name);
         return o;
     }
