@@ -124,6 +124,9 @@ public record Camera(Vec3 eye, Vec3 target, Vec3 up, double fovY, double near, d
      * @param eye    camera position, world space
      * @param target point looked at, world space
      * @return the camera
+     * @throws IllegalArgumentException when a value breaks a rule of the constructor, naming it: among them
+     *                                  an eye on the target, and a camera looking straight down or up (+y is
+     *                                  then parallel to its view: give an up with {@link #looking(Vec3, Vec3, Vec3)})
      */
     public static Camera looking(Vec3 eye, Vec3 target) {
         return looking(eye, target, Vec3.UP);
