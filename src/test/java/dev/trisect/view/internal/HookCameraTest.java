@@ -12,6 +12,7 @@ import dev.trisect.scene.Scene;
 import dev.trisect.scene.SceneObject;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.AtomicLong;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -31,7 +32,7 @@ class HookCameraTest {
         Map<Long, Camera> seen = new ConcurrentHashMap<>();
         Map<Long, Camera> drawn = new ConcurrentHashMap<>();
         Camera set = Camera.looking(new Vec3(3, 1, 3), Vec3.ZERO);
-        long[] setBefore = {-1};
+        AtomicLong setBefore = new AtomicLong(-1);
         RenderLoop loop = new RenderLoop(state, new TripleBuffer(), () -> { }, 1);
         loop.listener(new RenderLoop.LoopListener() {
             @Override
@@ -47,7 +48,7 @@ class HookCameraTest {
             @Override
             public boolean update(double seconds, long frame) {
                 seen.put(frame, state.currentCamera());
-                if (frame == setBefore[0]) {
+                if (frame == setBefore.get()) {
                     state.camera(set);
                 }
                 return false;
@@ -64,7 +65,7 @@ class HookCameraTest {
                 waitFor("a frame for the drag", () -> drawn.size() > before && !state.input.pendingDrag());
             }
             long last = drawn.size();
-            setBefore[0] = last + 1;
+            setBefore.set(last + 1);
             state.demand.request();
             waitFor("the frame whose hook sets a camera", () -> drawn.containsKey(last + 1));
         } finally {
@@ -73,10 +74,10 @@ class HookCameraTest {
         }
         assertNotEquals(drawn.get(1L), drawn.get(2L), "the drag turned the camera");
         for (long f : drawn.keySet()) {
-            if (f != setBefore[0]) {
+            if (f != setBefore.get()) {
                 assertEquals(drawn.get(f), seen.get(f), "the camera a hook sees before frame " + f);
             }
         }
-        assertEquals(set, drawn.get(setBefore[0]), "a camera set in a hook is its frame's");
+        assertEquals(set, drawn.get(setBefore.get()), "a camera set in a hook is its frame's");
     }
 }
