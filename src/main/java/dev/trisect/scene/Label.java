@@ -156,4 +156,27 @@ public final class Label {
     public String toString() {
         return "Label(" + text + ")";
     }
+
+    /**
+     * Whether {@code o} is a label with the same text, point, font, colour, backdrop and placing: set
+     * again, an equal label is no change to its object.
+     *
+     * @param o another object
+     * @return true for an equal label
+     */
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof Label l && text.equals(l.text) && at.equals(l.at) && font.equals(l.font)
+                && colour == l.colour && background == l.background && onTop == l.onTop;
+    }
+
+    /**
+     * A hash of the values {@link #equals} compares.
+     *
+     * @return the hash
+     */
+    @Override
+    public int hashCode() {
+        return Objects.hash(text, at, font, colour, background, onTop);
+    }
 }

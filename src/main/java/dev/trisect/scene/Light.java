@@ -195,6 +195,9 @@ public final class Light extends Node {
     private void set(Values v) {
         LOCK.lock();
         try {
+            if (v.equals(values)) {
+                return;
+            }
             values = v;
             changed();
         } finally {

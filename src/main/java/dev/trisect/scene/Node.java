@@ -65,6 +65,10 @@ public abstract sealed class Node permits Group, SceneObject, Light {
         Mat4 m = transform.matrix();
         LOCK.lock();
         try {
+            if (transform.equals(this.transform)) {
+                // An equal value is no change: a hook or listener setting it every frame leaves a still view idle.
+                return;
+            }
             Group p = parent;
             // Its cause is built only for a message: built on every move, it took most of the move's time.
             checkWorld(this, p == null ? m : p.worldMatrix().mul(m), () -> "its transform " + transform);
@@ -93,6 +97,9 @@ public abstract sealed class Node permits Group, SceneObject, Light {
     public void setVisible(boolean visible) {
         LOCK.lock();
         try {
+            if (visible == this.visible) {
+                return;
+            }
             this.visible = visible;
             changed();
         } finally {

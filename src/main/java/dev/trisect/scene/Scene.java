@@ -104,7 +104,8 @@ public final class Scene extends Group {
 
     /**
      * A number that grows with every change to this scene that a frame would show: a node added,
-     * removed, moved or shown or hidden, an object given other materials, anywhere in the tree. A view
+     * removed, moved or shown or hidden, an object given other materials, anywhere in the tree. A value
+     * set equal to the one in force (the same transform, light values, fog, screen text) is no change. A view
      * draws a new frame only when it grew (or something else changed), so it idles while the scene
      * stands still. Pixels written into a texture in place are not counted (the texture is not part
      * of the graph): ask a view for a frame then ({@code TrisectView.requestFrame()}).
@@ -198,6 +199,9 @@ public final class Scene extends Group {
     public void setFog(Fog fog) {
         LOCK.lock();
         try {
+            if (java.util.Objects.equals(fog, this.fog)) {
+                return;
+            }
             this.fog = fog;
             changed();
         } finally {
@@ -226,6 +230,9 @@ public final class Scene extends Group {
         List<ScreenText> copy = copyOf(texts, "texts");
         LOCK.lock();
         try {
+            if (copy.equals(this.screenText)) {
+                return;
+            }
             this.screenText = copy;
             changed();
         } finally {

@@ -139,6 +139,9 @@ public final class SceneObject extends Node {
         List<Billboard> copy = copyOf(billboards, "billboards");
         LOCK.lock();
         try {
+            if (copy.equals(this.billboards)) {
+                return;
+            }
             this.billboards = copy;
             changed();
         } finally {
@@ -165,6 +168,9 @@ public final class SceneObject extends Node {
         List<Label> copy = copyOf(labels, "labels");
         LOCK.lock();
         try {
+            if (copy.equals(this.labels)) {
+                return;
+            }
             this.labels = copy;
             changed();
         } finally {
@@ -307,7 +313,12 @@ public final class SceneObject extends Node {
     private void change(java.util.function.UnaryOperator<Look> next) {
         LOCK.lock();
         try {
-            look = next.apply(look);
+            Look changed = next.apply(look);
+            if (changed.equals(look)) {
+                // The same mesh, materials, lines and style: no change (a setter given what is in force).
+                return;
+            }
+            look = changed;
             changed();
         } finally {
             LOCK.unlock();

@@ -170,4 +170,27 @@ public final class ScreenText {
     public int margin() {
         return margin;
     }
+
+    /**
+     * Whether {@code o} is a screen text with the same corner, text, font, colour, backdrop and margin:
+     * set again, an equal text is no change to the scene.
+     *
+     * @param o another object
+     * @return true for an equal screen text
+     */
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof ScreenText t && corner == t.corner && text.equals(t.text) && font.equals(t.font)
+                && colour == t.colour && background == t.background && margin == t.margin;
+    }
+
+    /**
+     * A hash of the values {@link #equals} compares.
+     *
+     * @return the hash
+     */
+    @Override
+    public int hashCode() {
+        return Objects.hash(corner, text, font, colour, background, margin);
+    }
 }
