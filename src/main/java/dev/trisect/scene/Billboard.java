@@ -167,4 +167,27 @@ public final class Billboard {
     public boolean isBlended() {
         return blended;
     }
+
+    /**
+     * Whether {@code o} is a billboard of the same texture (the same {@code Texture} object), point, size,
+     * sizing and placing: set again, an equal billboard is no change to its object.
+     *
+     * @param o another object
+     * @return true for an equal billboard
+     */
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof Billboard b && texture == b.texture && at.equals(b.at) && width == b.width
+                && height == b.height && pixels == b.pixels && onTop == b.onTop;
+    }
+
+    /**
+     * A hash of the values {@link #equals} compares.
+     *
+     * @return the hash
+     */
+    @Override
+    public int hashCode() {
+        return Objects.hash(System.identityHashCode(texture), at, width, height, pixels, onTop);
+    }
 }

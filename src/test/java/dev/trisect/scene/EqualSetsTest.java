@@ -9,6 +9,7 @@ import dev.trisect.mesh.LineShapes;
 import dev.trisect.mesh.Primitives;
 import dev.trisect.render.Colour;
 import dev.trisect.render.Fog;
+import dev.trisect.texture.Texture;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 
@@ -16,7 +17,8 @@ import org.junit.jupiter.api.Test;
  * Setting a value equal to the one in force is no change ({@link Scene#version()} stays, so a view
  * draws no frame for it), as a JavaFX property ignores an equal value: a frame listener or hook that
  * sets the same screen text, light direction or transform every frame leaves a still view idle. A
- * different value is still a change. Screen texts and labels built anew with equal contents are equal.
+ * different value is still a change. Screen texts, labels and billboards built anew with equal contents
+ * are equal.
  */
 class EqualSetsTest {
     private interface Change {
@@ -46,6 +48,8 @@ class EqualSetsTest {
         scene.setFog(Fog.linear(1, 10, Colour.grey(0.5)));
         box.setLabels(List.of(Label.of("box", new Vec3(0, 1, 0)).withColour(0xFFFF00)));
         scene.setScreenText(List.of(ScreenText.of(ScreenText.Corner.TOP_LEFT, "60 fps")));
+        Texture pin = Texture.solid("pin", 0xFFFF0000);
+        box.setBillboards(List.of(Billboard.pixels(pin, new Vec3(0, 2, 0), 16, 16)));
 
         same(scene, "a transform", () -> box.setTransform(Transform.translation(1, 2, 3)));
         same(scene, "visibility", () -> box.setVisible(true));
@@ -59,6 +63,8 @@ class EqualSetsTest {
         same(scene, "fog", () -> scene.setFog(Fog.linear(1, 10, Colour.grey(0.5))));
         same(scene, "labels built anew", () -> box.setLabels(List.of(Label.of("box", new Vec3(0, 1, 0))
                 .withColour(0xFFFF00))));
+        same(scene, "billboards built anew", () -> box.setBillboards(List.of(Billboard.pixels(pin, new Vec3(0, 2, 0),
+                16, 16))));
         same(scene, "screen text built anew", () -> scene.setScreenText(List.of(ScreenText.of(
                 ScreenText.Corner.TOP_LEFT, "60 fps"))));
 
@@ -73,6 +79,8 @@ class EqualSetsTest {
         differs(scene, "attenuation", () -> lamp.setAttenuation(1, 0.5, 0.5));
         differs(scene, "fog", () -> scene.setFog(null));
         differs(scene, "labels", () -> box.setLabels(List.of(Label.of("box", new Vec3(0, 1, 0)))));
+        differs(scene, "billboards", () -> box.setBillboards(List.of(Billboard.pixels(pin, new Vec3(0, 2, 0), 16,
+                17))));
         differs(scene, "screen text", () -> scene.setScreenText(List.of(ScreenText.of(
                 ScreenText.Corner.TOP_LEFT, "59 fps"))));
     }
