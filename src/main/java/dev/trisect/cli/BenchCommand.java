@@ -27,16 +27,13 @@ import dev.trisect.render.RenderSettings;
 import dev.trisect.scene.Camera;
 import dev.trisect.texture.Texture;
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
-import java.util.concurrent.TimeUnit;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
+import java.util.Map;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -364,8 +361,6 @@ final class BenchCommand extends SceneCommand {
         };
     }
 
-    private static final Pattern GLREF_OUT = Pattern.compile("ms_per_frame\\s+([0-9.]+)");
-
     /** glref's row: its mean frame time and, when it drew lines, what they cost (NaN otherwise). */
     private String glrefRow(double ms, double linesMs, int threads) {
         if (json) {
@@ -395,47 +390,27 @@ final class BenchCommand extends SceneCommand {
         if (!camera.up().normalize().equals(Vec3.UP)) {
             common.note("glref always uses up = 0,1,0; its frame differs from ours for --up " + camera.up());
         }
-        Path dir = Files.createTempDirectory("trisect-bench");
-        try {
-            Path obj = dir.resolve("scene.obj");
-            List<Path> maps = ObjWriter.write(obj, scene.mesh(), List.of(Arrays.stream(scene.textureArray())
-                    .map(t -> texture).toArray(Texture[]::new)), scene.lines());
-            List<String> cmd = new ArrayList<>(List.of(glref.toString(), obj.toString(), maps.get(0).toString(),
-                    dir.resolve("gl.ppm").toString(), Integer.toString(frame.size.width()),
-                    Integer.toString(frame.size.height())));
-            for (Vec3 v : List.of(camera.eye(), camera.target())) {
-                cmd.addAll(List.of(Double.toString(v.x()), Double.toString(v.y()), Double.toString(v.z())));
-            }
-            cmd.addAll(List.of(Double.toString(camera.fovY()), Double.toString(camera.near()),
-                    Double.toString(camera.far()), frame.cull.name().toLowerCase(Locale.ROOT),
-                    Integer.toString(frames + warmup)));
-            ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true);
-            pb.environment().put("LP_NUM_THREADS", Integer.toString(threads));
-            pb.environment().put("GLREF_FILTER", path.filter.id());
-            pb.environment().putAll(light.glrefEnvironment());
-            pb.environment().put("GLREF_LINE_WIDTH", Integer.toString(lineWidth));
-            Process p;
-            try {
-                p = pb.start();
-            } catch (IOException e) {
-                throw new InputException(glref + ": cannot run: " + e.getMessage(), e);
-            }
-            String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
-            if (!p.waitFor(10, TimeUnit.MINUTES) || p.exitValue() != 0) {
-                throw new InputException(glref + ": failed: " + output.strip().replace('\n', ' '));
-            }
-            Matcher m = GLREF_OUT.matcher(output);
-            if (!m.find()) {
-                throw new InputException(glref + ": printed no ms_per_frame: " + output.strip().replace('\n', ' '));
-            }
-            return Double.parseDouble(m.group(1));
-        } finally {
-            try (var files = Files.list(dir)) {
-                for (Path f : files.toList()) {
-                    Files.deleteIfExists(f);
+        Map<String, String> environment = new HashMap<>();
+        environment.put("LP_NUM_THREADS", Integer.toString(threads));
+        environment.put("GLREF_FILTER", path.filter.id());
+        environment.putAll(light.glrefEnvironment());
+        environment.put("GLREF_LINE_WIDTH", Integer.toString(lineWidth));
+        try (GlrefRun run = new GlrefRun(glref)) {
+            return run.meanMs(dir -> {
+                Path obj = dir.resolve("scene.obj");
+                List<Path> maps = ObjWriter.write(obj, scene.mesh(), List.of(Arrays.stream(scene.textureArray())
+                        .map(t -> texture).toArray(Texture[]::new)), scene.lines());
+                List<String> args = new ArrayList<>(List.of(obj.toString(), maps.get(0).toString(),
+                        dir.resolve("gl.ppm").toString(), Integer.toString(frame.size.width()),
+                        Integer.toString(frame.size.height())));
+                for (Vec3 v : List.of(camera.eye(), camera.target())) {
+                    args.addAll(List.of(Double.toString(v.x()), Double.toString(v.y()), Double.toString(v.z())));
                 }
-            }
-            Files.deleteIfExists(dir);
+                args.addAll(List.of(Double.toString(camera.fovY()), Double.toString(camera.near()),
+                        Double.toString(camera.far()), frame.cull.name().toLowerCase(Locale.ROOT),
+                        Integer.toString(frames + warmup)));
+                return args;
+            }, environment);
         }
     }
 }

@@ -177,10 +177,13 @@ class ProcessRobustnessTest {
         // Held until released, 60 s at most, so that a bench printing only at its end still ends.
         // It says when it starts: the test interrupts only then, while the run waits for it.
         Path started = dir.resolve("started");
-        Files.writeString(glref, "#!/bin/sh\n: > " + started + "\nfor i in $(seq 600); do [ -e " + dir.resolve("release")
+        Files.writeString(glref, "#!/bin/sh\necho $$ > " + started + "\nfor i in $(seq 600); do [ -e " + dir.resolve("release")
                 + " ] && break; sleep 0.1; done\necho 'ms_per_frame 1.0'\n");
         glref.toFile().setExecutable(true);
-        Process p = java(dir, List.of("-Djava.awt.headless=true"), "dev.trisect.Trisect", "bench", "--scene", "floor",
+        // The run's own temporary folder, to see that the scene exported for glref does not outlive it.
+        Path tmp = Files.createDirectory(dir.resolve("tmp"));
+        Process p = java(dir, List.of("-Djava.awt.headless=true", "-Djava.io.tmpdir=" + tmp), "dev.trisect.Trisect",
+                "bench", "--scene", "floor",
                 "--size", "16x16", "--frames", "2", "--warmup", "0", "--threads", "1", "--modes", "affine",
                 "--glref", glref.toString());
         var stdout = new java.io.BufferedReader(new java.io.InputStreamReader(p.getInputStream(),
@@ -207,6 +210,15 @@ class ProcessRobustnessTest {
             assertEquals("trisect: interrupted after measuring 1 of 2 paths: their rows are printed, the others are "
                     + "missing", err.strip());
             assertEquals(null, stdout.readLine(), "nothing more on standard output");
+            // Before, the exported scene stayed in the temporary folder and glref ran on (found by the fault probe).
+            try (Stream<Path> left = Files.list(tmp)) {
+                assertEquals(List.of(), left.toList(), "the temporary files of the glref run are deleted");
+            }
+            long glrefPid = Long.parseLong(Files.readString(started).strip());
+            for (int i = 0; i < 100 && ProcessHandle.of(glrefPid).map(ProcessHandle::isAlive).orElse(false); i++) {
+                Thread.sleep(50);
+            }
+            assertFalse(ProcessHandle.of(glrefPid).map(ProcessHandle::isAlive).orElse(false), "glref was stopped");
         } finally {
             Files.writeString(dir.resolve("release"), "");
             p.destroyForcibly();
