@@ -15,8 +15,8 @@ import picocli.CommandLine.Option;
 
 /** {@code trisect export}: a scene as OBJ + MTL + PPM textures (PAM where a texture has alpha), for rendering it elsewhere. */
 @Command(name = "export", sortOptions = false, mixinStandardHelpOptions = true,
-        description = {"Write a scene as Wavefront OBJ with an MTL file and one PPM texture per material (PAM, "
-                + "with its alpha, where a texture has alpha), and "
+        description = {"Write a scene as Wavefront OBJ with an MTL file and one PPM per texture, shared by the "
+                + "materials that use it (PAM, with its alpha, where a texture has alpha), and "
                 + "print its camera, so another renderer (tools/glref, say) can draw the same frame."})
 final class ExportCommand implements Callable<Integer> {
     @Mixin
@@ -98,10 +98,12 @@ final class ExportCommand implements Callable<Integer> {
                 written -> {
                     List<String> lines = new ArrayList<>();
                     if (written) {
+                        // Each texture file once: materials that share a texture share its file.
+                        List<Path> files = maps.stream().distinct().toList();
                         lines.add(String.format("wrote %s (%s, %s%s: %s)", to,
                                 Counts.of(scene.mesh().triangleCount(), "triangle"),
                                 scene.lines().isEmpty() ? "" : Counts.of(scene.lines().segmentCount(), "line segment")
-                                        + ", ", Counts.of(maps.size(), "material"), maps));
+                                        + ", ", Counts.of(maps.size(), "material"), files));
                     }
                     lines.addAll(view);
                     return lines;

@@ -12,10 +12,10 @@ import java.nio.file.Path;
 import java.util.List;
 
 /**
- * Writes a mesh as Wavefront OBJ with an MTL file and one texture file per material (binary PPM, or
- * PAM with tuple type RGB_ALPHA for a texture with alpha below 255 anywhere, so that a cut-out or
- * translucent texture reads back as it was), so that
- * other renderers (OpenGL through tools/glref, say) can draw exactly the same triangles.
+ * Writes a mesh as Wavefront OBJ with an MTL file and one file per texture, shared by the materials
+ * that use it (binary PPM, or PAM with tuple type RGB_ALPHA for a texture with alpha below 255
+ * anywhere, so that a cut-out or translucent texture reads back as it was), so that other renderers
+ * (OpenGL through tools/glref, say) can draw exactly the same triangles.
  * Triangles are written in order, so triangle indices are preserved, each corner as {@code v},
  * {@code v/vt}, {@code v/vt/vn} or {@code v//vn} after what it has; the mesh's normals as {@code vn}
  * (a corner without one is written without, and a reader takes the face normal there, as Trisect does).
@@ -31,7 +31,7 @@ public final class ObjWriter {
      * @param obj      the OBJ file to write; the MTL and textures go beside it, named after it
      * @param mesh     positions, UVs and normals, written as floats exactly (shortest round-trip decimal)
      * @param textures one per material
-     * @return the texture files written, by material
+     * @return each material's texture file (materials sharing a texture share its file, written once)
      * @throws dev.trisect.base.InputException when a file cannot be written; then none of them is
      *                                         (they are written as one {@link OutputBatch})
      */
@@ -69,9 +69,12 @@ public final class ObjWriter {
         List<Path> files = files(obj, mesh, textures);
         Path mtl = files.get(1);
         Path[] maps = files.subList(2, files.size()).toArray(Path[]::new);
+        java.util.Set<Path> written = new java.util.HashSet<>();
         for (int m = 0; m < maps.length; m++) {
             Texture t = textures.get(m);
-            ImageFiles.write(batch, maps[m], t.width(), t.height(), t.argb());
+            if (written.add(maps[m])) {
+                ImageFiles.write(batch, maps[m], t.width(), t.height(), t.argb());
+            }
         }
         writeText(batch, mtl, w -> {
             for (int m = 0; m < maps.length; m++) {
@@ -172,9 +175,10 @@ public final class ObjWriter {
 
     /**
      * The files {@link #write} writes for {@code obj}, known before writing (so that a command can check
-     * them against its inputs first): the OBJ, its MTL beside it, then one texture per material, in the
+     * them against its inputs first): the OBJ, its MTL beside it, then each material's texture file, in the
      * mesh's material order, named after the OBJ and the material: {@code .pam} for a texture with
-     * alpha ({@link Texture#alpha()} not {@code OPAQUE}), else {@code .ppm}.
+     * alpha ({@link Texture#alpha()} not {@code OPAQUE}), else {@code .ppm}. Materials that share one
+     * {@link Texture} (the same object) share the file of the first of them, written once.
      *
      * @param obj      the OBJ file to write
      * @param mesh     the mesh, for its material names
@@ -186,9 +190,18 @@ public final class ObjWriter {
         String base = obj.getFileName().toString().replaceFirst("\\.[^.]*$", "");
         List<Path> files = new java.util.ArrayList<>(List.of(obj.toAbsolutePath(), dir.resolve(base + ".mtl")));
         java.util.Set<String> taken = new java.util.HashSet<>();
+        // Materials that share one texture share its file: a model whose 200 materials all name one
+        // 4096x4096 map wrote 200 copies of it, 10 GB.
+        java.util.Map<Texture, Path> shared = new java.util.IdentityHashMap<>();
         for (int m = 0; m < mesh.materialNames().size(); m++) {
-            String extension = textures.get(m).alpha() == Texture.Alpha.OPAQUE ? ".ppm" : ".pam";
-            files.add(dir.resolve(unique(base + "-" + safe(mesh.materialNames().get(m)), taken) + extension));
+            Texture t = textures.get(m);
+            Path file = shared.get(t);
+            if (file == null) {
+                String extension = t.alpha() == Texture.Alpha.OPAQUE ? ".ppm" : ".pam";
+                file = dir.resolve(unique(base + "-" + safe(mesh.materialNames().get(m)), taken) + extension);
+                shared.put(t, file);
+            }
+            files.add(file);
         }
         return files;
     }

@@ -39,6 +39,40 @@ class ObjWriterTest {
     }
 
     /**
+     * Materials that share one texture share its file, written once: a model whose 200 materials named
+     * one 4096x4096 map was exported as 200 copies of it (10 GB; found by the fault probe). Reading the
+     * export back gives each material its texels.
+     */
+    @Test
+    void materialsSharingATextureShareItsFile() throws IOException {
+        MeshBuilder b = new MeshBuilder();
+        int t = b.uv(0.5, 0.5);
+        for (String name : new String[] {"a", "b", "c", "d"}) {
+            b.material(name);
+            b.triangle(b.position(0, 0, 0), b.position(1, 0, 0), b.position(0, 1, 0), t, t, t);
+        }
+        Texture shared = new Texture("shared", 2, 1, new int[] {0xFF102030, 0xFF405060});
+        // c's texture has the same texels as the shared one but is another texture: a file of its own.
+        Texture twin = new Texture("twin", 2, 1, new int[] {0xFF102030, 0xFF405060});
+        List<Texture> textures = List.of(shared, shared, twin, shared);
+        Path obj = dir.resolve("s.obj");
+        List<Path> maps = ObjWriter.write(obj, b.build(), textures);
+        assertEquals(List.of("s-a.ppm", "s-a.ppm", "s-c.ppm", "s-a.ppm"),
+                maps.stream().map(p -> p.getFileName().toString()).toList());
+        assertEquals(maps, ObjWriter.files(obj, b.build(), textures).subList(2, 6));
+        try (var files = Files.list(dir)) {
+            assertEquals(List.of("s-a.ppm", "s-c.ppm", "s.mtl", "s.obj"),
+                    files.map(p -> p.getFileName().toString()).sorted().toList());
+        }
+        assertEquals("newmtl a\nmap_Kd s-a.ppm\nnewmtl b\nmap_Kd s-a.ppm\nnewmtl c\nmap_Kd s-c.ppm\nnewmtl d\n"
+                + "map_Kd s-a.ppm\n", Files.readString(dir.resolve("s.mtl")));
+        SceneAsset back = SceneLoader.load(obj, null, note -> { });
+        for (int m = 0; m < textures.size(); m++) {
+            assertArrayEquals(textures.get(m).argb(), back.textures().get(m).argb());
+        }
+    }
+
+    /**
      * A texture with alpha (a cut-out and a translucent one) is written as a PAM with its alpha, an
      * opaque one as a PPM, and loading the OBJ back gives every texel as it was, alpha included: an
      * exported scene's transparency survives (a PPM would have made both opaque).
