@@ -28,7 +28,7 @@ final class FrameOptions {
     String scene;
 
     @Option(names = "--texture", paramLabel = "FILE",
-            description = "Texture for every material of the OBJ: PNG, JPEG, BMP, GIF, TGA, PPM or PAM "
+            description = "Texture for every material of the OBJ: PNG, JPEG, BMP, GIF, TGA, PBM, PGM, PPM or PAM "
                     + "(default: the OBJ's map_Kd textures).")
     Path texture;
 

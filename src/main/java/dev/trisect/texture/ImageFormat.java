@@ -13,6 +13,9 @@ enum ImageFormat {
     GIF("GIF", "gif"),
     TGA("TGA", null),
     PPM("PPM", null),
+    /** Binary greymap {@code P5} and bitmap {@code P4}. */
+    PGM("PGM", null),
+    PBM("PBM", null),
     PAM("PAM", null),
     /** Plain (ASCII) Netpbm: bitmap {@code P1}, greymap {@code P2}, pixmap {@code P3}. */
     PLAIN_PBM("plain PBM", null),
@@ -20,8 +23,9 @@ enum ImageFormat {
     PLAIN_PPM("plain PPM", null);
 
     /** What every "unsupported format" message lists. */
-    static final String SUPPORTED = "PNG, JPEG, BMP, GIF, TGA (named *.tga), binary PPM (P6), plain PBM, PGM "
-            + "and PPM (P1, P2, P3) and PAM (P7, tuple type RGB or RGB_ALPHA)";
+    static final String SUPPORTED = "PNG, JPEG, BMP, GIF, TGA (named *.tga), PBM, PGM and PPM, plain or binary "
+            + "(P1 to P6), and PAM (P7, tuple type RGB, RGB_ALPHA, GRAYSCALE, GRAYSCALE_ALPHA, BLACKANDWHITE or "
+            + "BLACKANDWHITE_ALPHA)";
 
     /** Enough leading bytes to recognise every format (and to hold a whole TGA header). */
     static final int HEAD_BYTES = 18;
@@ -61,6 +65,10 @@ enum ImageFormat {
                     return PLAIN_PGM;
                 case '3':
                     return PLAIN_PPM;
+                case '4':
+                    return PBM;
+                case '5':
+                    return PGM;
                 case '6':
                     return PPM;
                 case '7':
@@ -76,11 +84,11 @@ enum ImageFormat {
     }
 
     /**
-     * For a file that is not supported but is a Netpbm or PFM file of another kind, the magic number
-     * ({@code P4}, {@code P5}, {@code PF}, {@code Pf}) to name in the message; otherwise null.
+     * For a file that is not supported but is a Netpbm file of another kind (a float map, {@code PF} or
+     * {@code Pf}), the magic number to name in the message; otherwise null.
      */
     static String otherNetpbmMagic(byte[] head, int length) {
-        if (length >= 3 && head[0] == 'P' && "45Ff".indexOf(head[1]) >= 0 && isWhitespace(head[2])) {
+        if (length >= 3 && head[0] == 'P' && "Ff".indexOf(head[1]) >= 0 && isWhitespace(head[2])) {
             return "P" + (char) head[1];
         }
         return null;

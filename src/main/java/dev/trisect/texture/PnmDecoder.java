@@ -8,9 +8,11 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 
 /**
- * Reads binary PPM ({@code P6}) and PAM ({@code P7}, tuple types {@code RGB} and {@code RGB_ALPHA}),
- * 8 or 16 bits a sample (any maxval 1..65535), and plain (ASCII) PBM, PGM and PPM ({@code P1},
- * {@code P2}, {@code P3}), as the Netpbm specifications describe them.
+ * Reads binary PBM, PGM and PPM ({@code P4}, {@code P5}, {@code P6}) and PAM ({@code P7}, tuple types
+ * {@code RGB}, {@code GRAYSCALE} and {@code BLACKANDWHITE}, each also with {@code _ALPHA}), 8 or 16 bits
+ * a sample (any maxval 1..65535), and plain (ASCII) PBM, PGM and PPM ({@code P1}, {@code P2},
+ * {@code P3}), as the Netpbm specifications describe them. A grey sample g is the colour (g, g, g); a
+ * bitmap's 1 is black in PBM and white in PAM's {@code BLACKANDWHITE}, as the specifications say.
  *
  * <p>Trisect decodes these itself rather than through TwelveMonkeys' PNM plugin. Its PAM header parser
  * (3.13.1) rejects valid headers: more than one space between keyword and value, and a missing
@@ -42,31 +44,36 @@ final class PnmDecoder {
         this.label = label;
     }
 
-    /** The header fields that matter; {@code channels} is 1 (grey or bits), 3 (RGB) or 4 (RGB plus alpha). */
+    /** The header fields that matter; {@code channels}: 1 grey or bits, 2 grey and alpha, 3 RGB, 4 RGB and alpha. */
     private record Header(long width, long height, int maxval, int channels) {
         int bytesPerSample() {
             return maxval < 256 ? 1 : 2;
         }
     }
 
-    /** Reads a whole PPM, PAM or plain PBM, PGM or PPM file (format as detected from its magic number). */
+    /** Reads a whole PBM, PGM, PPM (binary or plain) or PAM file (format as detected from its magic number). */
     static Texture read(Path file, String name, ImageFormat format) throws IOException {
         long fileSize = Files.size(file);
         try (InputStream raw = Files.newInputStream(file)) {
             PnmDecoder decoder = new PnmDecoder(new BufferedInputStream(raw, 1 << 16), name, format.label);
             Header header = switch (format) {
                 case PPM -> decoder.readPpmHeader('6', 3);
+                case PGM -> decoder.readPpmHeader('5', 1);
+                case PBM -> decoder.readPbmHeader('4');
                 case PAM -> decoder.readPamHeader();
-                case PLAIN_PBM -> decoder.readPbmHeader();
+                case PLAIN_PBM -> decoder.readPbmHeader('1');
                 case PLAIN_PGM -> decoder.readPpmHeader('2', 1);
                 default -> decoder.readPpmHeader('3', 3);
             };
-            boolean plain = format != ImageFormat.PPM && format != ImageFormat.PAM;
+            boolean plain = format == ImageFormat.PLAIN_PBM || format == ImageFormat.PLAIN_PGM
+                    || format == ImageFormat.PLAIN_PPM;
             TextureReader.checkSize(name, format.label, header.width, header.height);
             // Checked before allocating the texels, so a truncated file claiming a large size fails fast.
-            // A plain sample takes at least one byte, and but for bits one separator too.
+            // A plain sample takes at least one byte, and but for bits one separator too; a binary bitmap's
+            // rows are packed 8 texels a byte.
             long samples = header.width * header.height * header.channels;
-            long needed = !plain ? samples * header.bytesPerSample()
+            long needed = format == ImageFormat.PBM ? (header.width + 7) / 8 * header.height
+                    : !plain ? samples * header.bytesPerSample()
                     : format == ImageFormat.PLAIN_PBM ? samples : 2 * samples - 1;
             long available = fileSize - decoder.position;
             if (available < needed) {
@@ -75,11 +82,11 @@ final class PnmDecoder {
             }
             return plain ? new PlainSamples(decoder.in, header.maxval, format == ImageFormat.PLAIN_PBM,
                     decoder::error).texture(name, (int) header.width, (int) header.height, header.channels)
-                    : decoder.readPixels(header);
+                    : format == ImageFormat.PBM ? decoder.readBits(header) : decoder.readPixels(header);
         }
     }
 
-    /** The header of {@code P6} (binary), {@code P2} or {@code P3} (plain): width, height and maxval. */
+    /** The header of {@code P5}, {@code P6} (binary), {@code P2} or {@code P3} (plain): width, height and maxval. */
     private Header readPpmHeader(char magic, int channels) throws IOException {
         expectMagic(magic);
         long width = readNumber("width");
@@ -89,9 +96,9 @@ final class PnmDecoder {
         return new Header(width, height, checkMaxval(maxval), channels);
     }
 
-    /** The header of a plain bitmap, {@code P1}: width and height; its samples are bits (maxval 1). */
-    private Header readPbmHeader() throws IOException {
-        expectMagic('1');
+    /** The header of a bitmap, {@code P1} (plain) or {@code P4} (binary): width and height; its samples are bits. */
+    private Header readPbmHeader(char magic) throws IOException {
+        expectMagic(magic);
         long width = readNumber("width");
         long height = readNumber("height");
         return new Header(width, height, 1, 1);
@@ -143,22 +150,28 @@ final class PnmDecoder {
                 throw error("corrupt header: no " + required[i] + " line");
             }
         }
-        // TUPLTYPE is optional; without it, depth 3 and 4 can only sensibly be RGB and RGB_ALPHA.
-        String type = tupleType != null ? tupleType : depth == 3 ? "RGB" : depth == 4 ? "RGB_ALPHA" : null;
+        // TUPLTYPE is optional; without it, depth 1 to 4 can only sensibly be these.
+        String[] byDepth = {null, "GRAYSCALE", "GRAYSCALE_ALPHA", "RGB", "RGB_ALPHA"};
+        String type = tupleType != null ? tupleType : depth >= 1 && depth <= 4 ? byDepth[(int) depth] : null;
         if (type == null) {
-            throw error("unsupported PAM: DEPTH " + depth + " without a TUPLTYPE (supported: RGB with "
-                    + "DEPTH 3, RGB_ALPHA with DEPTH 4)");
+            throw error("unsupported: DEPTH " + depth + " without a TUPLTYPE (supported: DEPTH 1 to 4, taken as "
+                    + "GRAYSCALE, GRAYSCALE_ALPHA, RGB and RGB_ALPHA)");
         }
         int channels;
         switch (type) {
+            case "GRAYSCALE", "BLACKANDWHITE" -> channels = 1;
+            case "GRAYSCALE_ALPHA", "BLACKANDWHITE_ALPHA" -> channels = 2;
             case "RGB" -> channels = 3;
             case "RGB_ALPHA" -> channels = 4;
-            default -> throw error("unsupported PAM tuple type '" + printable(type)
-                    + "' (supported: RGB and RGB_ALPHA)");
+            default -> throw error("unsupported tuple type '" + printable(type) + "' (supported: RGB, RGB_ALPHA, "
+                    + "GRAYSCALE, GRAYSCALE_ALPHA, BLACKANDWHITE and BLACKANDWHITE_ALPHA)");
         }
         if (depth != channels) {
             throw error("corrupt header: tuple type " + type + " needs DEPTH " + channels + ", the header says "
                     + depth);
+        }
+        if (type.startsWith("BLACKANDWHITE") && maxval != 1) {
+            throw error("corrupt header: tuple type " + type + " needs MAXVAL 1, the header says " + maxval);
         }
         return new Header(width, height, checkMaxval(maxval), channels);
     }
@@ -178,7 +191,6 @@ final class PnmDecoder {
         byte[] row = new byte[width * header.channels * bytesPerSample];
         int[] argb = new int[width * height];
         int[] sample = new int[4];
-        sample[3] = 255; // opaque where the format has no alpha
         for (int y = 0; y < height; y++) {
             if (in.readNBytes(row, 0, row.length) < row.length) {
                 throw error("truncated: the pixel data ends in row " + y + " of " + height);
@@ -194,7 +206,27 @@ final class PnmDecoder {
                     }
                     sample[c] = toByte[value];
                 }
-                argb[y * width + x] = sample[3] << 24 | sample[0] << 16 | sample[1] << 8 | sample[2];
+                argb[y * width + x] = header.channels >= 3
+                        ? (header.channels == 4 ? sample[3] : 255) << 24 | sample[0] << 16 | sample[1] << 8 | sample[2]
+                        : (header.channels == 2 ? sample[1] : 255) << 24 | sample[0] * 0x010101;
+            }
+        }
+        return new Texture(name, width, height, argb);
+    }
+
+    /** A binary bitmap's texels: rows of 8 texels a byte, the first in the high bit, 1 black and 0 white. */
+    private Texture readBits(Header header) throws IOException {
+        int width = (int) header.width;
+        int height = (int) header.height;
+        byte[] row = new byte[(width + 7) / 8];
+        int[] argb = new int[width * height];
+        for (int y = 0; y < height; y++) {
+            if (in.readNBytes(row, 0, row.length) < row.length) {
+                throw error("truncated: the pixel data ends in row " + y + " of " + height);
+            }
+            for (int x = 0; x < width; x++) {
+                boolean black = (row[x >> 3] >> (7 - (x & 7)) & 1) != 0;
+                argb[y * width + x] = black ? 0xFF000000 : 0xFFFFFFFF;
             }
         }
         return new Texture(name, width, height, argb);

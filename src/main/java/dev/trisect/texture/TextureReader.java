@@ -19,10 +19,11 @@ import javax.imageio.stream.FileImageInputStream;
 import javax.imageio.stream.ImageInputStream;
 
 /**
- * Reads texture image files: PNG, JPEG, BMP, GIF (first frame), TGA, binary PPM ({@code P6}, 8 or 16
- * bits a sample), plain (ASCII) PBM, PGM and PPM ({@code P1}, {@code P2}, {@code P3}, as tutorials and
- * ray tracers write them; any maxval up to 65535) and PAM ({@code P7}, tuple types {@code RGB} and
- * {@code RGB_ALPHA}).
+ * Reads texture image files: PNG, JPEG, BMP, GIF (first frame), TGA, binary PBM, PGM and PPM
+ * ({@code P4}, {@code P5}, {@code P6}; 8 or 16 bits a sample), plain (ASCII) PBM, PGM and PPM
+ * ({@code P1}, {@code P2}, {@code P3}, as tutorials and ray tracers write them; any maxval up to 65535)
+ * and PAM ({@code P7}, tuple types {@code RGB}, {@code RGB_ALPHA}, {@code GRAYSCALE},
+ * {@code GRAYSCALE_ALPHA}, {@code BLACKANDWHITE} and {@code BLACKANDWHITE_ALPHA}).
  *
  * <p>The format is recognised from the file's first bytes, not its name, except TGA, which has no magic
  * number and is recognised by the name ending in {@code .tga}. PNG, JPEG, BMP and GIF are decoded by the
@@ -63,7 +64,7 @@ public final class TextureReader {
         }
         try {
             return switch (format) {
-                case PPM, PAM, PLAIN_PBM, PLAIN_PGM, PLAIN_PPM -> PnmDecoder.read(file, name, format);
+                case PPM, PGM, PBM, PAM, PLAIN_PBM, PLAIN_PGM, PLAIN_PPM -> PnmDecoder.read(file, name, format);
                 case TGA -> readTga(file, name, head, headLength);
                 default -> readWithImageIo(file, name, format);
             };
