@@ -175,6 +175,12 @@ public final class OutputBatch implements AutoCloseable {
         } catch (UncheckedIOException ex) {
             throw OutputFiles.cannotWrite(out, OutputFiles.reason(ex.getCause(), null), ex);
         }
+        // A FIFO, device or socket would be replaced by a regular file, its node gone (found by the fault
+        // probe: --out on a FIFO named p.png); outputs replace regular files only, as readers read only them.
+        if (Files.exists(target) && !Files.isRegularFile(target)) {
+            throw OutputFiles.cannotWrite(out, "it is not a regular file (a FIFO, device or socket), which the "
+                    + "output would replace", null);
+        }
         synchronized (LOCK) {
             if (!targets.add(target)) {
                 throw InputException.usage(out + ": named for two outputs of one command");

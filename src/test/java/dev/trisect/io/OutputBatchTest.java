@@ -135,4 +135,34 @@ class OutputBatchTest {
         InputException e = assertThrows(InputException.class, () -> OutputBatch.createFolders(dir.resolve("file/sub")));
         assertEquals("cannot create the directory " + dir.resolve("file/sub") + ": Not a directory", e.getMessage());
     }
+
+    /**
+     * A FIFO (or a device or socket) named as an output was replaced by a regular file, the node gone
+     * (found by the command-line fault probe); now it is refused before any work, through a link too,
+     * and left as it was.
+     */
+    @Test
+    void aTargetThatIsNotARegularFileIsRefusedAndKept() throws Exception {
+        Path fifo = dir.resolve("p.png");
+        Process mkfifo;
+        try {
+            mkfifo = new ProcessBuilder("mkfifo", fifo.toString()).start();
+        } catch (IOException e) {
+            org.junit.jupiter.api.Assumptions.abort("needs mkfifo");
+            return;
+        }
+        org.junit.jupiter.api.Assumptions.assumeTrue(mkfifo.waitFor() == 0, "mkfifo made a FIFO");
+        Path link = Files.createSymbolicLink(dir.resolve("link.png"), fifo.getFileName());
+        for (Path out : List.of(fifo, link)) {
+            try (OutputBatch batch = new OutputBatch()) {
+                InputException e = assertThrows(InputException.class, () -> batch.reserve(out));
+                assertEquals(out + ": cannot write: it is not a regular file (a FIFO, device or socket), which the "
+                        + "output would replace", e.getMessage());
+            }
+        }
+        assertTrue(Files.exists(fifo) && !Files.isRegularFile(fifo) && !Files.isDirectory(fifo), "the FIFO stays");
+        try (var files = Files.list(dir)) {
+            assertEquals(List.of("link.png", "p.png"), files.map(p -> p.getFileName().toString()).sorted().toList());
+        }
+    }
 }
