@@ -37,6 +37,9 @@ final class Converters {
      * A value as a message quotes it (see {@link InputException#quote}): Jazzer found a newline in a
      * value splitting the usage message.
      */
+    /** What Java reads in place of command-line bytes its file-name encoding cannot decode. */
+    private static final char REPLACEMENT = (char) 0xFFFD;
+
     static String quote(String value) {
         return InputException.quote(value, 60);
     }
@@ -115,13 +118,23 @@ final class Converters {
      * (picocli's own message named the exception and the interface).
      */
     static Path path(String value) {
+        Path path;
         try {
-            return Path.of(value);
+            path = Path.of(value);
         } catch (InvalidPathException e) {
             throw new TypeConversionException("invalid file name " + quote(value) + ": Java cannot map it to a path "
                     + "under this locale (file names in " + System.getProperty("sun.jnu.encoding")
                     + "); run under a UTF-8 locale, e.g. LANG=C.UTF-8");
         }
+        // Java reads command-line bytes that are not valid in the locale's encoding (caf\xE9 under UTF-8) as
+        // U+FFFD, so the path would name another file: an output went to a file named caf, U+FFFD, .png, and
+        // an input was "no such file" beside the file itself. A real U+FFFD in a file name is not worth that.
+        if (value.indexOf(REPLACEMENT) >= 0) {
+            throw new TypeConversionException("invalid file name " + quote(value) + ": it is not valid "
+                    + System.getProperty("sun.jnu.encoding") + ", this locale's encoding of file names (Java reads "
+                    + "the bytes it cannot decode as U+FFFD and would name another file); rename the file");
+        }
+        return path;
     }
 
     /** A finite number &gt; 0. */

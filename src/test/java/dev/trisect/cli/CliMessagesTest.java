@@ -53,6 +53,40 @@ class CliMessagesTest {
         assertFalse(err.contains("Exception") || err.contains("interface"), err);
     }
 
+    /**
+     * A name whose bytes are not valid UTF-8 under a UTF-8 locale reaches Java with U+FFFD in their place:
+     * the output was written under that other name (exit 0), and an existing input was "no such file"
+     * (found by the command-line fault probe). The shell passes the raw bytes, as a user's would.
+     */
+    @Test
+    void aFileNameThatIsNotValidUtf8IsRefusedNotRenamed() throws Exception {
+        java.nio.file.Files.writeString(dir.resolve("ok.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+        String javaBin = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        for (String[] option : new String[][] {{"--out", "caf\\351.png"}, {"--obj", "m\\344t.obj"}}) {
+            String args = option[0].equals("--out") ? "--obj ok.obj --out \"$(printf '" + option[1] + "')\""
+                    : "--obj \"$(printf '" + option[1] + "')\" --out x.png";
+            ProcessBuilder pb = new ProcessBuilder("/bin/sh", "-c", "exec \"$0\" -Djava.awt.headless=true -cp \"$1\" "
+                    + "dev.trisect.Trisect render --size 8x8 " + args, javaBin, System.getProperty("java.class.path"))
+                    .directory(dir.toFile());
+            pb.environment().putAll(Map.of("LANG", "C.UTF-8", "LC_ALL", "C.UTF-8"));
+            if (option[0].equals("--obj")) {
+                // The file exists under its raw name: it is the name that cannot reach it.
+                new ProcessBuilder("/bin/sh", "-c", "cp ok.obj \"$(printf '" + option[1] + "')\"")
+                        .directory(dir.toFile()).start().waitFor();
+            }
+            Process p = pb.start();
+            p.getOutputStream().close();
+            String err = new String(p.getErrorStream().readAllBytes(), StandardCharsets.UTF_8).strip();
+            assertTrue(p.waitFor(120, TimeUnit.SECONDS), "the process ends");
+            assertEquals(2, p.exitValue(), err);
+            assertTrue(err.startsWith("trisect render: Invalid value for option '" + option[0] + "': invalid file name")
+                    && err.contains("is not valid UTF-8") && !err.contains("\n"), err);
+        }
+        try (var files = java.nio.file.Files.list(dir)) {
+            assertFalse(files.anyMatch(f -> f.getFileName().toString().endsWith(".png")), "no output written");
+        }
+    }
+
     @Test
     void runningOutOfMemoryWithAModelSuggestsOnlyWhatHelps() throws Exception {
         Path obj = dir.resolve("grid.obj");
