@@ -39,8 +39,8 @@ final class DemoHelp {
         {"F5 / F6 / F7", "view: Image / Difference (heat map) / Split; F6 and F7 open the developer tools"},
         {"1 / 2 / 3 / 4", "texturing path: perspective, affine, tessellated, spans"},
         {"P", "split policy: Edge or Error (Render menu: Split policy: …); the status bar says which"},
-        {"L", "lighting: off, flat, smooth (a lamp from the camera, a warm light circling the scene, a dim ambient)"},
-        {"G", "fog on/off: linear, towards the sky's colour"},
+        {"L", "lighting: off, flat, smooth (a lamp from the camera, a warm light circling the scene, a dim ambient), on from the lighting shown"},
+        {"G", "fog on/off: linear, towards the sky's colour; off whatever fog shows (the developer tools' too)"},
         {"X", "labels on the scene's things, an axes gizmo at the origin and a glass pane on/off (off at start, so "
             + "that the frame is the command line's)"},
         {"Z", "wireframe: filled, filled with the edges over it, wire alone"},
