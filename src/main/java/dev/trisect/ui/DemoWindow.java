@@ -38,7 +38,21 @@ final class DemoWindow {
     private final TrisectView view;
     private final JLabel status = new JLabel(" ");
     private final StatusLine statusLine = new StatusLine(status);
-    private final JLabel pace = new JLabel(" ");
+    private final JLabel pace = new JLabel(" ") {
+        private static final long serialVersionUID = 1L;
+
+        /** Never wider than the bar: a wider one was placed from left of the window's edge, cut at its start. */
+        @Override
+        public Dimension getPreferredSize() {
+            Dimension d = super.getPreferredSize();
+            java.awt.Container bar = getParent();
+            if (bar != null && bar.getWidth() > 0) {
+                java.awt.Insets in = bar.getInsets();
+                d.width = Math.min(d.width, Math.max(0, bar.getWidth() - in.left - in.right));
+            }
+            return d;
+        }
+    };
     private final Timer refresh;
     /** The newest frame the view drew (written on its render thread). */
     private volatile FrameInfo latest;
@@ -198,8 +212,13 @@ final class DemoWindow {
         statusLine.tick(System.nanoTime());
         FrameInfo f = latest;
         boolean frozen = Boolean.TRUE.equals(view.action(ViewAction.FREEZE).getValue(Action.SELECTED_KEY));
-        pace.setText(PaceText.pace(view.getRenderSettings(), f, System.nanoTime() - latestAt,
-                view.getFrameTimeTarget(), frozen));
+        String full = PaceText.pace(view.getRenderSettings(), f, System.nanoTime() - latestAt,
+                view.getFrameTimeTarget(), frozen);
+        java.awt.Container bar = pace.getParent();
+        java.awt.Insets in = bar.getInsets();
+        java.awt.FontMetrics metrics = pace.getFontMetrics(pace.getFont());
+        pace.setText(PaceText.fit(full, metrics::stringWidth, bar.getWidth() - in.left - in.right));
+        pace.setToolTipText(full);
         // A warning lasts while its frames do (none stays after the frame on screen stopped earning
         // it), and never covers a passing message: StatusLine keeps the two apart.
         statusLine.warn(f == null ? null : f.warning());

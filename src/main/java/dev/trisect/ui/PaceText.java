@@ -51,6 +51,16 @@ final class PaceText {
         return path + "  " + rate + "  " + size;
     }
 
+    /**
+     * {@code pace} ({@link #pace}) as it fits {@code room} pixels, each text's width given by {@code width}:
+     * whole, else without how frames are drawn (the menus and the tools show that too), so that the rate
+     * and the size stay in sight; a narrow window cut the whole text at its start ("ed, edge 32 px...").
+     */
+    static String fit(String pace, java.util.function.ToIntFunction<String> width, int room) {
+        int cut = pace.indexOf("  ");
+        return width.applyAsInt(pace) <= room || cut < 0 ? pace : pace.substring(cut + 2);
+    }
+
     /** A frame rate, "60 fps", in tenths under 10: a loaded machine's 0.4 fps read "0 fps" while frames came. */
     static String fps(double fps) {
         return String.format(Locale.ROOT, fps < 9.95 ? "%.1f fps" : "%.0f fps", fps);

@@ -109,6 +109,14 @@ class DemoLogicTest {
     }
 
     @Test
+    void aNarrowStatusBarKeepsTheRateAndTheSize() {
+        String pace = "tessellated, edge 32 px, trilinear  idle, last frame 45.5 ms  400x253";
+        assertEquals(pace, PaceText.fit(pace, String::length, pace.length()), "whole where it fits");
+        assertEquals("idle, last frame 45.5 ms  400x253", PaceText.fit(pace, String::length, 40),
+                "without how frames are drawn where it does not");
+    }
+
+    @Test
     void aStillViewsStatusBarSaysIdleWithTheLastFramesTimeNotZeroFps() {
         dev.trisect.render.RenderSettings r = dev.trisect.render.RenderSettings.defaults();
         dev.trisect.view.FrameInfo one = new dev.trisect.view.FrameInfo(1, 640, 360, null, r, null, 23.45, 0, null);

@@ -61,6 +61,31 @@ class DemoWindowFitGuiTest {
         });
     }
 
+    /**
+     * In a narrow window the right side of the status bar shows from its start, the rate and the size
+     * whole: it was laid out from left of the window's edge, and read "ed, edge 32 px, trilinear idle...".
+     */
+    @Test
+    void aNarrowWindowsStatusBarShowsTheRateAndSize() throws Exception {
+        GuiTests.requireDisplay();
+        window = DemoApp.openForTest(DemoScenes.demo(), 1);
+        edt(() -> {
+            window.frame().setSize(400, 300);
+            window.frame().validate();
+        });
+        waitFor("a frame of the narrow view, and the bar saying so", () -> onEdt(() -> window.latest() != null
+                && window.latest().width() <= 400 && window.paceText().endsWith(window.latest().width() + "x"
+                + window.latest().height()) && !window.paceText().startsWith("tessellated")));
+        Rectangle bar = statusBar();
+        javax.swing.JLabel pace = onEdt(() -> (javax.swing.JLabel) ((BorderLayout) ((Container) ((BorderLayout)
+                window.frame().getContentPane().getLayout()).getLayoutComponent(BorderLayout.SOUTH)).getLayout())
+                .getLayoutComponent(BorderLayout.EAST));
+        Rectangle at = onEdt(pace::getBounds);
+        assertTrue(at.x >= 0 && at.x + at.width <= bar.width, "the pace " + at + " inside the bar " + bar);
+        int needed = onEdt(() -> pace.getFontMetrics(pace.getFont()).stringWidth(pace.getText()));
+        assertTrue(needed <= at.width, "its text whole: " + needed + " px in " + at.width);
+    }
+
     /** A still scene draws once and idles: the status bar says so; M draws flat out and shows the rate. */
     @Test
     void aStillViewSaysIdleAndMMeasuresTheUncappedRate() throws Exception {
