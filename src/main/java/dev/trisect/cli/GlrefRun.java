@@ -32,6 +32,8 @@ final class GlrefRun implements AutoCloseable {
     static final long TIMEOUT_MINUTES = 10;
     /** The longest part of the program's output a message quotes. */
     private static final int QUOTED = 200;
+    /** The most of the program's output read (its end): glref prints one line. */
+    private static final int TAIL = 1 << 16;
     private static final Pattern MS_PER_FRAME = Pattern.compile("ms_per_frame\\s+(\\S+)");
 
     private final Path program;
@@ -112,8 +114,7 @@ final class GlrefRun implements AutoCloseable {
         if (p.exitValue() != 0) {
             throw new InputException(program + ": failed with exit status " + p.exitValue() + quoted(log));
         }
-        String output = Files.readString(log, StandardCharsets.ISO_8859_1);
-        Matcher m = MS_PER_FRAME.matcher(output);
+        Matcher m = MS_PER_FRAME.matcher(tail(log));
         if (!m.find()) {
             throw new InputException(program + ": printed no ms_per_frame" + quoted(log));
         }
@@ -144,7 +145,7 @@ final class GlrefRun implements AutoCloseable {
     private static String quoted(Path log) {
         String output;
         try {
-            output = Files.readString(log, StandardCharsets.ISO_8859_1).strip();
+            output = tail(log).strip();
         } catch (IOException e) {
             return "";
         }
@@ -153,6 +154,22 @@ final class GlrefRun implements AutoCloseable {
         }
         String last = output.substring(output.lastIndexOf('\n') + 1).strip();
         return ": " + shorten(last);
+    }
+
+    /**
+     * The end of the program's output, at most {@link #TAIL} bytes: a program that printed gigabytes is
+     * no reason to run out of memory.
+     */
+    private static String tail(Path log) throws IOException {
+        try (java.nio.channels.SeekableByteChannel channel = Files.newByteChannel(log)) {
+            long size = channel.size();
+            java.nio.ByteBuffer buffer = java.nio.ByteBuffer.allocate((int) Math.min(size, TAIL));
+            channel.position(size - buffer.capacity());
+            while (buffer.hasRemaining() && channel.read(buffer) >= 0) {
+                // read on
+            }
+            return new String(buffer.array(), 0, buffer.position(), StandardCharsets.ISO_8859_1);
+        }
     }
 
     private static String shorten(String text) {

@@ -106,4 +106,23 @@ class GlrefRunTest {
         }
         assertFalse(Files.exists(folder), folder.toString());
     }
+
+    /**
+     * Only the end of glref's output is read: a program that printed 100 MB before its time ran a bench
+     * with a 48 MB heap out of memory.
+     */
+    @Test
+    @Timeout(value = 120, unit = TimeUnit.SECONDS)
+    void aProgramThatPrintsAGreatDealIsReadFromItsEnd() throws Exception {
+        Path glref = script("chatty.sh", "head -c 100000000 /dev/zero | tr '\\0' x\necho\necho 'ms_per_frame 2.5'");
+        Process p = ProcessRobustnessTest.java(dir, List.of("-Xmx48m", "-Djava.awt.headless=true"),
+                "dev.trisect.Trisect", "bench", "--scene", "floor", "--size", "16x16", "--frames", "1", "--warmup", "0",
+                "--threads", "1", "--modes", "affine", "--glref", glref.toString());
+        p.getOutputStream().close();
+        String out = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+        String err = new String(p.getErrorStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+        assertTrue(p.waitFor(100, TimeUnit.SECONDS));
+        assertEquals(0, p.exitValue(), err);
+        assertTrue(out.lines().anyMatch(l -> l.startsWith("glref") && l.contains(" 2.500 ")), out);
+    }
 }
