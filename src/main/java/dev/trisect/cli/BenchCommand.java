@@ -4,6 +4,7 @@ import dev.trisect.base.InputException;
 import dev.trisect.base.internal.Counts;
 import dev.trisect.base.internal.JsonObject;
 import dev.trisect.content.SceneAsset;
+import dev.trisect.io.ImageFiles;
 import dev.trisect.io.ObjWriter;
 import dev.trisect.io.OutputBatch;
 import dev.trisect.math.Mat4;
@@ -202,7 +203,8 @@ final class BenchCommand extends SceneCommand {
         SceneAsset scene = scatteredLines == 0 ? given : given.withLines(ScatteredLines.of(camera,
                 frame.size.viewport().aspect(), scatteredLines, 1, 0xFFFFFF));
         Texture[] textures = scene.textureArray();
-        if (glref != null) {
+        // A model of lines alone has no material: glref is given a white texel it never samples (below).
+        if (glref != null && textures.length > 0) {
             Arrays.fill(textures, textures[0]);
         }
         Mat4 vp = camera.viewProjection(frame.size.viewport());
@@ -294,9 +296,10 @@ final class BenchCommand extends SceneCommand {
                     notice.measured();
                 }
                 if (glref != null) {
-                    double with = glrefMs(scene, textures[0], camera, threads, lineWidth);
+                    Texture first = textures.length == 0 ? Texture.solid("white", 0xFFFFFFFF) : textures[0];
+                    double with = glrefMs(scene, first, camera, threads, lineWidth);
                     double without = scene.lines().isEmpty() ? Double.NaN
-                            : glrefMs(scene.withLines(Lines.EMPTY), textures[0], camera, threads, lineWidth);
+                            : glrefMs(scene.withLines(Lines.EMPTY), first, camera, threads, lineWidth);
                     Results.print(common.out(), List.of(glrefRow(with, with - without, threads)));
                 }
             }
@@ -400,7 +403,11 @@ final class BenchCommand extends SceneCommand {
                 Path obj = dir.resolve("scene.obj");
                 List<Path> maps = ObjWriter.write(obj, scene.mesh(), List.of(Arrays.stream(scene.textureArray())
                         .map(t -> texture).toArray(Texture[]::new)), scene.lines());
-                List<String> args = new ArrayList<>(List.of(obj.toString(), maps.get(0).toString(),
+                Path map = maps.isEmpty() ? dir.resolve("white.ppm") : maps.get(0);
+                if (maps.isEmpty()) {
+                    ImageFiles.write(map, texture.width(), texture.height(), texture.argb());
+                }
+                List<String> args = new ArrayList<>(List.of(obj.toString(), map.toString(),
                         dir.resolve("gl.ppm").toString(), Integer.toString(frame.size.width()),
                         Integer.toString(frame.size.height())));
                 for (Vec3 v : List.of(camera.eye(), camera.target())) {

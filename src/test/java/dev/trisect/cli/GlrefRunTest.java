@@ -125,4 +125,16 @@ class GlrefRunTest {
         assertEquals(0, p.exitValue(), err);
         assertTrue(out.lines().anyMatch(l -> l.startsWith("glref") && l.contains(" 2.500 ")), out);
     }
+
+    /** A model of lines alone (no material, so no texture) was an internal error, status 3, with --glref. */
+    @Test
+    void aModelOfLinesAloneIsTimedToo() throws IOException {
+        Path obj = Files.writeString(dir.resolve("lines.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2 3 1\n");
+        // Times only when given a texture file that exists, as glref needs one.
+        Path glref = script("lines.sh", "[ -f \"$2\" ] && echo 'ms_per_frame 2.0'");
+        CliRun r = CliRun.of("bench", "--obj", obj.toString(), "--size", "16x16", "--frames", "1", "--warmup", "0",
+                "--modes", "affine", "--glref", glref.toString());
+        assertEquals(0, r.status(), r.err());
+        assertTrue(r.out().lines().anyMatch(l -> l.startsWith("glref") && l.contains(" 2.000 ")), r.out());
+    }
 }
