@@ -131,10 +131,11 @@ final class PnmDecoder {
                 case "ENDHDR" -> {
                     return pamHeader(width, height, depth, maxval, tupleType);
                 }
-                case "WIDTH" -> width = parseHeaderNumber(keyword, value);
-                case "HEIGHT" -> height = parseHeaderNumber(keyword, value);
-                case "DEPTH" -> depth = parseHeaderNumber(keyword, value);
-                case "MAXVAL" -> maxval = parseHeaderNumber(keyword, value);
+                // A size given twice is a corrupt header, not the last one silently taken.
+                case "WIDTH" -> width = once(keyword, width, value);
+                case "HEIGHT" -> height = once(keyword, height, value);
+                case "DEPTH" -> depth = once(keyword, depth, value);
+                case "MAXVAL" -> maxval = once(keyword, maxval, value);
                 // The specification joins repeated TUPLTYPE lines with a space.
                 case "TUPLTYPE" -> tupleType = tupleType == null ? value : tupleType + " " + value;
                 default -> throw error("corrupt header: unknown PAM header line '" + printable(line) + "'");
@@ -275,6 +276,14 @@ final class PnmDecoder {
                     : "corrupt header: the " + what + " must be followed by whitespace");
         }
         return value;
+    }
+
+    /** A PAM header number, given for the first time ({@code before} is -1 until it is). */
+    private long once(String keyword, long before, String value) {
+        if (before >= 0) {
+            throw error("corrupt header: " + keyword + " is given twice");
+        }
+        return parseHeaderNumber(keyword, value);
     }
 
     private long parseHeaderNumber(String keyword, String value) {

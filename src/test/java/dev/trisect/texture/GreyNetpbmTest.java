@@ -96,6 +96,9 @@ class GreyNetpbmTest {
         assertTrue(m.endsWith("PBM truncated: the pixel data needs 6 bytes, the file has 5 after the header"), m);
         m = failure("over.pgm", ppm("P5\n1 1\n100\n", 100, 101));
         assertTrue(m.endsWith("PGM corrupt pixel data: sample 101 at texel (0, 0) is above maxval 100"), m);
+        // The last WIDTH was taken, and the file called truncated.
+        m = failure("twice.pam", pam("WIDTH 1\nWIDTH 3\nHEIGHT 1\nDEPTH 1\nMAXVAL 255\n", 1, 9));
+        assertTrue(m.endsWith("PAM corrupt header: WIDTH is given twice"), m);
         m = failure("depth.pam", pam("WIDTH 1\nHEIGHT 1\nDEPTH 3\nMAXVAL 255\nTUPLTYPE GRAYSCALE\n", 1, 1, 2, 3));
         assertTrue(m.endsWith("PAM corrupt header: tuple type GRAYSCALE needs DEPTH 1, the header says 3"), m);
     }
