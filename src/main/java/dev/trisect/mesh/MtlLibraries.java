@@ -5,6 +5,7 @@ import java.io.IOException;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
@@ -34,6 +35,8 @@ final class MtlLibraries {
     private final Map<String, Integer> ambient = new HashMap<>();
     /** Absolute and normalized, in the order the OBJ names them. */
     private final Set<Path> librariesRead = new LinkedHashSet<>();
+    /** Every material a library read defines ({@code newmtl}), with or without statements. */
+    private final Set<String> defined = new HashSet<>();
 
     MtlLibraries(Path obj, LineScanner objLines) {
         this.obj = obj;
@@ -61,6 +64,11 @@ final class MtlLibraries {
     /** The ambient colour ({@code Ka}) of {@code material} as {@link #diffuse} gives Kd, or null for none. */
     Integer ambient(String material) {
         return ambient.get(material);
+    }
+
+    /** Whether a library read defines {@code material} by a {@code newmtl}. */
+    boolean defines(String material) {
+        return defined.contains(material);
     }
 
     /** Whether a library read gives {@code material} a {@code Kd}. */
@@ -121,6 +129,7 @@ final class MtlLibraries {
                 if (material.isEmpty()) {
                     throw mtlLines.error("newmtl without a material name");
                 }
+                defined.add(material);
                 textures.remove(material);
                 textureSources.remove(material);
                 uvTransforms.remove(material);

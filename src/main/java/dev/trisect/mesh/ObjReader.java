@@ -4,7 +4,9 @@ import dev.trisect.base.InputException;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Objects;
 import java.util.function.Consumer;
 
@@ -46,6 +48,8 @@ public final class ObjReader {
     /** The {@code vn} without a direction: how many, and the line of the first. */
     private int directionless;
     private int firstDirectionless;
+    /** Each material a {@code usemtl} names, with the line of its first, in the file's order. */
+    private final Map<String, Integer> used = new LinkedHashMap<>();
 
     private ObjReader(Path obj, boolean readMaterials, LineScanner lines) {
         this.readMaterials = readMaterials;
@@ -119,6 +123,7 @@ public final class ObjReader {
                     throw lines.error("usemtl without a material name");
                 }
                 mesh.useMaterial(name);
+                used.putIfAbsent(name, lines.lineNumber());
             } else if (lines.is(0, "mtllib") && readMaterials) {
                 if (lines.count() < 2) {
                     throw lines.error("mtllib without a file name");
@@ -149,6 +154,16 @@ public final class ObjReader {
     }
 
     private void notes(Consumer<String> notes) {
+        if (readMaterials) {
+            // A name no library defines is most often a typo or a missing mtllib; it draws as the UV grid.
+            List<String> undefined = used.keySet().stream().filter(m -> !libraries.defines(m)).toList();
+            if (!undefined.isEmpty()) {
+                String first = undefined.get(0);
+                notes.accept(lines.label() + ":" + used.get(first) + ": usemtl " + first + ": no mtllib of the file "
+                        + "defines it" + (undefined.size() > 1 ? ", nor " + String.join(", ", undefined.subList(1,
+                        undefined.size())) : ""));
+            }
+        }
         if (directionless > 0) {
             notes.accept(lines.label() + ":" + firstDirectionless + ": normal (vn) without a direction (NaN, "
                     + "infinite or zero length)" + (directionless > 1 ? ", as are " + (directionless - 1) + " more"

@@ -45,6 +45,26 @@ class ObjReaderTest extends ObjFixture {
     }
 
     @Test
+    void usemtlOfAMaterialNoLibraryDefinesGetsOneNote() throws IOException {
+        write("m.mtl", "newmtl wood\nKd 0.5 0.3 0.1\nnewmtl bare\n");
+        Path obj = write("typo.obj", "mtllib m.mtl\n" + TRIANGLE_VERTICES + "usemtl wood\nf 1 2 3\nusemtl wod\n"
+                + "f 1 2 3\nusemtl bare\nf 1 2 3\nusemtl stone\nf 1 2 3\nusemtl wod\nf 1 2 3\n");
+        List<String> notes = new java.util.ArrayList<>();
+        ObjReader.read(obj, true, notes::add);
+        assertEquals(List.of(obj + ":7: usemtl wod: no mtllib of the file defines it, nor stone"), notes,
+                "the first line of the first undefined name; a defined material without statements is fine");
+        notes.clear();
+        ObjReader.read(obj, false, notes::add);
+        assertEquals(List.of(), notes, "libraries not read: nothing to say");
+        notes.clear();
+        ObjReader.read(write("none.obj", TRIANGLE_VERTICES + "usemtl wood\nf 1 2 3\n"), true, notes::add);
+        assertEquals(List.of(dir.resolve("none.obj") + ":4: usemtl wood: no mtllib of the file defines it"), notes);
+        notes.clear();
+        ObjReader.read(write("plain.obj", TRIANGLE_VERTICES + "f 1 2 3\n"), true, notes::add);
+        assertEquals(List.of(), notes, "no usemtl: the default material needs no library");
+    }
+
+    @Test
     void readsPositionsAndTextureCoordinates() throws IOException {
         Mesh mesh = read("v 1 2 3\nv -4.5 5e1 0.25 1.0\nv 7 8 9 0.5 0.5 0.5\n"
                 + "vt 0.25 0.75\nvt 0.5\nvt 1 2 3\nf 1/1 2/2 3/3\n").mesh();
