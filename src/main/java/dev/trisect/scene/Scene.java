@@ -199,7 +199,7 @@ public final class Scene extends Group {
     public void setFog(Fog fog) {
         LOCK.lock();
         try {
-            if (java.util.Objects.equals(fog, this.fog)) {
+            if (Objects.equals(fog, this.fog)) {
                 return;
             }
             this.fog = fog;

@@ -23,9 +23,9 @@ class LightSectionTest {
     @Test
     void theFogFieldsShowTheScenesFogWhoeverSetIt() throws Exception {
         SwingUtilities.invokeAndWait(() -> {
-            ViewController c = WindowlessController.boxes();
-            LightSection light = new DevToolsPanel(c).section(LightSection.class);
-            Scene scene = c.state().scene();
+            Tools t = Tools.open();
+            LightSection light = t.light();
+            Scene scene = t.scene();
             // As the demo's G key sets it: from the camera's distance to its target to eight times that.
             scene.setFog(Fog.linear(16.03, 128.25, Colour.WHITE));
             light.refresh(null, null, null);
@@ -43,9 +43,9 @@ class LightSectionTest {
     @Test
     void aStartTheFogRefusesIsNotKept() throws Exception {
         SwingUtilities.invokeAndWait(() -> {
-            ViewController c = WindowlessController.boxes();
-            LightSection light = new DevToolsPanel(c).section(LightSection.class);
-            Scene scene = c.state().scene();
+            Tools t = Tools.open();
+            LightSection light = t.light();
+            Scene scene = t.scene();
             Fog fog = Fog.linear(10, 80, Colour.BLACK);
             scene.setFog(fog);
             light.refresh(null, null, null);
@@ -64,11 +64,10 @@ class LightSectionTest {
     @Test
     void theShadingSaysTheDemosWordsAndWarnsWhenNothingLightsIt() throws Exception {
         SwingUtilities.invokeAndWait(() -> {
-            ViewController c = WindowlessController.boxes();
-            List<String> said = new ArrayList<>();
-            c.addMessageListener(said::add);
-            LightSection light = new DevToolsPanel(c).section(LightSection.class);
-            Scene scene = c.state().scene();
+            Tools t = Tools.open();
+            List<String> said = t.said();
+            LightSection light = t.light();
+            Scene scene = t.scene();
             javax.swing.JComboBox<String> combo = light.shadingCombo();
             List<String> items = new ArrayList<>();
             for (int i = 0; i < combo.getItemCount(); i++) {
@@ -117,11 +116,10 @@ class LightSectionTest {
     @Test
     void theFogFieldsTakeWhatTheFogTakesAndRefuseWhatItRefusesWithItsMessage() throws Exception {
         SwingUtilities.invokeAndWait(() -> {
-            ViewController c = WindowlessController.boxes();
-            List<String> said = new ArrayList<>();
-            c.addMessageListener(said::add);
-            LightSection light = new DevToolsPanel(c).section(LightSection.class);
-            Scene scene = c.state().scene();
+            Tools t = Tools.open();
+            List<String> said = t.said();
+            LightSection light = t.light();
+            Scene scene = t.scene();
             scene.setFog(Fog.linear(10, 80, Colour.BLACK));
             light.refresh(null, null, null);
             NumberField[] f = light.fogFields();
@@ -164,5 +162,15 @@ class LightSectionTest {
             assertEquals(1, said.size());
             assertTrue(said.get(0).endsWith("Fog density: \"x\" is not a number; kept 0.0500"), said.get(0));
         });
+    }
+
+    /** The boxes' windowless controller, its developer tools' Light and fog section, its scene, and what it says. */
+    private record Tools(ViewController controller, LightSection light, Scene scene, List<String> said) {
+        static Tools open() {
+            ViewController c = WindowlessController.boxes();
+            List<String> said = new ArrayList<>();
+            c.addMessageListener(said::add);
+            return new Tools(c, new DevToolsPanel(c).section(LightSection.class), c.state().scene(), said);
+        }
     }
 }

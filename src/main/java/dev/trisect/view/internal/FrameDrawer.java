@@ -1,5 +1,7 @@
 package dev.trisect.view.internal;
 
+import dev.trisect.content.AssetScenes;
+import dev.trisect.content.SceneAsset;
 import dev.trisect.math.Viewport;
 import dev.trisect.metrics.Comparison;
 import dev.trisect.metrics.HeatMap;
@@ -10,8 +12,6 @@ import dev.trisect.pipeline.FrameRenderer;
 import dev.trisect.render.Framebuffer;
 import dev.trisect.render.RenderMode;
 import dev.trisect.render.RenderSettings;
-import dev.trisect.content.AssetScenes;
-import dev.trisect.content.SceneAsset;
 import dev.trisect.scene.Camera;
 import dev.trisect.scene.Scene;
 import dev.trisect.scene.internal.DrawnFrame;
